@@ -1,0 +1,48 @@
+# kerf: the two commands of the README.
+#   make run   install what is missing, build, run kerf on the bundled examples
+#   make test  install what is missing, build, run the whole test suite through ctest
+# Everything comes from Debian packages; nothing is downloaded at build time.
+
+BUILD_DIR ?= build
+BUILD_TYPE ?= Release
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+PACKAGES := g++ make cmake libboost1.81-dev libboost-json1.81-dev libfmt-dev catch2 \
+            libcli11-dev libtomlplusplus-dev
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: run test build deps clean bench fuzz
+
+run: build
+	@./scripts/run-examples.sh $(BUILD_DIR)/kerf
+
+test: build
+	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+build: deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# Installs only the packages that are missing (dpkg-query), without prompts.
+deps:
+	@missing=""; for p in $(PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+bench: deps
+	@dpkg-query -W -f='$${Status}' libbenchmark-dev 2>/dev/null | grep -q "install ok installed" || \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libbenchmark-dev
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DKERF_BENCH=ON
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target kerf_bench kerf
+	./bench/run.sh $(BUILD_DIR)
+
+fuzz:
+	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DKERF_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build build-fuzz -j $(JOBS) --target fuzz_grammar
+
+clean:
+	rm -rf $(BUILD_DIR) build-fuzz

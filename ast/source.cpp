@@ -1,0 +1,69 @@
+#include "ast/source.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace kerf::ast {
+
+LineIndex::LineIndex(std::string_view text) : text_(text) {
+    starts_.push_back(0);
+    const char* p = text.data();
+    const char* const end = p + text.size();
+    while (p < end) {
+        const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+        if (!nl) break;
+        p = static_cast<const char*>(nl) + 1;
+        starts_.push_back(static_cast<std::uint32_t>(p - text.data()));
+    }
+}
+
+std::uint32_t LineIndex::line_of(std::uint32_t offset) const {
+    const auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
+    return static_cast<std::uint32_t>(it - starts_.begin() - 1);
+}
+
+Position LineIndex::utf8(std::uint32_t offset) const {
+    offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
+    const std::uint32_t line = line_of(offset);
+    return {line, offset - starts_[line]};
+}
+
+namespace {
+// Length in bytes of the UTF-8 sequence that starts with `lead`; invalid leads count as one byte
+// (and one UTF-16 unit, the replacement character a client shows).
+int utf8_length(unsigned char lead) {
+    if (lead < 0x80) return 1;
+    if ((lead >> 5) == 0x6) return 2;
+    if ((lead >> 4) == 0xE) return 3;
+    if ((lead >> 3) == 0x1E) return 4;
+    return 1;
+}
+}  // namespace
+
+Position LineIndex::utf16(std::uint32_t offset) const {
+    offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
+    const std::uint32_t line = line_of(offset);
+    std::uint32_t units = 0;
+    for (std::uint32_t i = starts_[line]; i < offset;) {
+        const int n = utf8_length(static_cast<unsigned char>(text_[i]));
+        units += n == 4 ? 2 : 1;
+        i += static_cast<std::uint32_t>(n);
+    }
+    return {line, units};
+}
+
+std::uint32_t LineIndex::offset_of_utf16(Position p) const {
+    if (p.line >= starts_.size()) return static_cast<std::uint32_t>(text_.size());
+    const std::uint32_t line_end =
+        p.line + 1 < starts_.size() ? starts_[p.line + 1] : static_cast<std::uint32_t>(text_.size());
+    std::uint32_t i = starts_[p.line];
+    std::uint32_t units = 0;
+    while (i < line_end && units < p.column) {
+        const int n = utf8_length(static_cast<unsigned char>(text_[i]));
+        units += n == 4 ? 2 : 1;
+        i += static_cast<std::uint32_t>(n);
+    }
+    return std::min(i, line_end);
+}
+
+}  // namespace kerf::ast

@@ -1,0 +1,132 @@
+#include "ast/syntax.hpp"
+
+#include <cmath>
+
+namespace kerf::ast {
+
+const char* to_string(Severity s) {
+    switch (s) {
+        case Severity::error: return "error";
+        case Severity::warning: return "warning";
+        case Severity::info: return "info";
+        case Severity::hint: return "hint";
+    }
+    return "?";
+}
+
+const char* to_string(TokenKind k) {
+    switch (k) {
+        case TokenKind::word: return "word";
+        case TokenKind::comma_word: return "comma_word";
+        case TokenKind::comment: return "comment";
+        case TokenKind::block_delete: return "block_delete";
+        case TokenKind::percent: return "percent";
+        case TokenKind::eob: return "eob";
+        case TokenKind::statement: return "statement";
+        case TokenKind::bom: return "bom";
+        case TokenKind::error: return "error";
+    }
+    return "?";
+}
+
+const char* to_string(Role r) {
+    switch (r) {
+        case Role::none: return "none";
+        case Role::sequence: return "sequence";
+        case Role::program: return "program";
+        case Role::g_code: return "g_code";
+        case Role::m_code: return "m_code";
+        case Role::axis_absolute: return "axis";
+        case Role::axis_incremental: return "axis_incremental";
+        case Role::parameter: return "parameter";
+        case Role::direct_drawing: return "direct_drawing";
+    }
+    return "?";
+}
+
+const char* to_string(BlockKind k) {
+    switch (k) {
+        case BlockKind::code: return "code";
+        case BlockKind::blank: return "blank";
+        case BlockKind::comment_only: return "comment";
+        case BlockKind::percent: return "percent";
+        case BlockKind::program_start: return "program_start";
+        case BlockKind::tail: return "tail";
+    }
+    return "?";
+}
+
+const char* to_string(BinaryOp op) {
+    static const char* const names[] = {"+", "-", "*", "/", "OR", "XOR", "AND", "MOD",
+                                        "EQ", "NE", "GT", "LT", "GE", "LE"};
+    return names[static_cast<int>(op)];
+}
+
+const char* to_string(Function f) {
+    static const char* const names[] = {"SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "BIN",
+                                        "BCD", "ROUND", "FIX", "FUP", "LN", "EXP", "POW", "ADP"};
+    return names[static_cast<int>(f)];
+}
+
+const char* to_string(StatementKind k) {
+    switch (k) {
+        case StatementKind::assign: return "assign";
+        case StatementKind::if_goto: return "if_goto";
+        case StatementKind::if_then: return "if_then";
+        case StatementKind::goto_: return "goto";
+        case StatementKind::while_do: return "while_do";
+        case StatementKind::do_: return "do";
+        case StatementKind::end: return "end";
+        case StatementKind::dprnt: return "dprnt";
+        case StatementKind::bprnt: return "bprnt";
+        case StatementKind::popen: return "popen";
+        case StatementKind::pclos: return "pclos";
+    }
+    return "?";
+}
+
+Range SyntaxTree::block_range(std::size_t i) const {
+    const std::uint32_t end =
+        i + 1 < blocks.size() ? blocks[i + 1].begin : static_cast<std::uint32_t>(text.size());
+    return {blocks[i].begin, end};
+}
+
+std::uint32_t SyntaxTree::block_token_end(std::size_t i) const {
+    return i + 1 < blocks.size() ? blocks[i + 1].first_token : static_cast<std::uint32_t>(tokens.size());
+}
+
+std::span<const Token> SyntaxTree::block_tokens(std::size_t i) const {
+    const std::uint32_t first = blocks[i].first_token;
+    return std::span<const Token>(tokens.data() + first, block_token_end(i) - first);
+}
+
+std::string_view SyntaxTree::value_spelling(const Token& t) const {
+    std::string_view s = spelling(t);
+    const std::size_t skip = t.kind == TokenKind::comma_word ? 2 : 1;
+    if (s.size() < skip) return {};
+    s.remove_prefix(skip);
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    return s;
+}
+
+namespace {
+constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+
+double decimal_value(std::int32_t mantissa, int scale, std::uint8_t flags, const std::vector<double>& big) {
+    if (flags & token_flags::value_big) return big[static_cast<std::size_t>(mantissa)];
+    // mantissa and 10^scale are exact doubles, so the quotient is correctly rounded.
+    const double v = static_cast<double>(mantissa) / kPow10[scale];
+    return (flags & token_flags::negative) && v == 0.0 ? -0.0 : v;
+}
+}  // namespace
+
+double SyntaxTree::number_value(const Token& t) const {
+    if (!t.is_number()) return std::nan("");
+    return decimal_value(t.payload, t.scale(), t.flags, big_numbers);
+}
+
+double SyntaxTree::number_value(const Expr& e) const {
+    return decimal_value(e.a, e.scale, e.flags, big_numbers);
+}
+
+}  // namespace kerf::ast

@@ -1,0 +1,302 @@
+#include "ast/typed.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dialects/functions.hpp"
+
+namespace kerf::ast {
+
+namespace fn = dialects::functions;
+
+std::optional<std::int64_t> integer_value(const SyntaxTree& tree, const Token& t) {
+    if (!t.is_number()) return std::nullopt;
+    const double v = tree.number_value(t);
+    if (!std::isfinite(v) || std::fabs(v) > 9.0e15 || v != std::floor(v)) return std::nullopt;
+    return static_cast<std::int64_t>(v);
+}
+
+namespace {
+
+std::optional<dialects::CodeKey> code_key_of(const SyntaxTree& tree, const Token& t) {
+    if (!t.is_number() || t.has(token_flags::negative)) return std::nullopt;
+    return dialects::code_key(tree.number_value(t));
+}
+
+const dialects::CodeInfo* code_info(const SyntaxTree& tree, const dialects::Dialect& d, const Token& t) {
+    const auto key = code_key_of(tree, t);
+    return key ? d.fast_code(t.letter, *key) : nullptr;
+}
+
+// What the binder carries from block to block: the static reading of the motion group, used only
+// to recognise plain A/R direct-drawing words (dialects.md §11.4). The interpreter keeps the real state.
+struct BindContext {
+    std::string_view motion_function;
+};
+
+void bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index, BindContext& context) {
+    const dialects::LexicalRules& rules = d.lexical;
+    const std::uint32_t first = tree.blocks[index].first_token;
+    const std::uint32_t end = tree.block_token_end(index);
+    bool arguments_block = false;   // G65/G66: words are macro arguments
+    bool dwell_block = false;       // G04: X/U/P are times
+    bool motion_in_block = false;
+    for (std::uint32_t i = first; i < end; ++i) {
+        Token& t = tree.tokens[i];
+        if (t.kind != TokenKind::word || t.letter != 'G') continue;
+        t.set_role(Role::g_code);
+        const dialects::CodeInfo* info = code_info(tree, d, t);
+        if (!info) continue;
+        if (info->function == fn::macro_call || info->function == fn::modal_macro_call) arguments_block = true;
+        if (info->function == fn::dwell) dwell_block = true;
+        if (info->group == "01") {
+            context.motion_function = info->function;
+            motion_in_block = true;
+        }
+    }
+    (void)motion_in_block;
+    const bool direct_drawing = rules.plain_direct_drawing && context.motion_function == fn::linear;
+    for (std::uint32_t i = first; i < end; ++i) {
+        Token& t = tree.tokens[i];
+        if (t.kind != TokenKind::word || t.letter == 'G') continue;
+        const char L = t.letter;
+        Role role = Role::parameter;
+        if (L == 'N') role = Role::sequence;
+        else if (L == 'O') role = Role::program;
+        else if (L == 'M') role = Role::m_code;
+        else if (arguments_block) role = Role::parameter;
+        else if (dwell_block && (L == 'X' || L == 'U' || L == 'P')) role = Role::parameter;
+        else if (direct_drawing && (L == 'A' || L == 'R')) role = Role::direct_drawing;
+        else if (rules.incremental_axis_of(L)) role = Role::axis_incremental;
+        else if (rules.is_axis(L)) role = Role::axis_absolute;
+        t.set_role(role);
+    }
+}
+
+void split_programs(const SyntaxTree& tree, std::vector<Program>& programs) {
+    Program current;
+    bool open = false;
+    bool has_code = false;
+    auto close = [&](std::uint32_t end_block) {
+        if (open && (has_code || current.number)) {
+            current.end_block = end_block;
+            programs.push_back(current);
+        }
+        open = false;
+        has_code = false;
+    };
+    for (std::uint32_t i = 0; i < tree.block_count(); ++i) {
+        const Block& b = tree.blocks[i];
+        switch (b.kind) {
+            case BlockKind::program_start: {
+                close(i);
+                current = Program{};
+                current.first_block = i;
+                for (std::uint32_t t = b.first_token; t < tree.block_token_end(i); ++t) {
+                    if (tree.tokens[t].kind == TokenKind::word && tree.tokens[t].letter == 'O') {
+                        current.o_token = static_cast<std::int32_t>(t);
+                        current.number = integer_value(tree, tree.tokens[t]);
+                        break;
+                    }
+                }
+                open = true;
+                has_code = true;
+                break;
+            }
+            case BlockKind::percent:
+            case BlockKind::tail:
+                close(i);
+                break;
+            case BlockKind::code:
+                if (!open) {
+                    current = Program{};
+                    current.first_block = i;
+                    open = true;
+                }
+                has_code = true;
+                break;
+            case BlockKind::blank:
+            case BlockKind::comment_only:
+                if (!open) {
+                    current = Program{};
+                    current.first_block = i;
+                    open = true;
+                }
+                break;
+        }
+    }
+    close(static_cast<std::uint32_t>(tree.block_count()));
+}
+
+}  // namespace
+
+TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
+    TypedFile file(tree, dialect);
+    BindContext context;
+    for (std::size_t i = 0; i < tree.block_count(); ++i) bind_block(tree, dialect, i, context);
+    split_programs(tree, file.programs_);
+    // Call forms that contradict each other (dialects.md §3.6).
+    for (std::size_t i = 0; i < tree.block_count(); ++i) {
+        const BlockView view = file.block(i);
+        const auto call = view.subprogram_call();
+        const auto l = view.word('L');
+        if (call && call->packed && l) {
+            const Token& p = tree.tokens[call->p_token];
+            file.diagnostics_.push_back(
+                {p.range(), Severity::error, "S0301",
+                 fmt::format("M98 '{}' packs the repeat count into P and also has L", tree.spelling(p)),
+                 "use one form: M98 P<repeats><4-digit program> or M98 P<program> L<repeats>"});
+        }
+    }
+    return file;
+}
+
+void TypedFile::rebind_block(SyntaxTree& tree, std::size_t index) {
+    BindContext context;
+    // Modal context: the last motion code before this block.
+    for (std::size_t i = index; i-- > 0 && context.motion_function.empty();) {
+        for (const CodeRef& g : block(i).g_codes())
+            if (g.info && g.info->group == "01") context.motion_function = g.info->function;
+    }
+    bind_block(tree, *dialect_, index, context);
+}
+
+// --- views -----------------------------------------------------------------------------------------
+
+const Block& BlockView::block() const { return file_->tree().blocks[index_]; }
+Range BlockView::range() const { return file_->tree().block_range(index_); }
+std::span<const Token> BlockView::tokens() const { return file_->tree().block_tokens(index_); }
+std::uint32_t BlockView::first_token() const { return block().first_token; }
+
+std::vector<std::uint32_t> BlockView::words_with_role(Role role) const {
+    std::vector<std::uint32_t> out;
+    const std::uint32_t first = first_token();
+    const auto tokens_ = tokens();
+    for (std::uint32_t i = 0; i < tokens_.size(); ++i)
+        if (tokens_[i].kind == TokenKind::word && tokens_[i].role() == role) out.push_back(first + i);
+    return out;
+}
+
+std::optional<double> BlockView::sequence_number() const {
+    for (const Token& t : tokens())
+        if (t.kind == TokenKind::word && t.letter == 'N' && t.is_number()) return file_->tree().number_value(t);
+    return std::nullopt;
+}
+
+bool BlockView::has_sequence_word() const {
+    for (const Token& t : tokens())
+        if (t.kind == TokenKind::word && t.letter == 'N') return true;
+    return false;
+}
+
+int BlockView::block_delete_level() const {
+    for (const Token& t : tokens())
+        if (t.kind == TokenKind::block_delete) return t.letter ? t.letter - '0' : 1;
+    return 0;
+}
+
+namespace {
+std::vector<CodeRef> codes(const TypedFile& file, const BlockView& view, Role role) {
+    std::vector<CodeRef> out;
+    for (const std::uint32_t i : view.words_with_role(role)) {
+        const Token& t = file.tree().tokens[i];
+        CodeRef ref;
+        ref.token = i;
+        ref.key = code_key_of(file.tree(), t);
+        if (ref.key) ref.info = file.dialect().fast_code(t.letter, *ref.key);
+        out.push_back(ref);
+    }
+    return out;
+}
+}  // namespace
+
+std::vector<CodeRef> BlockView::g_codes() const { return codes(*file_, *this, Role::g_code); }
+std::vector<CodeRef> BlockView::m_codes() const { return codes(*file_, *this, Role::m_code); }
+
+std::vector<AxisWord> BlockView::axis_words() const {
+    std::vector<AxisWord> out;
+    const dialects::LexicalRules& rules = file_->dialect().lexical;
+    const std::uint32_t first = first_token();
+    const auto toks = tokens();
+    for (std::uint32_t i = 0; i < toks.size(); ++i) {
+        const Token& t = toks[i];
+        if (t.kind != TokenKind::word) continue;
+        if (t.role() == Role::axis_absolute) out.push_back({first + i, t.letter, false});
+        else if (t.role() == Role::axis_incremental) out.push_back({first + i, rules.incremental_axis_of(t.letter), true});
+    }
+    return out;
+}
+
+namespace {
+std::vector<std::uint32_t> tokens_of_kind(const BlockView& view, TokenKind kind) {
+    std::vector<std::uint32_t> out;
+    const auto toks = view.tokens();
+    for (std::uint32_t i = 0; i < toks.size(); ++i)
+        if (toks[i].kind == kind) out.push_back(view.first_token() + i);
+    return out;
+}
+}  // namespace
+
+std::vector<std::uint32_t> BlockView::comma_words() const { return tokens_of_kind(*this, TokenKind::comma_word); }
+std::vector<std::uint32_t> BlockView::comments() const { return tokens_of_kind(*this, TokenKind::comment); }
+std::vector<std::uint32_t> BlockView::statements() const { return tokens_of_kind(*this, TokenKind::statement); }
+
+std::optional<std::uint32_t> BlockView::word(char letter) const {
+    const auto toks = tokens();
+    for (std::uint32_t i = 0; i < toks.size(); ++i)
+        if (toks[i].kind == TokenKind::word && toks[i].letter == letter) return first_token() + i;
+    return std::nullopt;
+}
+
+bool BlockView::has_code(char letter, std::string_view function) const {
+    for (const CodeRef& c : letter == 'G' ? g_codes() : m_codes())
+        if (c.info && c.info->function == function) return true;
+    return false;
+}
+
+std::optional<SubprogramCall> BlockView::subprogram_call() const {
+    if (!has_code('M', fn::subprogram_call)) return std::nullopt;
+    const SyntaxTree& tree = file_->tree();
+    const auto p = word('P');
+    if (!p) return std::nullopt;
+    const auto value = integer_value(tree, tree.tokens[*p]);
+    if (!value || *value < 0) return std::nullopt;
+    SubprogramCall call;
+    call.p_token = *p;
+    const auto l = word('L');
+    const auto repeats_l = l ? integer_value(tree, tree.tokens[*l]) : std::nullopt;
+    const dialects::SubprogramCall form = file_->dialect().lexical.subprogram_call;
+    // dialects.md §3.6: the last four digits are the program, the digits before them the repeats.
+    const bool packed = form == dialects::SubprogramCall::packed ||
+                        (form == dialects::SubprogramCall::both && (!l || *value > 9999));
+    if (packed) {
+        call.packed = *value > 9999;
+        call.program = *value % 10000;
+        call.repeats = *value > 9999 ? *value / 10000 : 1;
+    } else {
+        call.program = *value;
+        call.repeats = repeats_l.value_or(1);
+    }
+    return call;
+}
+
+std::optional<MacroCall> BlockView::macro_call() const {
+    const bool simple = has_code('G', fn::macro_call);
+    const bool modal = has_code('G', fn::modal_macro_call);
+    if (!simple && !modal) return std::nullopt;
+    const SyntaxTree& tree = file_->tree();
+    MacroCall call;
+    call.modal = modal;
+    if (const auto p = word('P')) call.program = integer_value(tree, tree.tokens[*p]);
+    if (const auto l = word('L')) call.repeats = integer_value(tree, tree.tokens[*l]).value_or(1);
+    const auto toks = tokens();
+    for (std::uint32_t i = 0; i < toks.size(); ++i) {
+        const Token& t = toks[i];
+        if (t.kind == TokenKind::word && t.role() == Role::parameter && t.letter != 'P' && t.letter != 'L')
+            call.arguments.push_back(first_token() + i);
+    }
+    return call;
+}
+
+}  // namespace kerf::ast

@@ -1,0 +1,107 @@
+// The typed AST: the syntax tree bound against a dialect table. bind() gives every word its role
+// (G code, M code, absolute or incremental axis, parameter, direct-drawing word), splits the file
+// into programs, and offers typed views of each block. Views are cheap and computed on demand, so
+// re-binding one edited block costs one block (the language server relies on this).
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "ast/syntax.hpp"
+#include "dialects/dialect.hpp"
+
+namespace kerf::ast {
+
+struct Program {
+    std::optional<std::int64_t> number;   // O number; nullopt for code before the first O line
+    std::uint32_t first_block = 0;
+    std::uint32_t end_block = 0;          // one past the last block
+    std::int32_t o_token = -1;            // index of the O word
+};
+
+struct CodeRef {
+    std::uint32_t token = 0;                       // index into tree.tokens
+    const dialects::CodeInfo* info = nullptr;      // nullptr: not in the dialect (alarm 010)
+    std::optional<dialects::CodeKey> key;          // nullopt: computed (G#1) or not a code number
+};
+
+struct AxisWord {
+    std::uint32_t token = 0;
+    char axis = 0;            // the axis moved: X for both X and U
+    bool incremental = false; // U/W/H in system A
+};
+
+struct SubprogramCall {
+    std::int64_t program = 0;
+    std::int64_t repeats = 1;
+    bool packed = false;       // M98 P41001 form
+    std::uint32_t p_token = 0;
+};
+
+struct MacroCall {               // G65 / G66 P_ L_ arguments
+    std::optional<std::int64_t> program;
+    std::int64_t repeats = 1;
+    bool modal = false;
+    std::vector<std::uint32_t> arguments;   // argument words (A B C I J K ... not P, L)
+};
+
+class TypedFile;
+
+class BlockView {
+public:
+    BlockView(const TypedFile& file, std::size_t index) : file_(&file), index_(index) {}
+    std::size_t index() const { return index_; }
+    const Block& block() const;
+    Range range() const;
+    std::span<const Token> tokens() const;
+    std::uint32_t first_token() const;
+
+    std::optional<double> sequence_number() const;   // N value (nullopt also for a bare N)
+    bool has_sequence_word() const;
+    int block_delete_level() const;                  // 0 none, 1 for '/', n for '/n'
+    std::vector<CodeRef> g_codes() const;
+    std::vector<CodeRef> m_codes() const;
+    std::vector<AxisWord> axis_words() const;
+    std::vector<std::uint32_t> words_with_role(Role role) const;
+    std::vector<std::uint32_t> parameters() const { return words_with_role(Role::parameter); }
+    std::vector<std::uint32_t> comma_words() const;
+    std::vector<std::uint32_t> comments() const;
+    std::vector<std::uint32_t> statements() const;   // statement tokens
+    std::optional<std::uint32_t> word(char letter) const;   // first word with this letter
+    bool has_code(char letter, std::string_view function) const;
+    std::optional<SubprogramCall> subprogram_call() const;
+    std::optional<MacroCall> macro_call() const;
+
+private:
+    const TypedFile* file_;
+    std::size_t index_;
+};
+
+class TypedFile {
+public:
+    // Binds `tree` (sets token roles in place) against `dialect`. Both must outlive the result.
+    static TypedFile bind(SyntaxTree& tree, const dialects::Dialect& dialect);
+
+    const SyntaxTree& tree() const { return *tree_; }
+    const dialects::Dialect& dialect() const { return *dialect_; }
+    const std::vector<Program>& programs() const { return programs_; }
+    const std::vector<Diagnostic>& diagnostics() const { return diagnostics_; }
+    std::size_t block_count() const { return tree_->block_count(); }
+    BlockView block(std::size_t i) const { return BlockView(*this, i); }
+
+    // Re-binds one block after an edit that kept its token range (LSP); modal context is taken from
+    // the blocks before it.
+    void rebind_block(SyntaxTree& tree, std::size_t index);
+
+private:
+    TypedFile(const SyntaxTree& tree, const dialects::Dialect& dialect) : tree_(&tree), dialect_(&dialect) {}
+    const SyntaxTree* tree_;
+    const dialects::Dialect* dialect_;
+    std::vector<Program> programs_;
+    std::vector<Diagnostic> diagnostics_;
+};
+
+// Integer value of a numeric word (P41001, T0101), if it is an integer.
+std::optional<std::int64_t> integer_value(const SyntaxTree& tree, const Token& t);
+
+}  // namespace kerf::ast

@@ -1,0 +1,115 @@
+// kerf parse FILE [--dialect D|auto] [--json | --print] [--explain-dialect]
+#include <fmt/format.h>
+
+#include <boost/json/serialize.hpp>
+#include <iostream>
+
+#include "ast/dump.hpp"
+#include "ast/printer.hpp"
+#include "cli/commands.hpp"
+#include "cli/config.hpp"
+#include "grammar/detect.hpp"
+#include "grammar/parse.hpp"
+
+namespace kerf::cli {
+
+namespace {
+
+struct ParseOptions {
+    std::string file;
+    std::string dialect = "auto";
+    std::vector<std::string> dialect_files;
+    bool json = false;
+    bool print = false;
+    bool explain_dialect = false;
+};
+
+void print_diagnostic(const std::string& file, const ast::LineIndex& lines, const ast::Diagnostic& d) {
+    const ast::Position p = lines.utf8(d.range.begin);
+    std::cerr << fmt::format("{}:{}:{}: {}: {} [{}]\n", file, p.line + 1, p.column + 1, ast::to_string(d.severity),
+                             d.message, d.code);
+    if (!d.hint.empty()) std::cerr << fmt::format("  hint: {}\n", d.hint);
+}
+
+int run_parse(const ParseOptions& o) {
+    std::string error;
+    const bool from_stdin = o.file == "-";
+    std::optional<std::string> text;
+    if (from_stdin) {
+        text = std::string(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+    } else {
+        text = read_file(o.file, error);
+    }
+    if (!text) {
+        std::cerr << "kerf: " << error << "\n";
+        return kExitUsage;
+    }
+    std::vector<std::string> config_errors;
+    const ProjectConfig config = find_config(from_stdin ? std::filesystem::current_path() : std::filesystem::path(o.file), config_errors);
+    std::vector<std::filesystem::path> files(o.dialect_files.begin(), o.dialect_files.end());
+    files.insert(files.end(), config.dialect_files.begin(), config.dialect_files.end());
+    RegistryResult reg = make_registry(files);
+    for (const std::string& e : config_errors) std::cerr << "kerf: " << e << "\n";
+    for (const std::string& e : reg.errors) std::cerr << "kerf: " << e << "\n";
+    if (!reg.errors.empty()) return kExitUsage;
+
+    // The flag wins over the config, the config over detection.
+    std::string id = o.dialect;
+    std::string why;
+    if (id == "auto" && !config.dialect.empty() && config.dialect != "auto") {
+        id = config.dialect;
+        why = fmt::format("dialect {} from {}", id, config.path->string());
+    }
+    if (id == "auto") {
+        const grammar::Detection d = grammar::detect_dialect(*text);
+        id = d.dialect;
+        why = fmt::format("dialect {} detected (score {})", id, d.confidence);
+        for (const std::string& r : d.reasons) why += "\n  " + r;
+    } else if (why.empty()) {
+        why = fmt::format("dialect {} from --dialect", id);
+    }
+    const dialects::Dialect* dialect = reg.registry.find(id);
+    if (!dialect) {
+        std::cerr << fmt::format("kerf: unknown dialect '{}'; `kerf dialects` lists them\n", id);
+        return kExitUsage;
+    }
+    if (o.explain_dialect) std::cerr << why << "\n";
+
+    ast::SyntaxTree tree = grammar::parse(std::move(*text), dialect->lexical);
+    const ast::TypedFile typed = ast::TypedFile::bind(tree, *dialect);
+    const ast::LineIndex lines(tree.text);
+    if (o.print) {
+        std::cout << ast::print(tree);
+    } else if (o.json) {
+        std::cout << boost::json::serialize(ast::to_json(typed, lines)) << "\n";
+    } else {
+        std::cout << ast::to_text(typed, lines);
+    }
+    bool errors = false;
+    const std::string name = from_stdin ? "<stdin>" : o.file;
+    for (const ast::Diagnostic& d : tree.diagnostics) {
+        if (!o.json) print_diagnostic(name, lines, d);
+        errors |= d.severity == ast::Severity::error;
+    }
+    for (const ast::Diagnostic& d : typed.diagnostics()) {
+        if (!o.json) print_diagnostic(name, lines, d);
+        errors |= d.severity == ast::Severity::error;
+    }
+    return errors ? kExitFindings : kExitClean;
+}
+
+}  // namespace
+
+Command add_parse_command(CLI::App& app) {
+    auto o = std::make_shared<ParseOptions>();
+    CLI::App* cmd = app.add_subcommand("parse", "print the typed syntax tree of a program (or the file back, --print)");
+    cmd->add_option("file", o->file, "program file, or - for standard input")->required();
+    cmd->add_option("--dialect", o->dialect, "dialect id, or auto (default) to detect it");
+    cmd->add_option("--dialect-file", o->dialect_files, "load a dialect data file (TOML)");
+    auto* json = cmd->add_flag("--json", o->json, "typed AST as JSON with source ranges");
+    cmd->add_flag("--print", o->print, "print the file back from the syntax tree (byte for byte)")->excludes(json);
+    cmd->add_flag("--explain-dialect", o->explain_dialect, "say which dialect was chosen and why (stderr)");
+    return [o] { return run_parse(*o); };
+}
+
+}  // namespace kerf::cli

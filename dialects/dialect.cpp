@@ -1,0 +1,106 @@
+#include "dialects/dialect.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace kerf::dialects {
+
+std::optional<CodeKey> code_key(double number) {
+    if (!(number >= 0.0) || number > 99999.0) return std::nullopt;
+    const double tenths = number * 10.0;
+    const double rounded = std::round(tenths);
+    // FANUC decimal codes have exactly one decimal digit (G12.1, G92.1).
+    if (std::fabs(tenths - rounded) > 1e-6) return std::nullopt;
+    return static_cast<CodeKey>(rounded);
+}
+
+std::optional<std::pair<char, CodeKey>> parse_code_spelling(std::string_view spelling) {
+    if (spelling.size() < 2) return std::nullopt;
+    const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(spelling[0])));
+    if (letter < 'A' || letter > 'Z') return std::nullopt;
+    long whole = 0;
+    std::size_t i = 1;
+    if (!std::isdigit(static_cast<unsigned char>(spelling[i]))) return std::nullopt;
+    for (; i < spelling.size() && std::isdigit(static_cast<unsigned char>(spelling[i])); ++i) {
+        whole = whole * 10 + (spelling[i] - '0');
+        if (whole > 99999) return std::nullopt;
+    }
+    int tenth = 0;
+    if (i < spelling.size()) {
+        if (spelling[i] != '.' || i + 2 != spelling.size() ||
+            !std::isdigit(static_cast<unsigned char>(spelling[i + 1])))
+            return std::nullopt;
+        tenth = spelling[i + 1] - '0';
+    }
+    return std::pair<char, CodeKey>{letter, static_cast<CodeKey>(whole * 10 + tenth)};
+}
+
+bool CodeInfo::takes_word(std::string_view word) const {
+    return std::find(words.begin(), words.end(), word) != words.end();
+}
+
+char LexicalRules::incremental_axis_of(char letter) const {
+    const auto it = incremental_letters.find(letter);
+    return it == incremental_letters.end() ? '\0' : it->second;
+}
+
+const CodeInfo* Dialect::code(char letter, CodeKey key) const {
+    const auto it = index_.find({letter, key});
+    return it == index_.end() ? nullptr : &codes_[it->second];
+}
+
+const CodeInfo* Dialect::code(std::string_view spelling) const {
+    const auto parsed = parse_code_spelling(spelling);
+    return parsed ? code(parsed->first, parsed->second) : nullptr;
+}
+
+std::vector<const CodeInfo*> Dialect::codes_with_function(std::string_view function) const {
+    std::vector<const CodeInfo*> out;
+    for (const CodeInfo& info : codes_)
+        if (info.function == function) out.push_back(&info);
+    return out;
+}
+
+void Dialect::add_or_replace(CodeInfo info) {
+    const auto it = index_.find({info.letter, info.key});
+    if (it != index_.end()) {
+        codes_[it->second] = std::move(info);
+    } else {
+        codes_.push_back(std::move(info));
+    }
+    reindex();
+}
+
+void Dialect::set_codes(std::vector<CodeInfo> codes) {
+    codes_ = std::move(codes);
+    reindex();
+}
+
+void Dialect::reindex() {
+    index_.clear();
+    g_fast_.assign(kFastCodes, -1);
+    m_fast_.assign(kFastCodes, -1);
+    for (std::size_t i = 0; i < codes_.size(); ++i) {
+        const CodeInfo& info = codes_[i];
+        index_[{info.letter, info.key}] = i;
+        for (const std::string& alias : info.aliases)
+            if (const auto parsed = parse_code_spelling(alias)) index_[*parsed] = i;
+    }
+    for (const auto& [letter_key, i] : index_) {
+        auto& fast = letter_key.first == 'G' ? g_fast_ : m_fast_;
+        if ((letter_key.first == 'G' || letter_key.first == 'M') && letter_key.second >= 0 &&
+            letter_key.second < kFastCodes)
+            fast[static_cast<std::size_t>(letter_key.second)] = static_cast<std::int32_t>(i);
+    }
+}
+
+const CodeInfo* Dialect::fast_code(char letter, CodeKey key) const {
+    if (key >= 0 && key < kFastCodes && (letter == 'G' || letter == 'M')) {
+        const std::int32_t i = (letter == 'G' ? g_fast_ : m_fast_)[static_cast<std::size_t>(key)];
+        return i < 0 ? nullptr : &codes_[static_cast<std::size_t>(i)];
+    }
+    return code(letter, key);
+}
+
+}  // namespace kerf::dialects

@@ -1,0 +1,152 @@
+// The dialect tables: codes, modal groups, words, descriptions and lexical switches.
+// Built from the TOML files in dialects/data (see dialects/SCHEMA.md). No I/O here:
+// the loader takes text; the CLI reads files.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace kerf::dialects {
+
+// G12.1 → 121, G00 → 0, M329 → 3290: one decimal digit is all FANUC codes use.
+using CodeKey = std::int32_t;
+std::optional<CodeKey> code_key(double number);
+// "G12.1" / "M03" / "g1" → letter and key; nullopt if not a code spelling.
+std::optional<std::pair<char, CodeKey>> parse_code_spelling(std::string_view spelling);
+
+enum class Availability { standard, optional, not_fitted, machine_specific, unlisted };
+enum class SemicolonRole { end_of_block, comment };
+enum class SubprogramCall { packed, p_l, both };
+enum class MachineKind { lathe, mill };
+
+struct CodeInfo {
+    char letter = 'G';
+    CodeKey key = 0;
+    std::string spelling;                  // as in the reference: "G00", "G12.1", "M003"
+    std::vector<std::string> aliases;      // other spellings of this entry ("G113")
+    std::string group;                     // "00" one-shot, "" none
+    bool modal = false;
+    bool power_on_default = false;
+    std::string function;                  // shared semantic id (docs/functions.md)
+    std::vector<std::string> words;        // "X", ",A", ...
+    std::vector<std::string> required;
+    std::vector<std::vector<std::string>> required_one_of;
+    Availability availability = Availability::standard;
+    std::string availability_note;
+    std::string en;
+    std::string ru;
+    std::string reference;
+    std::string notes;
+
+    bool takes_word(std::string_view word) const;
+};
+
+struct LexicalRules {
+    SemicolonRole semicolon = SemicolonRole::end_of_block;
+    bool paren_comments = true;
+    std::vector<std::string> line_comments;          // "::", ";;"
+    std::map<char, char> incremental_letters;        // U → X
+    std::string axes;                                // "XZCBY"
+    std::string diameter_letters;                    // "XU"
+    std::string comma_words;                         // "ACR"
+    bool plain_direct_drawing = false;
+    SubprogramCall subprogram_call = SubprogramCall::packed;
+    bool decimal_comma_lenient = true;               // "warn": read F0,25 as 0.25 (with a diagnostic)
+    bool calculator_decimal = false;
+    std::string tool_word = "mmnn";
+    bool macro_b = true;
+    int max_m_per_block = 1;
+
+    bool is_axis(char letter) const { return axes.find(letter) != std::string::npos; }
+    bool is_diameter(char letter) const { return diameter_letters.find(letter) != std::string::npos; }
+    bool is_comma_word(char letter) const { return comma_words.find(letter) != std::string::npos; }
+    // The absolute axis an incremental letter moves, or 0.
+    char incremental_axis_of(char letter) const;
+};
+
+class Dialect {
+public:
+    std::string id;
+    std::string name;
+    MachineKind machine = MachineKind::lathe;
+    std::string reference;
+    std::vector<std::string> overlays;   // ids of the overlays applied, in order
+    LexicalRules lexical;
+
+    const CodeInfo* code(char letter, CodeKey key) const;
+    const CodeInfo* code(std::string_view spelling) const;   // "G71", "m3", "G12.1"
+    std::span<const CodeInfo> codes() const { return codes_; }
+    // All codes with a function id (several in C for renamed codes is impossible; at most one per dialect
+    // is usual, but the API returns all).
+    std::vector<const CodeInfo*> codes_with_function(std::string_view function) const;
+
+    // O(1) lookup used by the binder on every G and M word.
+    const CodeInfo* fast_code(char letter, CodeKey key) const;
+
+    void add_or_replace(CodeInfo info);
+    void set_codes(std::vector<CodeInfo> codes);
+
+private:
+    static constexpr CodeKey kFastCodes = 10000;   // G/M keys below 1000.0
+    std::vector<CodeInfo> codes_;
+    std::map<std::pair<char, CodeKey>, std::size_t> index_;
+    std::vector<std::int32_t> g_fast_;
+    std::vector<std::int32_t> m_fast_;
+    void reindex();
+};
+
+struct LoadError {
+    std::string message;   // what is wrong, with the TOML key path
+    int line = 0;          // 1-based line in the TOML text, 0 if unknown
+    int column = 0;
+};
+
+// A parsed data file: either a base dialect or an overlay.
+struct DialectFile {
+    Dialect dialect;
+    bool overlay = false;
+    std::vector<std::string> applies_to;
+    std::vector<std::string> combined_ids;
+    // Lexical keys present in an overlay file (only these override the base).
+    std::vector<std::string> lexical_keys_set;
+    LexicalRules lexical_overrides;
+};
+
+struct LoadResult {
+    std::optional<DialectFile> file;
+    std::vector<LoadError> errors;
+};
+
+// Parses one dialect data file. `source_name` is used in error messages only.
+LoadResult load_dialect_text(std::string_view toml_text, std::string_view source_name);
+
+// Base + overlay → combined dialect (spinner-lathe-a = fanuc-lathe-a + spinner).
+Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::string combined_id);
+
+class Registry {
+public:
+    const Dialect* find(std::string_view id) const;
+    std::vector<std::string> ids() const;
+    void add(Dialect dialect);
+    // Adds a user file: a base dialect, or an overlay combined with every base it applies to.
+    std::vector<LoadError> add_text(std::string_view toml_text, std::string_view source_name);
+
+private:
+    std::deque<Dialect> dialects_;   // a deque keeps pointers stable as dialects are added
+    std::vector<DialectFile> overlays_;
+};
+
+// The dialects compiled into the binary (dialects/data/*.toml), with overlays combined.
+const Registry& builtin_registry();
+
+// The built-in data file texts by file stem ("fanuc-lathe-a", "spinner"), for `kerf dialects --dump`.
+std::span<const std::pair<std::string_view, std::string_view>> builtin_dialect_texts();
+
+}  // namespace kerf::dialects

@@ -1,0 +1,452 @@
+// Block items: words, comma words, comments, macro statements, '%', block delete, end of block,
+// and the error rules that turn the seeds' real defects into precise diagnostics
+// (reference/dialects.md §2; diagnostic ids in docs/diagnostics.md).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <boost/spirit/home/x3.hpp>
+
+#include "grammar/expression_def.hpp"
+
+namespace kerf::grammar {
+namespace block_detail {
+
+using namespace expr_detail;
+using ast::Severity;
+using ast::StatementKind;
+using ast::TokenKind;
+
+inline bool is_letter(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+inline char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+template <typename It>
+std::string_view view(It b, It e) {
+    return std::string_view(&*b, static_cast<std::size_t>(e - b));
+}
+
+// One ASCII address letter; the attribute is the letter as written.
+struct letter_parser : x3::parser<letter_parser> {
+    using attribute_type = char;
+    static bool const has_attribute = true;
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const&, RCtx&, Attr& attr) const {
+        if (first == last || !is_letter(*first)) return false;
+        if constexpr (!std::is_same_v<Attr, x3::unused_type>) attr = *first;
+        ++first;
+        return true;
+    }
+};
+inline letter_parser const letter{};
+inline number_parser const word_number{true, true};
+
+// --- word values ---------------------------------------------------------------------------------
+
+inline auto const set_number = [](auto& ctx) {
+    Builder& b = builder_of(ctx);
+    b.pending = PendingValue::number;
+    b.pending_number = x3::_attr(ctx);
+};
+inline auto const set_expr = [](auto& ctx) { builder_of(ctx).pending = PendingValue::expr; };
+
+// X-12.5 | X[#1+2] | X#5 | X-#5 | X-[#1] (dialects.md §2, FANUC macro B)
+auto const word_value = word_number[set_number] |
+                        (x3::omit[x3::raw[x3::lit('-') >> blanks >> (variable | bracket)][wrap_one<ast::ExprKind::negate>{}]] |
+                         x3::omit[x3::raw[x3::lit('+') >> blanks >> (variable | bracket)][wrap_one<ast::ExprKind::plus>{}]] |
+                         variable | bracket)[set_expr];
+
+template <typename Ctx>
+void fill_value(Builder& b, ast::Token& t, std::string_view written) {
+    if (b.pending == PendingValue::number) {
+        const NumberLit& n = b.pending_number;
+        std::int32_t payload = 0;
+        b.store_number(n, payload, t.flags);
+        t.payload = payload;
+        t.scale_role = static_cast<std::uint8_t>(n.scale & 0x0F);
+        if (n.comma) {
+            const bool lenient = b.rules.decimal_comma_lenient;
+            std::string fixed(written);
+            for (char& c : fixed) if (c == ',') c = '.';
+            b.diagnose(n.begin, n.end, lenient ? Severity::warning : Severity::error, "S0105",
+                       fmt::format("decimal comma in '{}': FANUC controls read only '.' as the decimal point",
+                                   written),
+                       fmt::format("write '{}'", fixed));
+        }
+    } else {
+        t.flags |= ast::token_flags::value_expr;
+        t.payload = b.pop();
+    }
+    b.pending = PendingValue::none;
+}
+
+struct make_word_t {
+    TokenKind kind;
+    template <typename Ctx>
+    void operator()(Ctx& ctx) const {
+        Builder& b = builder_of(ctx);
+        const auto where = x3::_attr(ctx);
+        const char* begin = &*where.begin();
+        const char* end = begin + where.size();
+        const char* letter_at = kind == TokenKind::comma_word ? begin + 1 : begin;
+        ast::Token& t = b.add_token(kind, begin, end);
+        t.letter = upper(*letter_at);
+        if (*letter_at != t.letter) t.flags |= ast::token_flags::lower_case;
+        fill_value<Ctx>(b, t, std::string_view(begin, static_cast<std::size_t>(end - begin)));
+        b.last_error_mergeable = false;
+        if (kind == TokenKind::comma_word && !b.rules.is_comma_word(t.letter)) {
+            b.diagnose(begin, end, Severity::error, "S0110",
+                       fmt::format("',{}' is not a comma word of this dialect (allowed: {})", t.letter,
+                                   b.rules.comma_words.empty() ? std::string("none") : b.rules.comma_words),
+                       "remove the comma, or choose the dialect that has this direct-drawing word");
+        }
+    }
+};
+
+// A number directly followed by another '.' (X-12.8.) is malformed: caught by malformed_number.
+auto const word = transactional[x3::omit[x3::raw[letter >> blanks >> word_value >> !x3::lit('.')][make_word_t{TokenKind::word}]]];
+auto const comma_word =
+    transactional[x3::omit[x3::raw[x3::lit(',') >> letter >> blanks >> word_value >> !x3::lit('.')][make_word_t{TokenKind::comma_word}]]];
+
+// ':1000' is the tape form of O1000 (dialects.md §2, [FANUC]).
+auto const colon_program = transactional[x3::omit[x3::raw[x3::lit(':') >> word_number[set_number]][([](auto& ctx) {
+    Builder& b = builder_of(ctx);
+    const auto where = x3::_attr(ctx);
+    const char* begin = &*where.begin();
+    ast::Token& t = b.add_token(TokenKind::word, begin, begin + where.size());
+    t.letter = 'O';
+    fill_value<decltype(ctx)>(b, t, {});
+    b.last_error_mergeable = false;
+})]]];
+
+// --- comments ------------------------------------------------------------------------------------
+
+// ( ... ): no nesting on FANUC; a nested '(' is diagnosed and balanced so the rest of the line still
+// reads; a missing ')' makes the comment run to the end of the line, with an error.
+struct paren_comment_parser : x3::parser<paren_comment_parser> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+        Builder& b = builder_of(ctx);
+        if (first == last || *first != '(' || !b.rules.paren_comments) return false;
+        It p = first;
+        ++p;
+        int depth = 1;
+        const char* nested_at = nullptr;
+        while (p != last) {
+            if (*p == '(') {
+                if (!nested_at) nested_at = &*p;
+                ++depth;
+            } else if (*p == ')') {
+                if (--depth == 0) break;
+            }
+            ++p;
+        }
+        const bool closed = p != last;
+        if (closed) ++p;
+        ast::Token& t = b.add_token(TokenKind::comment, &*first, &*first + (p - first));
+        if (!closed) {
+            t.flags |= ast::token_flags::unclosed;
+            b.diagnose(&*first, &*first + (p - first), Severity::error, "S0201",
+                       "comment is not closed: ')' is missing before the end of the line",
+                       "add ')' where the comment ends; a comment cannot continue on the next line");
+        }
+        if (nested_at) {
+            b.diagnose(nested_at, nested_at + 1, Severity::warning, "S0202",
+                       "'(' inside a comment: FANUC comments cannot be nested and end at the first ')'",
+                       "replace the inner parentheses, e.g. with '[' and ']' or '-'");
+        }
+        b.last_error_mergeable = false;
+        first = p;
+        return true;
+    }
+};
+inline paren_comment_parser const paren_comment{};
+
+// Comments to the end of the line: ';' where it is not the end of block (pcnc-mill), and the
+// dialect's line-comment introducers ('::' and ';;' in ADV400, dialects.md §6, §11.5).
+struct line_comment_parser : x3::parser<line_comment_parser> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+        Builder& b = builder_of(ctx);
+        if (first == last) return false;
+        const std::string_view rest = view(first, last);
+        bool match = *first == ';' && b.rules.semicolon == dialects::SemicolonRole::comment;
+        for (const std::string& intro : b.rules.line_comments)
+            if (!intro.empty() && rest.substr(0, intro.size()) == intro) match = true;
+        if (!match) return false;
+        // The comment ends at the line end; trailing '\r' stays trivia.
+        It end = last;
+        while (end != first && *std::prev(end) == '\r') --end;
+        b.add_token(TokenKind::comment, &*first, &*first + (end - first));
+        b.last_error_mergeable = false;
+        first = end;
+        return true;
+    }
+};
+inline line_comment_parser const line_comment{};
+
+// --- macro statements ------------------------------------------------------------------------------
+
+struct macro_enabled_parser : x3::parser<macro_enabled_parser> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It&, It const&, Ctx const& ctx, RCtx&, Attr&) const {
+        return builder_of(ctx).rules.macro_b;
+    }
+};
+inline macro_enabled_parser const macro_enabled{};
+
+// DPRNT[...] text: brackets nest (#100[53] is a format), the text ends at the matching ']'.
+struct bracket_text_parser : x3::parser<bracket_text_parser> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+        if (first == last || *first != '[') return false;
+        It p = std::next(first);
+        int depth = 1;
+        while (p != last) {
+            if (*p == '[') ++depth;
+            else if (*p == ']' && --depth == 0) break;
+            ++p;
+        }
+        if (p == last) return false;
+        Builder& b = builder_of(ctx);
+        b.pending_text = {b.offset(&*first) + 1, b.offset(&*p)};
+        first = std::next(p);
+        return true;
+    }
+};
+inline bracket_text_parser const bracket_text{};
+
+struct make_statement_t {
+    StatementKind kind;
+    template <typename Ctx>
+    void operator()(Ctx& ctx) const {
+        Builder& b = builder_of(ctx);
+        const auto where = x3::_attr(ctx);
+        ast::Statement s;
+        s.kind = kind;
+        s.range = {b.offset(&*where.begin()), b.offset(&*where.begin() + where.size())};
+        switch (kind) {
+            case StatementKind::assign:
+                s.value = b.pop();
+                s.target = b.pop();
+                break;
+            case StatementKind::if_goto:
+            case StatementKind::while_do:
+                s.label = b.pop();
+                s.value = b.pop();
+                break;
+            case StatementKind::if_then:
+                s.then_statement = b.statement_stack.back();
+                b.statement_stack.pop_back();
+                s.value = b.pop();
+                break;
+            case StatementKind::goto_:
+            case StatementKind::do_:
+            case StatementKind::end:
+                s.label = b.pop();
+                break;
+            case StatementKind::dprnt:
+            case StatementKind::bprnt:
+                s.text = b.pending_text;
+                break;
+            case StatementKind::popen:
+            case StatementKind::pclos:
+                break;
+        }
+        b.tree.statements.push_back(s);
+        b.statement_stack.push_back(static_cast<std::int32_t>(b.tree.statements.size() - 1));
+    }
+};
+
+inline auto kw(const char* lower) { return x3::no_case[x3::lit(lower)]; }
+
+// A label or jump target: GOTO 10, GOTO #1, GOTO [#1+2], DO 1, END 1.
+auto const label = unary;
+
+auto const assign_stmt =
+    x3::omit[x3::raw[variable >> blanks >> x3::lit('=') >> blanks >> expression][make_statement_t{StatementKind::assign}]];
+auto const goto_stmt = x3::omit[x3::raw[kw("goto") >> blanks >> label][make_statement_t{StatementKind::goto_}]];
+auto const if_stmt =
+    transactional[x3::omit[x3::raw[kw("if") >> blanks >> bracket >> blanks >> kw("goto") >> blanks >> label][make_statement_t{StatementKind::if_goto}]]] |
+    x3::omit[x3::raw[kw("if") >> blanks >> bracket >> blanks >> kw("then") >> blanks >> assign_stmt][make_statement_t{StatementKind::if_then}]];
+auto const while_stmt =
+    x3::omit[x3::raw[kw("while") >> blanks >> bracket >> blanks >> kw("do") >> blanks >> label][make_statement_t{StatementKind::while_do}]];
+auto const do_stmt = x3::omit[x3::raw[kw("do") >> blanks >> label][make_statement_t{StatementKind::do_}]];
+auto const end_stmt = x3::omit[x3::raw[kw("end") >> blanks >> label][make_statement_t{StatementKind::end}]];
+auto const print_stmt = x3::omit[x3::raw[kw("dprnt") >> blanks >> bracket_text][make_statement_t{StatementKind::dprnt}]] |
+                        x3::omit[x3::raw[kw("bprnt") >> blanks >> bracket_text][make_statement_t{StatementKind::bprnt}]];
+auto const file_stmt = x3::omit[x3::raw[kw("popen")][make_statement_t{StatementKind::popen}]] | x3::omit[x3::raw[kw("pclos")][make_statement_t{StatementKind::pclos}]];
+
+inline auto const make_statement_token = [](auto& ctx) {
+    Builder& b = builder_of(ctx);
+    const auto where = x3::_attr(ctx);
+    const char* begin = &*where.begin();
+    ast::Token& t = b.add_token(TokenKind::statement, begin, begin + where.size());
+    t.payload = b.statement_stack.back();
+    b.statement_stack.pop_back();
+    b.last_error_mergeable = false;
+};
+
+auto const statement = transactional[macro_enabled >>
+                                     x3::omit[x3::raw[transactional[assign_stmt] | transactional[if_stmt] | transactional[while_stmt] |
+                                             transactional[goto_stmt] | transactional[do_stmt] | transactional[end_stmt] |
+                                             print_stmt | file_stmt][make_statement_token]]];
+
+// --- simple tokens -------------------------------------------------------------------------------
+
+template <TokenKind Kind>
+struct simple_token_t {
+    template <typename Ctx>
+    void operator()(Ctx& ctx) const {
+        Builder& b = builder_of(ctx);
+        const auto where = x3::_attr(ctx);
+        ast::Token& t = b.add_token(Kind, &*where.begin(), &*where.begin() + where.size());
+        if (Kind == TokenKind::block_delete && where.size() > 1) t.letter = *std::next(where.begin());
+        b.last_error_mergeable = false;
+    }
+};
+
+auto const percent = x3::omit[x3::raw[x3::lit('%')][simple_token_t<TokenKind::percent>{}]];
+// '/' and '/1'…'/9' (dialects.md §2, [FANUC]); only at the start of a block (see block rule).
+auto const block_delete = x3::omit[x3::raw[x3::lit('/') >> -x3::char_("1-9")][simple_token_t<TokenKind::block_delete>{}]];
+
+struct eob_parser : x3::parser<eob_parser> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+        Builder& b = builder_of(ctx);
+        if (first == last || *first != ';' || b.rules.semicolon != dialects::SemicolonRole::end_of_block) return false;
+        b.add_token(TokenKind::eob, &*first, &*first + 1);
+        ++first;
+        return true;
+    }
+};
+inline eob_parser const eob{};
+
+// --- error rules ---------------------------------------------------------------------------------
+
+// Each takes the text of a defect and explains it; see docs/diagnostics.md.
+struct error_rules_parser : x3::parser<error_rules_parser> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+        if (first == last) return false;
+        Builder& b = builder_of(ctx);
+        if (*first == ';' && b.rules.semicolon == dialects::SemicolonRole::end_of_block) return false;
+        const char* const begin = &*first;
+        const char* const end = begin + (last - first);
+        const char* p = begin;
+        auto finish = [&](const char* stop) {
+            first += (stop - begin);
+            return true;
+        };
+        if (is_letter(*p)) {
+            const char L = upper(*p);
+            const char* q = p + 1;
+            // MO6, GO, GOO, HO1: the letter O typed for the digit zero (dialects.md §11.10, seed 004 OCR).
+            if (q < end && (*q == 'O' || *q == 'o')) {
+                const char* r = q;
+                while (r < end && (*r == 'O' || *r == 'o' || is_digit(*r) || *r == '.')) ++r;
+                if (r == end || !is_letter(*r)) {
+                    std::string fixed(begin, r);
+                    for (std::size_t i = 1; i < fixed.size(); ++i)
+                        if (fixed[i] == 'O' || fixed[i] == 'o') fixed[i] = '0';
+                    b.add_error(begin, r, "S0103",
+                                fmt::format("letter O in '{}' where the digit zero is meant", view(begin, r)),
+                                fmt::format("write '{}'", fixed), false);
+                    return finish(r);
+                }
+            }
+            // X?  Y?: a placeholder left in the program.
+            if (q < end && *q == '?') {
+                const char* r = q;
+                while (r < end && *r == '?') ++r;
+                b.add_error(begin, r, "S0104",
+                            fmt::format("placeholder '{}': the value of {} is missing", view(begin, r), L),
+                            fmt::format("replace '?' with the value of {}", L), false);
+                return finish(r);
+            }
+            // .: a second decimal point.
+            {
+                const char* r = q;
+                while (r < end && is_blank(*r)) ++r;
+                NumberLit n;
+                const char* s = r;
+                if (scan_number(s, end, true, false, n) && s < end && *s == '.') {
+                    while (s < end && (*s == '.' || is_digit(*s))) ++s;
+                    b.add_error(begin, s, "S0102",
+                                fmt::format("malformed number in '{}': more than one decimal point", view(begin, s)),
+                                "keep one decimal point, e.g. " + std::string(begin, n.end) + "", false);
+                    return finish(s);
+                }
+            }
+            // Several letters: neither a word nor a macro keyword (IF, GOTO, WHILE, ...).
+            if (q < end && is_letter(*q)) {
+                const char* r = q;
+                while (r < end && is_letter(*r)) ++r;
+                b.add_error(begin, r, "S0106",
+                            fmt::format("'{}' is neither an address word nor a macro keyword", view(begin, r)),
+                            b.rules.macro_b ? "put text in a comment '( ... )', or check the spelling of the keyword"
+                                            : "put text in a comment; this dialect has no macro statements",
+                            true);
+                return finish(r);
+            }
+            // An address letter without value (X-11.Z). A bare N is a legal empty sequence number.
+            ast::Token& t = b.add_token(TokenKind::word, begin, q);
+            t.letter = L;
+            if (*begin != L) t.flags |= ast::token_flags::lower_case;
+            t.flags |= ast::token_flags::value_none;
+            b.last_error_mergeable = false;
+            if (L != 'N') {
+                b.diagnose(begin, q, Severity::error, "S0101", fmt::format("address {} has no value", L),
+                           fmt::format("write the value right after {} (e.g. {}0.) or remove the letter", L, L));
+            }
+            return finish(q);
+        }
+        // 27 in 'N90 27 F100': a number without its address letter.
+        {
+            const char* s = p;
+            NumberLit n;
+            if (scan_number(s, end, true, false, n)) {
+                while (s < end && (*s == '.' || is_digit(*s))) ++s;
+                b.add_error(begin, s, "S0107",
+                            fmt::format("value '{}' has no address letter", view(begin, s)),
+                            "every value needs its address (X, Z, F, ...) in front; is a letter missing?", true);
+                return finish(s);
+            }
+        }
+        if (*p == '/') {
+            b.add_error(begin, p + 1, "S0108", "block delete '/' must be the first character of the block",
+                        "move '/' to the start of the block, or remove it", false);
+            return finish(p + 1);
+        }
+        // Anything else: one character, or a whole run of non-ASCII bytes (prose outside a comment).
+        const char* r = p + 1;
+        if (static_cast<unsigned char>(*p) >= 0x80)
+            while (r < end && static_cast<unsigned char>(*r) >= 0x80) ++r;
+        b.add_error(begin, r, "S0109", fmt::format("unexpected '{}'", view(begin, r)),
+                    b.rules.paren_comments ? "text must be inside a comment '( ... )'" : "remove it", true);
+        return finish(r);
+    }
+};
+inline error_rules_parser const error_rules{};
+
+// Items in the order they are tried; the error rules take whatever is left, so the item loop only
+// stops at the end of the line or at ';' (end of block).
+auto const item = paren_comment | word | line_comment | comma_word | statement | percent | error_rules;
+
+auto const block_body = blanks >> -(block_delete >> blanks) >> -(colon_program >> blanks) >> *(item >> blanks);
+
+}  // namespace block_detail
+}  // namespace kerf::grammar

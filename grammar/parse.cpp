@@ -1,0 +1,188 @@
+// The driver: splits the text into lines, runs the X3 block grammar on each block, and lays the
+// blocks end to end so that they cover every byte (the lossless invariant, ast/printer.hpp).
+#include "grammar/parse.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "grammar/block_def.hpp"
+
+namespace kerf::grammar {
+
+void Builder::add_error(const char* b, const char* e, const char* code, std::string message, std::string hint,
+                        bool mergeable) {
+    if (mergeable && last_error_mergeable && !tree.tokens.empty() && tree.tokens.size() > block_first_token) {
+        ast::Token& last = tree.tokens.back();
+        const char* gap = base + last.begin + last.length;
+        bool only_blanks = gap <= b;
+        for (const char* p = gap; only_blanks && p < b; ++p) only_blanks = block_detail::is_blank(*p);
+        if (last.kind == ast::TokenKind::error && only_blanks && !tree.diagnostics.empty()) {
+            last.length = offset(e) - last.begin;
+            ast::Diagnostic& d = tree.diagnostics.back();
+            d.range.end = offset(e);
+            d.message = fmt::format("unexpected text '{}'", std::string_view(base + last.begin, last.length));
+            return;
+        }
+    }
+    add_token(ast::TokenKind::error, b, e);
+    diagnose(b, e, ast::Severity::error, code, std::move(message), std::move(hint));
+    last_error_mergeable = mergeable;
+}
+
+namespace {
+
+using ast::BlockKind;
+using ast::TokenKind;
+
+bool only_blanks(const char* b, const char* e) {
+    for (const char* p = b; p < e; ++p)
+        if (!block_detail::is_blank(*p)) return false;
+    return true;
+}
+
+BlockKind classify(const ast::SyntaxTree& tree, std::size_t first, std::size_t last) {
+    bool any = false;
+    bool all_comments = true;
+    for (std::size_t i = first; i < last; ++i) {
+        const ast::Token& t = tree.tokens[i];
+        if (t.kind == TokenKind::bom || t.kind == TokenKind::eob) continue;
+        if (!any) {
+            if (t.kind == TokenKind::percent) return BlockKind::percent;
+        }
+        any = true;
+        if (t.kind != TokenKind::comment) all_comments = false;
+    }
+    if (!any) return BlockKind::blank;
+    if (all_comments) return BlockKind::comment_only;
+    for (std::size_t i = first; i < last; ++i) {
+        const ast::Token& t = tree.tokens[i];
+        if (t.kind == TokenKind::comment || t.kind == TokenKind::block_delete || t.kind == TokenKind::bom) continue;
+        return t.kind == TokenKind::word && t.letter == 'O' ? BlockKind::program_start : BlockKind::code;
+    }
+    return BlockKind::code;
+}
+
+class Driver {
+public:
+    Driver(ast::SyntaxTree& tree, const dialects::LexicalRules& rules) : tree_(tree), builder_(tree, rules) {}
+
+    void run() {
+        const std::string& text = tree_.text;
+        const char* const base = text.data();
+        const char* const end = base + text.size();
+        reserve(base, end);
+        const char* pos = base;
+        bool program_seen = false;   // code since the opening '%'
+        bool bom_pending = text.size() >= 3 && std::memcmp(base, "\xEF\xBB\xBF", 3) == 0;
+        while (pos < end) {
+            const char* nl = static_cast<const char*>(std::memchr(pos, '\n', static_cast<std::size_t>(end - pos)));
+            const char* line_end = nl ? nl : end;
+            const char* next_line = nl ? nl + 1 : end;
+            const char* p = pos;
+            while (true) {
+                const std::size_t block_index = tree_.blocks.size();
+                start_block(p);
+                if (bom_pending) {
+                    builder_.add_token(TokenKind::bom, p, p + 3);
+                    p += 3;
+                    bom_pending = false;
+                }
+                p = parse_block(p, line_end);
+                bool ended_by_eob = false;
+                if (p < line_end && *p == ';') {
+                    builder_.add_token(TokenKind::eob, p, p + 1);
+                    ++p;
+                    ended_by_eob = true;
+                }
+                const bool rest_blank = only_blanks(p, line_end);
+                finish_block(block_index, ended_by_eob);
+                if (rest_blank) break;
+                // Another block follows on the same line (G0 X0; G1 Z5;).
+            }
+            pos = next_line;
+            const ast::Block& last = tree_.blocks.back();
+            if (last.kind == BlockKind::percent) {
+                if (program_seen && pos < end) {
+                    // Text after the closing '%' is not read by the control ([FANUC]).
+                    start_block(pos);
+                    tree_.blocks.back().kind = BlockKind::tail;
+                    break;
+                }
+                program_seen = false;
+            } else if (last.kind == BlockKind::code || last.kind == BlockKind::program_start) {
+                program_seen = true;
+            }
+        }
+        if (tree_.blocks.empty()) start_block(base);   // an empty file is one blank block
+    }
+
+private:
+    ast::SyntaxTree& tree_;
+    Builder builder_;
+
+    void reserve(const char* base, const char* end) {
+        // Reserved but untouched capacity costs address space, not memory (bench/RESULTS.md).
+        const std::size_t lines = static_cast<std::size_t>(std::count(base, end, '\n')) + 1;
+        tree_.blocks.reserve(lines + lines / 8 + 4);
+        tree_.tokens.reserve(static_cast<std::size_t>(end - base) / 4 + 16);
+    }
+
+    void start_block(const char* at) {
+        ast::Block b;
+        b.begin = builder_.offset(at);
+        b.first_token = static_cast<std::uint32_t>(tree_.tokens.size());
+        tree_.blocks.push_back(b);
+        builder_.start_block(tree_.tokens.size());
+        diagnostics_at_start_ = tree_.diagnostics.size();
+    }
+
+    const char* parse_block(const char* p, const char* line_end) {
+        namespace x3 = boost::spirit::x3;
+        const char* it = p;
+        x3::parse(it, line_end, x3::with<builder_tag>(std::ref(builder_))[block_detail::block_body]);
+        if (it < line_end && !(*it == ';' && builder_.rules.semicolon == dialects::SemicolonRole::end_of_block)) {
+            // The item loop only stops at ';' or the line end; anything else is a grammar bug.
+            builder_.add_error(it, line_end, "S0199", "internal: the grammar stopped here", "", false);
+            it = line_end;
+        }
+        builder_.stack.clear();
+        builder_.statement_stack.clear();
+        builder_.functions.clear();
+        builder_.operators.clear();
+        return it;
+    }
+
+    void finish_block(std::size_t index, bool ended_by_eob) {
+        ast::Block& b = tree_.blocks[index];
+        const std::size_t last = tree_.tokens.size();
+        b.kind = classify(tree_, b.first_token, last);
+        if (ended_by_eob) b.flags |= ast::block_flags::has_eob;
+        for (std::size_t i = b.first_token; i < last; ++i) {
+            if (tree_.tokens[i].kind == TokenKind::error) b.flags |= ast::block_flags::has_error;
+            if (tree_.tokens[i].kind == TokenKind::block_delete) b.flags |= ast::block_flags::deleted;
+        }
+        for (std::size_t i = diagnostics_at_start_; i < tree_.diagnostics.size(); ++i)
+            if (tree_.diagnostics[i].severity == ast::Severity::error) b.flags |= ast::block_flags::has_error;
+    }
+
+    std::size_t diagnostics_at_start_ = 0;
+};
+
+}  // namespace
+
+ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules) {
+    ast::SyntaxTree tree;
+    if (text.size() >= 0xFFFFFFF0u) {
+        // Offsets are 32-bit; a 4 GiB NC program is not a program.
+        tree.text = std::string();
+        tree.blocks.push_back({});
+        tree.diagnostics.push_back({{0, 0}, ast::Severity::error, "S0001",
+                                    "file is too large (4 GiB or more)", "split the file"});
+        return tree;
+    }
+    tree.text = std::move(text);
+    Driver(tree, rules).run();
+    return tree;
+}
+
+}  // namespace kerf::grammar
