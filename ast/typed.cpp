@@ -21,6 +21,15 @@ namespace {
 
 std::optional<dialects::CodeKey> code_key_of(const SyntaxTree& tree, const Token& t) {
     if (!t.is_number() || t.has(token_flags::negative)) return std::nullopt;
+    // Exact decimal: G01 is 1/10^0, G12.1 is 121/10^1, G01.0 is 10/10^1.
+    if (!t.has(token_flags::value_big) && t.payload >= 0 && t.payload < 100000) {
+        const int scale = t.scale();
+        if (scale == 0) return t.payload * 10;
+        if (scale == 1) return t.payload;
+        static constexpr int kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
+        if (scale < 10 && t.payload % kPow10[scale - 1] == 0) return t.payload / kPow10[scale - 1];
+        return std::nullopt;
+    }
     return dialects::code_key(tree.number_value(t));
 }
 
@@ -32,31 +41,27 @@ const dialects::CodeInfo* code_info(const SyntaxTree& tree, const dialects::Dial
 // What the binder carries from block to block: the static reading of the motion group, used only
 // to recognise plain A/R direct-drawing words (dialects.md §11.4). The interpreter keeps the real state.
 struct BindContext {
-    std::string_view motion_function;
+    bool linear = false;   // the motion group's code is G01
 };
 
 void bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index, BindContext& context) {
     const dialects::LexicalRules& rules = d.lexical;
     const std::uint32_t first = tree.blocks[index].first_token;
     const std::uint32_t end = tree.block_token_end(index);
-    bool arguments_block = false;   // G65/G66: words are macro arguments
-    bool dwell_block = false;       // G04: X/U/P are times
-    bool motion_in_block = false;
+    using Info = dialects::CodeInfo;
+    std::uint8_t traits = 0;   // union of the block's G codes' binder traits
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
         if (t.kind != TokenKind::word || t.letter != 'G') continue;
         t.set_role(Role::g_code);
-        const dialects::CodeInfo* info = code_info(tree, d, t);
+        const Info* info = code_info(tree, d, t);
         if (!info) continue;
-        if (info->function == fn::macro_call || info->function == fn::modal_macro_call) arguments_block = true;
-        if (info->function == fn::dwell) dwell_block = true;
-        if (info->group == "01") {
-            context.motion_function = info->function;
-            motion_in_block = true;
-        }
+        traits |= info->binder_traits;
+        if (info->binder_traits & Info::kMotionGroup) context.linear = (info->binder_traits & Info::kLinear) != 0;
     }
-    (void)motion_in_block;
-    const bool direct_drawing = rules.plain_direct_drawing && context.motion_function == fn::linear;
+    const bool arguments_block = (traits & Info::kTakesArguments) != 0;   // G65/G66: words are macro arguments
+    const bool dwell_block = (traits & Info::kDwell) != 0;                // G04: X/U/P are times
+    const bool direct_drawing = rules.plain_direct_drawing && context.linear;
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
         if (t.kind != TokenKind::word || t.letter == 'G') continue;
@@ -155,9 +160,14 @@ TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
 void TypedFile::rebind_block(SyntaxTree& tree, std::size_t index) {
     BindContext context;
     // Modal context: the last motion code before this block.
-    for (std::size_t i = index; i-- > 0 && context.motion_function.empty();) {
-        for (const CodeRef& g : block(i).g_codes())
-            if (g.info && g.info->group == "01") context.motion_function = g.info->function;
+    bool found = false;
+    for (std::size_t i = index; i-- > 0 && !found;) {
+        for (const CodeRef& g : block(i).g_codes()) {
+            if (g.info && (g.info->binder_traits & dialects::CodeInfo::kMotionGroup)) {
+                context.linear = (g.info->binder_traits & dialects::CodeInfo::kLinear) != 0;
+                found = true;
+            }
+        }
     }
     bind_block(tree, *dialect_, index, context);
 }

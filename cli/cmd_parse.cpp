@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <boost/json/serialize.hpp>
+#include <chrono>
 #include <iostream>
 
 #include "ast/dump.hpp"
@@ -22,6 +23,7 @@ struct ParseOptions {
     bool json = false;
     bool print = false;
     bool explain_dialect = false;
+    bool stats = false;
 };
 
 void print_diagnostic(const std::string& file, const ast::LineIndex& lines, const ast::Diagnostic& d) {
@@ -75,9 +77,22 @@ int run_parse(const ParseOptions& o) {
     }
     if (o.explain_dialect) std::cerr << why << "\n";
 
+    const auto start = std::chrono::steady_clock::now();
     ast::SyntaxTree tree = grammar::parse(std::move(*text), dialect->lexical);
     const ast::TypedFile typed = ast::TypedFile::bind(tree, *dialect);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const ast::LineIndex lines(tree.text);
+    if (o.stats) {
+        std::size_t errors = 0;
+        for (const ast::Diagnostic& d : tree.diagnostics) errors += d.severity == ast::Severity::error;
+        std::cout << fmt::format(
+            "bytes {}\nblocks {}\ntokens {}\nexpressions {}\nstatements {}\nprograms {}\ndiagnostics {} ({} errors)\n"
+            "parse+bind {:.3f} s, {:.1f} MB/s\n",
+            tree.text.size(), tree.blocks.size(), tree.tokens.size(), tree.exprs.size(), tree.statements.size(),
+            typed.programs().size(), tree.diagnostics.size() + typed.diagnostics().size(), errors, seconds,
+            static_cast<double>(tree.text.size()) / 1e6 / seconds);
+        return errors ? kExitFindings : kExitClean;
+    }
     if (o.print) {
         std::cout << ast::print(tree);
     } else if (o.json) {
@@ -108,6 +123,7 @@ Command add_parse_command(CLI::App& app) {
     cmd->add_option("--dialect-file", o->dialect_files, "load a dialect data file (TOML)");
     auto* json = cmd->add_flag("--json", o->json, "typed AST as JSON with source ranges");
     cmd->add_flag("--print", o->print, "print the file back from the syntax tree (byte for byte)")->excludes(json);
+    cmd->add_flag("--stats", o->stats, "print counts and parse throughput instead of the tree");
     cmd->add_flag("--explain-dialect", o->explain_dialect, "say which dialect was chosen and why (stderr)");
     return [o] { return run_parse(*o); };
 }

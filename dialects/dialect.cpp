@@ -1,4 +1,5 @@
 #include "dialects/dialect.hpp"
+#include "dialects/functions.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -82,7 +83,13 @@ void Dialect::reindex() {
     g_fast_.assign(kFastCodes, -1);
     m_fast_.assign(kFastCodes, -1);
     for (std::size_t i = 0; i < codes_.size(); ++i) {
-        const CodeInfo& info = codes_[i];
+        CodeInfo& info = codes_[i];
+        info.binder_traits = static_cast<std::uint8_t>(
+            (info.letter == 'G' && info.group == "01" ? CodeInfo::kMotionGroup : 0) |
+            (info.function == functions::macro_call || info.function == functions::modal_macro_call
+                 ? CodeInfo::kTakesArguments : 0) |
+            (info.function == functions::dwell ? CodeInfo::kDwell : 0) |
+            (info.function == functions::linear ? CodeInfo::kLinear : 0));
         index_[{info.letter, info.key}] = i;
         for (const std::string& alias : info.aliases)
             if (const auto parsed = parse_code_spelling(alias)) index_[*parsed] = i;

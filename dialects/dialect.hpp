@@ -45,6 +45,14 @@ struct CodeInfo {
     std::string reference;
     std::string notes;
 
+    // Derived from the fields above when the dialect is indexed, so the binder's hot loop compares
+    // bits, not strings.
+    std::uint8_t binder_traits = 0;
+    static constexpr std::uint8_t kMotionGroup = 1;   // group 01
+    static constexpr std::uint8_t kTakesArguments = 2;   // G65/G66: the other words are macro arguments
+    static constexpr std::uint8_t kDwell = 4;            // G04: X/U/P are times
+    static constexpr std::uint8_t kLinear = 8;           // G01: plain A/R may be direct drawing
+
     bool takes_word(std::string_view word) const;
 };
 

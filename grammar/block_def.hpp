@@ -103,6 +103,34 @@ struct make_word_t {
     }
 };
 
+// The hot path: a letter directly followed by a plain number (X-12.345, G01, F1200.), which is
+// nearly every word of a CAM program. It builds the token in place and leaves everything else
+// (spaces, expressions, decimal commas, defects) to the general `word` rule below (bench/RESULTS.md).
+struct plain_word_parser : x3::parser<plain_word_parser> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+        if (first == last || !is_letter(*first)) return false;
+        It p = std::next(first);
+        NumberLit n;
+        if (!scan_number(p, last, true, false, n) || n.big) return false;
+        if (p != last && (*p == '.' || *p == ',')) return false;   // and F0,25 take the long way
+        Builder& b = builder_of(ctx);
+        ast::Token& t = b.add_token(TokenKind::word, &*first, &*first + (p - first));
+        t.letter = upper(*first);
+        if (*first != t.letter) t.flags |= ast::token_flags::lower_case;
+        if (n.point) t.flags |= ast::token_flags::has_point;
+        if (n.negative) t.flags |= ast::token_flags::negative;
+        t.payload = static_cast<std::int32_t>(n.negative ? -n.mantissa : n.mantissa);
+        t.scale_role = static_cast<std::uint8_t>(n.scale);
+        b.last_error_mergeable = false;
+        first = p;
+        return true;
+    }
+};
+inline plain_word_parser const plain_word{};
+
 // A number directly followed by another '.' (X-12.8.) is malformed: caught by malformed_number.
 auto const word = transactional[x3::omit[x3::raw[letter >> blanks >> word_value >> !x3::lit('.')][make_word_t{TokenKind::word}]]];
 auto const comma_word =
@@ -444,9 +472,9 @@ inline error_rules_parser const error_rules{};
 
 // Items in the order they are tried; the error rules take whatever is left, so the item loop only
 // stops at the end of the line or at ';' (end of block).
-auto const item = paren_comment | word | line_comment | comma_word | statement | percent | error_rules;
+auto const item = plain_word | paren_comment | word | line_comment | comma_word | statement | percent | error_rules;
 
-auto const block_body = blanks >> -(block_delete >> blanks) >> -(colon_program >> blanks) >> *(item >> blanks);
+auto const block_body = blanks >> -(block_delete >> blanks) >> -(colon_program >> blanks) >> *(&x3::char_ >> item >> blanks);
 
 }  // namespace block_detail
 }  // namespace kerf::grammar

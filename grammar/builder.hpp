@@ -61,15 +61,20 @@ public:
                 tree.big_numbers.size()};
     }
     void restore(const Checkpoint& c) {
-        tree.tokens.resize(c.tokens);
-        tree.exprs.resize(c.exprs);
-        tree.statements.resize(c.statements);
-        stack.resize(c.stack);
-        statement_stack.resize(c.statement_stack);
-        functions.resize(c.functions);
-        operators.resize(c.operators);
-        tree.diagnostics.resize(c.diagnostics);
-        tree.big_numbers.resize(c.big);
+        // Most rollbacks undo nothing; only shrink what grew.
+        shrink(tree.tokens, c.tokens);
+        shrink(tree.exprs, c.exprs);
+        shrink(tree.statements, c.statements);
+        shrink(stack, c.stack);
+        shrink(statement_stack, c.statement_stack);
+        shrink(functions, c.functions);
+        shrink(operators, c.operators);
+        shrink(tree.diagnostics, c.diagnostics);
+        shrink(tree.big_numbers, c.big);
+    }
+    template <typename V>
+    static void shrink(V& v, std::size_t size) {
+        if (v.size() > size) v.erase(v.begin() + static_cast<std::ptrdiff_t>(size), v.end());
     }
 
     // Stores a number's value into payload/scale/flags fields (shared by tokens and expr nodes).
