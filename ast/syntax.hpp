@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ast/diagnostic.hpp"
+#include "ast/large_allocator.hpp"
 #include "ast/source.hpp"
 
 namespace kerf::ast {
@@ -153,8 +154,8 @@ struct Statement {
 
 struct SyntaxTree {
     std::string text;
-    std::vector<Block> blocks;
-    std::vector<Token> tokens;
+    LargeVector<Block> blocks;
+    LargeVector<Token> tokens;
     std::vector<Expr> exprs;
     std::vector<Statement> statements;
     std::vector<double> big_numbers;   // numbers that do not fit mantissa/scale

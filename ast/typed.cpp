@@ -44,7 +44,8 @@ struct BindContext {
     bool linear = false;   // the motion group's code is G01
 };
 
-void bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index, BindContext& context) {
+// Returns true when the block has an M code that calls a subprogram (checked further in bind()).
+bool bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index, BindContext& context) {
     const dialects::LexicalRules& rules = d.lexical;
     const std::uint32_t first = tree.blocks[index].first_token;
     const std::uint32_t end = tree.block_token_end(index);
@@ -62,6 +63,7 @@ void bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index,
     const bool arguments_block = (traits & Info::kTakesArguments) != 0;   // G65/G66: words are macro arguments
     const bool dwell_block = (traits & Info::kDwell) != 0;                // G04: X/U/P are times
     const bool direct_drawing = rules.plain_direct_drawing && context.linear;
+    bool calls = false;
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
         if (t.kind != TokenKind::word || t.letter == 'G') continue;
@@ -69,7 +71,11 @@ void bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index,
         Role role = Role::parameter;
         if (L == 'N') role = Role::sequence;
         else if (L == 'O') role = Role::program;
-        else if (L == 'M') role = Role::m_code;
+        else if (L == 'M') {
+            role = Role::m_code;
+            const dialects::CodeInfo* info = code_info(tree, d, t);
+            calls |= info && info->function == fn::subprogram_call;
+        }
         else if (arguments_block) role = Role::parameter;
         else if (dwell_block && (L == 'X' || L == 'U' || L == 'P')) role = Role::parameter;
         else if (direct_drawing && (L == 'A' || L == 'R')) role = Role::direct_drawing;
@@ -77,6 +83,7 @@ void bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index,
         else if (rules.is_axis(L)) role = Role::axis_absolute;
         t.set_role(role);
     }
+    return calls;
 }
 
 void split_programs(const SyntaxTree& tree, std::vector<Program>& programs) {
@@ -139,10 +146,12 @@ void split_programs(const SyntaxTree& tree, std::vector<Program>& programs) {
 TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
     TypedFile file(tree, dialect);
     BindContext context;
-    for (std::size_t i = 0; i < tree.block_count(); ++i) bind_block(tree, dialect, i, context);
+    std::vector<std::size_t> call_blocks;
+    for (std::size_t i = 0; i < tree.block_count(); ++i)
+        if (bind_block(tree, dialect, i, context)) call_blocks.push_back(i);
     split_programs(tree, file.programs_);
     // Call forms that contradict each other (dialects.md §3.6).
-    for (std::size_t i = 0; i < tree.block_count(); ++i) {
+    for (const std::size_t i : call_blocks) {
         const BlockView view = file.block(i);
         const auto call = view.subprogram_call();
         const auto l = view.word('L');

@@ -2,6 +2,8 @@
 // its key path and TOML position; nothing is silently defaulted except keys the schema marks optional.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include <toml++/toml.h>
 
 #include "dialects/dialect.hpp"
@@ -292,7 +294,15 @@ Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::stri
         else if (key == "macro_b") lex.macro_b = o.macro_b;
         else if (key == "max_m_per_block") lex.max_m_per_block = o.max_m_per_block;
     }
-    for (const CodeInfo& info : overlay.dialect.codes()) out.add_or_replace(info);
+    std::vector<CodeInfo> codes(base.codes().begin(), base.codes().end());
+    for (const CodeInfo& info : overlay.dialect.codes()) {
+        const auto same = std::find_if(codes.begin(), codes.end(), [&](const CodeInfo& c) {
+            return c.letter == info.letter && c.key == info.key;
+        });
+        if (same != codes.end()) *same = info;
+        else codes.push_back(info);
+    }
+    out.set_codes(std::move(codes));
     return out;
 }
 

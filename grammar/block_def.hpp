@@ -103,33 +103,45 @@ struct make_word_t {
     }
 };
 
-// The hot path: a letter directly followed by a plain number (X-12.345, G01, F1200.), which is
-// nearly every word of a CAM program. It builds the token in place and leaves everything else
-// (spaces, expressions, decimal commas, defects) to the general `word` rule below (bench/RESULTS.md).
-struct plain_word_parser : x3::parser<plain_word_parser> {
-    using attribute_type = x3::unused_type;
-    static bool const has_attribute = false;
-    template <typename It, typename Ctx, typename RCtx, typename Attr>
-    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
-        if (first == last || !is_letter(*first)) return false;
-        It p = std::next(first);
-        NumberLit n;
-        if (!scan_number(p, last, true, false, n) || n.big) return false;
-        if (p != last && (*p == '.' || *p == ',')) return false;   // and F0,25 take the long way
-        Builder& b = builder_of(ctx);
-        ast::Token& t = b.add_token(TokenKind::word, &*first, &*first + (p - first));
-        t.letter = upper(*first);
-        if (*first != t.letter) t.flags |= ast::token_flags::lower_case;
-        if (n.point) t.flags |= ast::token_flags::has_point;
-        if (n.negative) t.flags |= ast::token_flags::negative;
-        t.payload = static_cast<std::int32_t>(n.negative ? -n.mantissa : n.mantissa);
-        t.scale_role = static_cast<std::uint8_t>(n.scale);
-        b.last_error_mergeable = false;
-        first = p;
-        return true;
+// The hot path: a letter directly followed by a plain number of at most nine digits (X-12.345,
+// G01, F1200.), which is nearly every word of a CAM program. It builds the token in place; anything
+// else (spaces, expressions, decimal commas, long numbers, defects) goes to the general rules below
+// (bench/RESULTS.md has the figures that made this worth it).
+inline bool plain_word(Builder& b, const char*& first, const char* last) {
+    const char* p = first;
+    const char letter = *p;
+    if (!is_letter(letter)) return false;
+    ++p;
+    bool negative = false;
+    if (p != last && (*p == '-' || *p == '+')) {
+        negative = *p == '-';
+        ++p;
     }
-};
-inline plain_word_parser const plain_word{};
+    std::uint32_t mantissa = 0;
+    const char* digits_begin = p;
+    while (p != last && static_cast<unsigned>(*p - '0') < 10u) mantissa = mantissa * 10 + static_cast<unsigned>(*p++ - '0');
+    int digits = static_cast<int>(p - digits_begin);
+    int scale = 0;
+    const bool point = p != last && *p == '.';
+    if (point) {
+        const char* fraction_begin = ++p;
+        while (p != last && static_cast<unsigned>(*p - '0') < 10u) mantissa = mantissa * 10 + static_cast<unsigned>(*p++ - '0');
+        scale = static_cast<int>(p - fraction_begin);
+        digits += scale;
+    }
+    if (digits == 0 || digits > 9) return false;
+    if (p != last && (*p == '.' || *p == ',')) return false;   // and F0,25 take the long way
+    ast::Token& t = b.add_token(TokenKind::word, first, p);
+    t.letter = upper(letter);
+    t.flags = static_cast<std::uint8_t>((letter != t.letter ? ast::token_flags::lower_case : 0) |
+                                        (point ? ast::token_flags::has_point : 0) |
+                                        (negative ? ast::token_flags::negative : 0));
+    t.payload = negative ? -static_cast<std::int32_t>(mantissa) : static_cast<std::int32_t>(mantissa);
+    t.scale_role = static_cast<std::uint8_t>(scale);
+    b.last_error_mergeable = false;
+    first = p;
+    return true;
+}
 
 // A number directly followed by another '.' (X-12.8.) is malformed: caught by malformed_number.
 auto const word = transactional[x3::omit[x3::raw[letter >> blanks >> word_value >> !x3::lit('.')][make_word_t{TokenKind::word}]]];
@@ -472,9 +484,30 @@ inline error_rules_parser const error_rules{};
 
 // Items in the order they are tried; the error rules take whatever is left, so the item loop only
 // stops at the end of the line or at ';' (end of block).
-auto const item = plain_word | paren_comment | word | line_comment | comma_word | statement | percent | error_rules;
+auto const item = paren_comment | word | line_comment | comma_word | statement | percent | error_rules;
 
-auto const block_body = blanks >> -(block_delete >> blanks) >> -(colon_program >> blanks) >> *(&x3::char_ >> item >> blanks);
+// The item loop: blanks, then the plain-word fast path, then the X3 alternatives above. It stops at
+// the end of the line or at ';' (end of block), which no item takes.
+template <typename Item>
+struct items_parser : x3::parser<items_parser<Item>> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    Item item;
+    constexpr items_parser(Item i) : item(i) {}
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx& rctx, Attr&) const {
+        Builder& b = builder_of(ctx);
+        while (true) {
+            while (first != last && is_blank(*first)) ++first;
+            if (first == last) return true;
+            if (plain_word(b, first, last)) continue;
+            if (!item.parse(first, last, ctx, rctx, x3::unused)) return true;
+        }
+    }
+};
+inline items_parser<decltype(item)> const items{item};
+
+auto const block_body = blanks >> -(block_delete >> blanks) >> -(colon_program >> blanks) >> items;
 
 }  // namespace block_detail
 }  // namespace kerf::grammar

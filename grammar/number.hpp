@@ -26,29 +26,34 @@ bool scan_number(It& first, It last, bool allow_sign, bool allow_comma, NumberLi
         n.negative = *p == '-';
         ++p;
     }
-    std::int64_t mantissa = 0;
-    int digits = 0;        // significant digits accumulated
-    int all_digits = 0;
+    // Leading zeros add nothing to the mantissa, so counting all digits is a safe overflow guard:
+    // 18 decimal digits always fit in 63 bits.
+    std::uint64_t mantissa = 0;
+    int digits = 0;
+    It digits_begin = p;
+    while (p != last && is_digit(*p)) {
+        mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+        ++p;
+    }
+    digits = static_cast<int>(p - digits_begin);
+    const bool integer_digits = digits > 0;
     int scale = 0;
-    auto take = [&](char c, bool fraction) {
-        ++all_digits;
-        if (fraction) ++scale;
-        if (digits == 0 && c == '0') return;   // leading zeros are not significant
-        if (digits < 18) mantissa = mantissa * 10 + (c - '0');
-        ++digits;
-    };
-    while (p != last && is_digit(*p)) take(*p++, false);
-    const int integer_digits = all_digits;
-    if (p != last && (*p == '.' || (allow_comma && *p == ',' && integer_digits > 0 && std::next(p) != last &&
+    if (p != last && (*p == '.' || (allow_comma && *p == ',' && integer_digits && std::next(p) != last &&
                                     is_digit(*std::next(p))))) {
         n.comma = *p == ',';
         n.point = true;
         ++p;
-        while (p != last && is_digit(*p)) take(*p++, true);
+        It fraction_begin = p;
+        while (p != last && is_digit(*p)) {
+            mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+            ++p;
+        }
+        scale = static_cast<int>(p - fraction_begin);
+        digits += scale;
     }
-    if (all_digits == 0) return false;   // "-", ".", "+." are not numbers
+    if (digits == 0) return false;   // "-", ".", "+." are not numbers
     n.end = &*first + (p - first);
-    if (digits > 9 || scale > 15 || mantissa > 2147483647) {
+    if (digits > 18 || scale > 15 || mantissa > 2147483647u) {
         n.big = true;
         std::string spelled(n.begin, n.end);
         for (char& c : spelled) if (c == ',') c = '.';
@@ -56,7 +61,7 @@ bool scan_number(It& first, It last, bool allow_sign, bool allow_comma, NumberLi
         if (*s == '+') ++s;
         std::from_chars(s, spelled.c_str() + spelled.size(), n.big_value);
     } else {
-        n.mantissa = mantissa;
+        n.mantissa = static_cast<std::int64_t>(mantissa);
         n.scale = scale;
     }
     out = n;

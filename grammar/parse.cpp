@@ -100,6 +100,7 @@ public:
                 // Another block follows on the same line (G0 X0; G1 Z5;).
             }
             pos = next_line;
+            prefault_ahead();
             const ast::Block& last = tree_.blocks.back();
             if (last.kind == BlockKind::percent) {
                 if (program_seen && pos < end) {
@@ -121,14 +122,30 @@ private:
     Builder builder_;
 
     void reserve(const char* base, const char* end) {
-        // Reserved but untouched capacity costs address space, not memory (bench/RESULTS.md).
-        std::size_t lines = 1;
-        for (const char* p = base; (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p))));
-             ++p)
-            ++lines;
-        tree_.blocks.reserve(lines + lines / 8 + 4);
-        tree_.tokens.reserve(static_cast<std::size_t>(end - base) / 4 + 16);
+        // Generous estimates: reserved capacity that is never written costs address space, not
+        // memory (ast/large_allocator.hpp), and growing a 200 MB array would double the peak.
+        const std::size_t size = static_cast<std::size_t>(end - base);
+        tree_.blocks.reserve(size / 8 + 16);
+        tree_.tokens.reserve(size / 4 + 16);
     }
+
+    // Keeps the next stretch of the token and block arrays mapped before the parser writes there.
+    void prefault_ahead() {
+        constexpr std::size_t kTokenChunk = 65536;   // tokens (1 MiB)
+        if (tree_.tokens.size() + kTokenChunk / 2 > tokens_prefaulted_ &&
+            tokens_prefaulted_ + kTokenChunk <= tree_.tokens.capacity()) {
+            ast::prefault(tree_.tokens.data() + tokens_prefaulted_, kTokenChunk * sizeof(ast::Token));
+            tokens_prefaulted_ += kTokenChunk;
+        }
+        constexpr std::size_t kBlockChunk = 65536;
+        if (tree_.blocks.size() + kBlockChunk / 2 > blocks_prefaulted_ &&
+            blocks_prefaulted_ + kBlockChunk <= tree_.blocks.capacity()) {
+            ast::prefault(tree_.blocks.data() + blocks_prefaulted_, kBlockChunk * sizeof(ast::Block));
+            blocks_prefaulted_ += kBlockChunk;
+        }
+    }
+    std::size_t tokens_prefaulted_ = 0;
+    std::size_t blocks_prefaulted_ = 0;
 
     void start_block(const char* at) {
         ast::Block b;

@@ -1,0 +1,2 @@
+0(OUTER (INNER) TEXT)
+G00 X1. (A(B)C) Z2.

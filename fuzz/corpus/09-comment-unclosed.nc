@@ -1,0 +1,3 @@
+3G01 X20. (TURN TO DIA
+Z-5. ((
+M30

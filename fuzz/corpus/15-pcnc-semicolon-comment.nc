@@ -1,0 +1,3 @@
+7G00 X0 Y0 ; rapid home
+; whole line
+G01 Z-1 F200;no space

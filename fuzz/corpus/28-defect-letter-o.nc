@@ -1,0 +1,4 @@
+4MO6
+GOO X0
+HO1 GO1 Z-1.
+M0O3

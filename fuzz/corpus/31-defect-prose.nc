@@ -1,0 +1,3 @@
+4THIS IS NOT CODE
+G00 X0 Y0 HELLO
+* & $ @ \

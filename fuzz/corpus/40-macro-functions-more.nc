@@ -1,0 +1,2 @@
+4#5=COS[30.]+TAN[#1]+ASIN[.5]+ACOS[0]+LN[2]+EXP[1]
+#6=BIN[#5]+BCD[12]+ADP[#1]+SQR[4]+RND[2.5]

@@ -1,0 +1,8 @@
+0WHILE [#1 LT 3] DO 1
+WHILE [#2 LT 3] DO 2
+#2=#2+1
+END 2
+DO 3
+END 3
+#1=#1+1
+END 1

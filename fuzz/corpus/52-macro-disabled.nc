@@ -1,0 +1,4 @@
+8#1=2
+IF [#1 GT 0] GOTO 10
+X[#1]
+WHILE [1] DO 1

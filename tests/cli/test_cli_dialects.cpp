@@ -1,0 +1,168 @@
+// Runs the built kerf binary: `kerf dialects` and `kerf explain`.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+    int exit_code = -1;
+    std::string out;   // stdout and stderr together
+};
+
+std::string quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) {
+        if (c == '\'') out += "'\\''";
+        else out += c;
+    }
+    return out + "'";
+}
+
+Run kerf(const std::string& args) {
+    const std::string command = quote(KERF_BINARY) + " " + args + " 2>&1";
+    Run run;
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::array<char, 4096> buffer{};
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    REQUIRE(status != -1);
+    REQUIRE(WIFEXITED(status));
+    run.exit_code = WEXITSTATUS(status);
+    return run;
+}
+
+bool has_cyrillic(const std::string& s) {
+    for (std::size_t i = 0; i + 1 < s.size(); ++i) {
+        const auto a = static_cast<unsigned char>(s[i]), b = static_cast<unsigned char>(s[i + 1]);
+        if ((a == 0xD0 || a == 0xD1) && b >= 0x80 && b <= 0xBF) return true;
+    }
+    return false;
+}
+
+bool contains(const std::string& haystack, const std::string& needle) {
+    return haystack.find(needle) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("the kerf binary exists") {
+    INFO(KERF_BINARY);
+    REQUIRE(fs::exists(KERF_BINARY));
+}
+
+TEST_CASE("kerf dialects lists the 11 built-in dialects") {
+    const Run r = kerf("dialects");
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    for (const char* id : {"fanuc-lathe-a", "fanuc-lathe-b", "fanuc-lathe-c", "spinner-lathe-a", "spinner-lathe-b",
+                           "spinner-lathe-c", "fanuc-mill", "adv400-mill", "adv400-lathe", "pcnc-mill",
+                           "iso-legacy-mill"}) {
+        INFO(id);
+        CHECK(contains(r.out, id));
+    }
+}
+
+TEST_CASE("kerf explain") {
+    SECTION("G71 in system A, in Russian, shows the group") {
+        const Run r = kerf("explain G71 --dialect fanuc-lathe-a --lang ru");
+        INFO(r.out);
+        CHECK(r.exit_code == 0);
+        CHECK(contains(r.out, "G71"));
+        CHECK(has_cyrillic(r.out));
+        CHECK(contains(r.out, "группа: 00"));
+        CHECK(contains(r.out, "rough-turning-cycle"));
+    }
+    SECTION("G71 in system C is metric input") {
+        const Run r = kerf("explain G71 --dialect fanuc-lathe-c");
+        INFO(r.out);
+        CHECK(r.exit_code == 0);
+        CHECK(contains(r.out, "Metric input"));
+        CHECK(contains(r.out, "group: 06"));
+        CHECK_FALSE(contains(r.out, "rough"));
+    }
+    SECTION("an unknown code exits 1") {
+        const Run r = kerf("explain G999 --dialect fanuc-mill");
+        INFO(r.out);
+        CHECK(r.exit_code == 1);
+        CHECK(contains(r.out, "G999"));
+    }
+    SECTION("an unknown dialect exits 2") {
+        const Run r = kerf("explain G71 --dialect nope");
+        INFO(r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(contains(r.out, "nope"));
+    }
+}
+
+TEST_CASE("kerf dialects --dialect-file adds a user dialect") {
+    const fs::path file = fs::temp_directory_path() / ("kerf-test-user-dialect-" + std::to_string(getpid()) + ".toml");
+    {
+        std::ofstream out(file);
+        out << "id = \"user-test-mill\"\n"
+               "name = \"User test mill\"\n"
+               "machine = \"mill\"\n"
+               "overlay = false\n"
+               "\n"
+               "[lexical]\n"
+               "semicolon = \"comment\"\n"
+               "axes = [\"X\", \"Y\", \"Z\"]\n"
+               "\n"
+               "[[g]]\n"
+               "code = \"G00\"\n"
+               "group = \"01\"\n"
+               "modal = true\n"
+               "default = true\n"
+               "function = \"rapid\"\n"
+               "words = [\"X\", \"Y\", \"Z\"]\n"
+               "en = \"Rapid positioning\"\n"
+               "ru = \"Ускоренное позиционирование\"\n"
+               "reference = \"test\"\n"
+               "\n"
+               "[[m]]\n"
+               "code = \"M30\"\n"
+               "function = \"program-end-rewind\"\n"
+               "en = \"End of program\"\n"
+               "ru = \"Конец программы\"\n"
+               "reference = \"test\"\n";
+    }
+    const Run listed = kerf("dialects --dialect-file " + quote(file.string()));
+    const Run explained = kerf("explain G0 --dialect user-test-mill --dialect-file " + quote(file.string()));
+    fs::remove(file);
+    {
+        INFO(listed.out);
+        CHECK(listed.exit_code == 0);
+        CHECK(contains(listed.out, "user-test-mill"));
+        CHECK(contains(listed.out, "User test mill"));
+        CHECK(contains(listed.out, "fanuc-lathe-a"));   // the built-ins are still listed
+    }
+    {
+        INFO(explained.out);
+        CHECK(explained.exit_code == 0);
+        CHECK(contains(explained.out, "Rapid positioning"));
+    }
+}
+
+TEST_CASE("kerf dialects --dialect-file with a broken file fails with the line") {
+    const fs::path file = fs::temp_directory_path() / ("kerf-test-broken-dialect-" + std::to_string(getpid()) + ".toml");
+    {
+        std::ofstream out(file);
+        out << "id = \"broken\"\nname = \"Broken\"\nmachine = = \"mill\"\n";
+    }
+    const Run r = kerf("dialects --dialect-file " + quote(file.string()));
+    fs::remove(file);
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK(contains(r.out, "line 3"));
+}
