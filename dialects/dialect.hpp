@@ -138,6 +138,7 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
 // Base + overlay → combined dialect (spinner-lathe-a = fanuc-lathe-a + spinner).
 Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::string combined_id);
 
+
 class Registry {
 public:
     const Dialect* find(std::string_view id) const;
@@ -145,6 +146,7 @@ public:
     void add(Dialect dialect);
     // Adds a user file: a base dialect, or an overlay combined with every base it applies to.
     std::vector<LoadError> add_text(std::string_view toml_text, std::string_view source_name);
+    std::vector<LoadError> add_file(DialectFile file, std::string_view source_name);
 
 private:
     std::deque<Dialect> dialects_;   // a deque keeps pointers stable as dialects are added

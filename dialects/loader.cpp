@@ -79,6 +79,15 @@ public:
         return out;
     }
 
+    // A misspelt key must not silently drop what it meant to say (a `defualt = true`).
+    void check_keys(const toml::table& t, std::initializer_list<std::string_view> allowed, std::string_view where) {
+        for (const auto& [key, node] : t) {
+            bool known = false;
+            for (const std::string_view a : allowed) known |= key.str() == a;
+            if (!known) error(&node, fmt::format("{}: unknown key '{}' (see dialects/SCHEMA.md)", where, key.str()));
+        }
+    }
+
 private:
     std::string_view source_;
 };
@@ -106,6 +115,9 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     }
     info.key = parsed->second;
     const std::string label = fmt::format("{} ({})", where, info.spelling);
+    r.check_keys(t, {"code", "aliases", "group", "modal", "default", "function", "words", "required", "required_one_of",
+                     "availability", "availability_note", "en", "ru", "reference", "notes"},
+                 label);
     info.aliases = r.strings(t, "aliases", label);
     for (const std::string& alias : info.aliases)
         if (!parse_code_spelling(alias)) r.error(t.get("aliases"), fmt::format("{}.aliases: bad code '{}'", label, alias));
@@ -143,6 +155,10 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
 // Reads [lexical]; `set` receives the keys present (overlays override only those).
 LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, std::vector<std::string>& set) {
     const std::string where = "lexical";
+    r.check_keys(t, {"semicolon", "paren_comments", "line_comments", "incremental_letters", "axes", "diameter_letters",
+                     "comma_words", "plain_direct_drawing", "subprogram_call", "decimal_comma", "calculator_decimal",
+                     "tool_word", "macro_b", "max_m_per_block"},
+                 where);
     for (const auto& [key, node] : t) set.emplace_back(key.str());
     if (t.contains("semicolon")) {
         const std::string s = r.string(t, "semicolon", where, false);
@@ -235,6 +251,8 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     }
     DialectFile file;
     Dialect& d = file.dialect;
+    r.check_keys(root, {"id", "name", "machine", "reference", "overlay", "applies_to", "combined_ids", "lexical", "g", "m"},
+                 "top level");
     d.id = r.string(root, "id", "top level", true);
     d.name = r.string(root, "name", "top level", true);
     d.reference = r.string(root, "reference", "top level", false);

@@ -29,7 +29,10 @@ void Registry::add(Dialect dialect) {
 std::vector<LoadError> Registry::add_text(std::string_view toml_text, std::string_view source_name) {
     LoadResult loaded = load_dialect_text(toml_text, source_name);
     if (!loaded.file) return loaded.errors;
-    DialectFile& file = *loaded.file;
+    return add_file(std::move(*loaded.file), source_name);
+}
+
+std::vector<LoadError> Registry::add_file(DialectFile file, std::string_view source_name) {
     if (!file.overlay) {
         add(std::move(file.dialect));
         return {};
@@ -52,19 +55,19 @@ std::vector<LoadError> Registry::add_text(std::string_view toml_text, std::strin
 namespace {
 Registry make_builtin() {
     Registry registry;
-    // Bases first, then overlays (they combine with bases already present).
-    for (int pass = 0; pass < 2; ++pass) {
-        for (const auto& [stem, text] : builtin_dialect_texts()) {
-            const bool is_overlay = text.find("overlay = true") != std::string_view::npos;
-            if (is_overlay != (pass == 1)) continue;
-            // Built-in data is checked by tests/dialects; a broken file must not take the tool down.
-            (void)registry.add_text(text, std::string(stem) + ".toml");
-        }
+    std::vector<std::pair<DialectFile, std::string>> overlays;
+    for (const auto& [stem, text] : builtin_dialect_texts()) {
+        LoadResult loaded = load_dialect_text(text, stem);
+        // Built-in data is checked by tests/dialects; a broken file must not take the tool down.
+        if (!loaded.file) continue;
+        if (loaded.file->overlay) overlays.emplace_back(std::move(*loaded.file), std::string(stem));
+        else registry.add_file(std::move(*loaded.file), stem);
     }
+    // Overlays combine with bases, so they come last.
+    for (auto& [file, stem] : overlays) registry.add_file(std::move(file), stem);
     return registry;
 }
 }  // namespace
-
 const Registry& builtin_registry() {
     static const Registry registry = make_builtin();
     return registry;
