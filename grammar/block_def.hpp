@@ -356,7 +356,7 @@ struct simple_token_t {
 
 auto const percent = x3::omit[x3::raw[x3::lit('%')][simple_token_t<TokenKind::percent>{}]];
 // '/' and '/1'…'/9' (dialects.md §2, [FANUC]); only at the start of a block (see block rule).
-auto const block_delete = x3::omit[x3::raw[x3::lit('/') >> -x3::char_("1-9")][simple_token_t<TokenKind::block_delete>{}]];
+auto const block_delete = x3::omit[x3::raw[x3::lit('/') >> -x3::char_("1-9") >> !x3::lit('/')][simple_token_t<TokenKind::block_delete>{}]];
 
 struct eob_parser : x3::parser<eob_parser> {
     using attribute_type = x3::unused_type;
@@ -465,6 +465,14 @@ struct error_rules_parser : x3::parser<error_rules_parser> {
                             "every value needs its address (X, Z, F, ...) in front; is a letter missing?", true);
                 return finish(s);
             }
+        }
+        if (*p == '/' && p + 1 < end && p[1] == '/') {
+            // '//' comments belong to Syntec and other PC controls; FANUC reads '/' as block delete.
+            const char* r = end;
+            while (r > p && *(r - 1) == '\r') --r;
+            b.add_error(begin, r, "S0111", "'//' comment: FANUC controls have no '//' comments",
+                        "write the comment in parentheses: ( ... )", false);
+            return finish(r);
         }
         if (*p == '/') {
             b.add_error(begin, p + 1, "S0108", "block delete '/' must be the first character of the block",

@@ -71,8 +71,10 @@ Detection detect_dialect(std::string_view text) {
                     ev.add("'" + std::string(s.substr(0, 2)) + "' comment", t.begin, lines,
                            {{"adv400-mill", 6}, {"adv400-lathe", 6}});
             }
-            if (t.kind == ast::TokenKind::error && tree.spelling(t).starts_with(";"))
-                ev.add("';' comment", t.begin, lines, {{"pcnc-mill", 6}});
+            // Text after ';' on the same line that does not read as a block: ';' starts a comment.
+            if (t.kind == ast::TokenKind::error && bi > 0 && tree.blocks[bi - 1].has(ast::block_flags::has_eob) &&
+                lines.utf8(tree.blocks[bi].begin).line == lines.utf8(tree.blocks[bi - 1].begin).line)
+                ev.add("text after ';' (a comment)", t.begin, lines, {{"pcnc-mill", 6}});
             if (t.kind != ast::TokenKind::word) continue;
             switch (t.letter) {
                 case 'U': case 'W':
@@ -97,7 +99,7 @@ Detection detect_dialect(std::string_view text) {
                 ev.add(fmt::format("G{} P Q (multiple repetitive cycle)", g), at, lines, {{"fanuc-lathe-a", 4}});
         if (code_in_block('G', 91)) ev.add("G91", at, lines, {{"fanuc-lathe-b", 1}, {"fanuc-mill", 1}});
         for (int g : {77, 78, 79})
-            if (code_in_block('G', g) && has_letter('Z')) ev.add(fmt::format("G{} X Z (system B single cycle)", g), at, lines, {{"fanuc-lathe-b", 4}});
+            if (code_in_block('G', g) && has_letter('Z')) ev.add(fmt::format("G{} X Z (system B single cycle; no such code in A)", g), at, lines, {{"fanuc-lathe-b", 8}});
         for (int g : {38, 138, 238, 380, 384, 100, 101})
             if (code_in_block('G', g)) ev.add(fmt::format("G{} (SPINNER cycle)", g), at, lines, {{"spinner-lathe-a", 8}});
         for (int m : {329, 432})

@@ -369,3 +369,10 @@ TEST_CASE("empty input and input without a final newline") {
     const auto p = parse("G0 X1");
     CHECK(p.tree.number_value(word(p.tree, 'X')) == 1);
 }
+
+TEST_CASE("'//' comments of PC controls are one diagnostic to the end of the line") {
+    const auto p = parse("// UNLOAD ALL TOOLS\nG0 X1 // note\n");
+    REQUIRE(codes(p.tree) == std::vector<std::string>{"S0111", "S0111"});
+    CHECK(diag_text(p.tree, 0) == "// UNLOAD ALL TOOLS");
+    CHECK(tokens_of(p.tree, TokenKind::block_delete).empty());
+}

@@ -1,0 +1,38 @@
+// Dialect detection (reference/dialects.md §10): the evidence table, one case per dialect.
+#include <catch2/catch.hpp>
+
+#include "grammar/detect.hpp"
+
+using kerf::grammar::detect_dialect;
+
+TEST_CASE("detection follows the evidence of dialects.md §10 and says why") {
+    struct Case {
+        const char* text;
+        const char* dialect;
+    };
+    const Case cases[] = {
+        {"O1\nG50 S2000\nG96 S200 M3\nG0 X50 Z2\nG71 U2 R1\nG71 P10 Q20 U.5 W.1 F.25\nG1 U-2 W-3\nM30\n", "fanuc-lathe-a"},
+        {"O1\nG38 B-300 F2000 Q1\nG0 X50 Z2\nM30\n", "spinner-lathe-a"},
+        {"O1\nG90 G54 G17\nT1 M06\nG43 H01 Z50\nG0 X0 Y0\nM30\n", "fanuc-mill"},
+        {"::LOOP.NC header\nG0 X1 Y1\nM98 P12 L100\nG92.1\nM30\n", "adv400-mill"},
+        {";;LOOP.NC header\nG0 X1 Z1\nM98 P12 L100\nM30\n", "adv400-lathe"},
+        {"G52 X5 Y5 ; local system\nG152\nG30 P3 X0 Y0\nM2\n", "pcnc-mill"},
+        {"G90 G17\nG28 K5 F50\nG46 X30 D17\nG0 X1 Y1\nM02\n", "iso-legacy-mill"},
+        {"G0 G91 G28 U0 W0\nG94 G96 S100\nG77 X50 Z-20 F100\n", "fanuc-lathe-b"},
+    };
+    for (const Case& c : cases) {
+        const auto d = detect_dialect(c.text);
+        INFO(c.text);
+        CHECK(d.dialect == c.dialect);
+        CHECK_FALSE(d.reasons.empty());
+    }
+}
+
+TEST_CASE("without evidence: a mill when Y is used, else a lathe, and the reason says so") {
+    const auto mill = detect_dialect("G0 X1 Y2\n");
+    CHECK(mill.dialect == "fanuc-mill");
+    const auto lathe = detect_dialect("G0 X1 Z2\n");
+    CHECK(lathe.dialect == "fanuc-lathe-a");
+    REQUIRE_FALSE(lathe.reasons.empty());
+    CHECK(lathe.reasons.back().find("no dialect evidence") != std::string::npos);
+}
