@@ -51,6 +51,8 @@ bool bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index,
     const std::uint32_t end = tree.block_token_end(index);
     using Info = dialects::CodeInfo;
     std::uint8_t traits = 0;   // union of the block's G codes' binder traits
+    std::string_view data_letters;   // letters that are data in this block (G04 X, G71 U); one code's worth
+    std::string more_data_letters;   // rare: several codes with data letters
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
         if (t.kind != TokenKind::word || t.letter != 'G') continue;
@@ -58,10 +60,16 @@ bool bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index,
         const Info* info = code_info(tree, d, t);
         if (!info) continue;
         traits |= info->binder_traits;
+        if (!info->parameter_letters.empty()) {
+            if (data_letters.empty()) data_letters = info->parameter_letters;
+            else more_data_letters += info->parameter_letters;
+        }
         if (info->binder_traits & Info::kMotionGroup) context.linear = (info->binder_traits & Info::kLinear) != 0;
     }
     const bool arguments_block = (traits & Info::kTakesArguments) != 0;   // G65/G66: words are macro arguments
-    const bool dwell_block = (traits & Info::kDwell) != 0;                // G04: X/U/P are times
+    auto is_data = [&](char L) {
+        return data_letters.find(L) != std::string_view::npos || more_data_letters.find(L) != std::string::npos;
+    };
     const bool direct_drawing = rules.plain_direct_drawing && context.linear;
     bool calls = false;
     for (std::uint32_t i = first; i < end; ++i) {
@@ -77,7 +85,7 @@ bool bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index,
             calls |= info && info->function == fn::subprogram_call;
         }
         else if (arguments_block) role = Role::parameter;
-        else if (dwell_block && (L == 'X' || L == 'U' || L == 'P')) role = Role::parameter;
+        else if (is_data(L)) role = Role::parameter;
         else if (direct_drawing && (L == 'A' || L == 'R')) role = Role::direct_drawing;
         else if (rules.incremental_axis_of(L)) role = Role::axis_incremental;
         else if (rules.is_axis(L)) role = Role::axis_absolute;

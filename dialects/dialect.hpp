@@ -36,6 +36,7 @@ struct CodeInfo {
     bool power_on_default = false;
     std::string function;                  // shared semantic id (docs/functions.md)
     std::vector<std::string> words;        // "X", ",A", ...
+    std::string parameter_letters;         // letters that are data, not axis moves, in this code's block (G04 X, G71 U)
     std::vector<std::string> required;
     std::vector<std::vector<std::string>> required_one_of;
     Availability availability = Availability::standard;
@@ -50,7 +51,6 @@ struct CodeInfo {
     std::uint8_t binder_traits = 0;
     static constexpr std::uint8_t kMotionGroup = 1;   // group 01
     static constexpr std::uint8_t kTakesArguments = 2;   // G65/G66: the other words are macro arguments
-    static constexpr std::uint8_t kDwell = 4;            // G04: X/U/P are times
     static constexpr std::uint8_t kLinear = 8;           // G01: plain A/R may be direct drawing
 
     bool takes_word(std::string_view word) const;

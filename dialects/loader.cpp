@@ -115,7 +115,7 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     }
     info.key = parsed->second;
     const std::string label = fmt::format("{} ({})", where, info.spelling);
-    r.check_keys(t, {"code", "aliases", "group", "modal", "default", "function", "words", "required", "required_one_of",
+    r.check_keys(t, {"code", "aliases", "group", "modal", "default", "function", "words", "parameter_words", "required", "required_one_of",
                      "availability", "availability_note", "en", "ru", "reference", "notes"},
                  label);
     info.aliases = r.strings(t, "aliases", label);
@@ -126,6 +126,10 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     info.power_on_default = r.boolean(t, "default", label, false);
     info.function = r.string(t, "function", label, true);
     info.words = r.strings(t, "words", label);
+    for (const std::string& w : r.strings(t, "parameter_words", label)) {
+        if (w.size() != 1) r.error(t.get("parameter_words"), fmt::format("{}.parameter_words: '{}' is not one letter", label, w));
+        else info.parameter_letters += w;
+    }
     info.required = r.strings(t, "required", label);
     if (const toml::node* n = t.get("required_one_of")) {
         if (const toml::array* outer = n->as_array()) {
