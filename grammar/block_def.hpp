@@ -26,6 +26,19 @@ std::string_view view(It b, It e) {
     return std::string_view(&*b, static_cast<std::size_t>(e - b));
 }
 
+// Primitive parsers that read raw characters and write into the builder share this frame: they
+// define `scan(builder, first, last)` and X3 sees an ordinary parser without attribute.
+template <typename Derived>
+struct builder_primitive : x3::parser<Derived> {
+    using attribute_type = x3::unused_type;
+    static bool const has_attribute = false;
+    using It = const char*;
+    template <typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+        return static_cast<const Derived&>(*this).scan(builder_of(ctx), first, last);
+    }
+};
+
 // One ASCII address letter; the attribute is the letter as written.
 struct letter_parser : x3::parser<letter_parser> {
     using attribute_type = char;
@@ -163,12 +176,8 @@ auto const colon_program = transactional[x3::omit[x3::raw[x3::lit(':') >> word_n
 
 // ( ... ): no nesting on FANUC; a nested '(' is diagnosed and balanced so the rest of the line still
 // reads; a missing ')' makes the comment run to the end of the line, with an error.
-struct paren_comment_parser : x3::parser<paren_comment_parser> {
-    using attribute_type = x3::unused_type;
-    static bool const has_attribute = false;
-    template <typename It, typename Ctx, typename RCtx, typename Attr>
-    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
-        Builder& b = builder_of(ctx);
+struct paren_comment_parser : builder_primitive<paren_comment_parser> {
+    bool scan(Builder& b, It& first, It last) const {
         if (first == last || *first != '(' || !b.rules.paren_comments) return false;
         It p = first;
         ++p;
@@ -206,12 +215,8 @@ inline paren_comment_parser const paren_comment{};
 
 // Comments to the end of the line: ';' where it is not the end of block (pcnc-mill), and the
 // dialect's line-comment introducers ('::' and ';;' in ADV400, dialects.md §6, §11.5).
-struct line_comment_parser : x3::parser<line_comment_parser> {
-    using attribute_type = x3::unused_type;
-    static bool const has_attribute = false;
-    template <typename It, typename Ctx, typename RCtx, typename Attr>
-    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
-        Builder& b = builder_of(ctx);
+struct line_comment_parser : builder_primitive<line_comment_parser> {
+    bool scan(Builder& b, It& first, It last) const {
         if (first == last) return false;
         const std::string_view rest = view(first, last);
         bool match = *first == ';' && b.rules.semicolon == dialects::SemicolonRole::comment;
@@ -231,22 +236,14 @@ inline line_comment_parser const line_comment{};
 
 // --- macro statements ------------------------------------------------------------------------------
 
-struct macro_enabled_parser : x3::parser<macro_enabled_parser> {
-    using attribute_type = x3::unused_type;
-    static bool const has_attribute = false;
-    template <typename It, typename Ctx, typename RCtx, typename Attr>
-    bool parse(It&, It const&, Ctx const& ctx, RCtx&, Attr&) const {
-        return builder_of(ctx).rules.macro_b;
-    }
+struct macro_enabled_parser : builder_primitive<macro_enabled_parser> {
+    bool scan(Builder& b, It&, It) const { return b.rules.macro_b; }
 };
 inline macro_enabled_parser const macro_enabled{};
 
 // DPRNT[...] text: brackets nest (#100[53] is a format), the text ends at the matching ']'.
-struct bracket_text_parser : x3::parser<bracket_text_parser> {
-    using attribute_type = x3::unused_type;
-    static bool const has_attribute = false;
-    template <typename It, typename Ctx, typename RCtx, typename Attr>
-    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+struct bracket_text_parser : builder_primitive<bracket_text_parser> {
+    bool scan(Builder& b, It& first, It last) const {
         if (first == last || *first != '[') return false;
         It p = std::next(first);
         int depth = 1;
@@ -256,7 +253,6 @@ struct bracket_text_parser : x3::parser<bracket_text_parser> {
             ++p;
         }
         if (p == last) return false;
-        Builder& b = builder_of(ctx);
         b.pending_text = {b.offset(&*first) + 1, b.offset(&*p)};
         first = std::next(p);
         return true;
@@ -358,31 +354,13 @@ auto const percent = x3::omit[x3::raw[x3::lit('%')][simple_token_t<TokenKind::pe
 // '/' and '/1'…'/9' (dialects.md §2, [FANUC]); only at the start of a block (see block rule).
 auto const block_delete = x3::omit[x3::raw[x3::lit('/') >> -x3::char_("1-9") >> !x3::lit('/')][simple_token_t<TokenKind::block_delete>{}]];
 
-struct eob_parser : x3::parser<eob_parser> {
-    using attribute_type = x3::unused_type;
-    static bool const has_attribute = false;
-    template <typename It, typename Ctx, typename RCtx, typename Attr>
-    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
-        Builder& b = builder_of(ctx);
-        if (first == last || *first != ';' || b.rules.semicolon != dialects::SemicolonRole::end_of_block) return false;
-        b.add_token(TokenKind::eob, &*first, &*first + 1);
-        ++first;
-        return true;
-    }
-};
-inline eob_parser const eob{};
 
 // --- error rules ---------------------------------------------------------------------------------
 
 // Each takes the text of a defect and explains it; see docs/diagnostics.md.
-struct error_rules_parser : x3::parser<error_rules_parser> {
-    using attribute_type = x3::unused_type;
-    static bool const has_attribute = false;
-
-    template <typename It, typename Ctx, typename RCtx, typename Attr>
-    bool parse(It& first, It const& last, Ctx const& ctx, RCtx&, Attr&) const {
+struct error_rules_parser : builder_primitive<error_rules_parser> {
+    bool scan(Builder& b, It& first, It last) const {
         if (first == last) return false;
-        Builder& b = builder_of(ctx);
         if (*first == ';' && b.rules.semicolon == dialects::SemicolonRole::end_of_block) return false;
         const char* const begin = &*first;
         const char* const end = begin + (last - first);
