@@ -44,45 +44,55 @@ struct BindContext {
     bool linear = false;   // the motion group's code is G01
 };
 
-// Returns true when the block has an M code that calls a subprogram (checked further in bind()).
-bool bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index, BindContext& context) {
+struct BlockFacts {
+    bool calls = false;            // an M code that calls a subprogram (checked further in bind())
+    std::uint32_t second_n = 0;    // token index of a second N word, 0 if none
+};
+
+BlockFacts bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index, BindContext& context) {
     const dialects::LexicalRules& rules = d.lexical;
     const std::uint32_t first = tree.blocks[index].first_token;
     const std::uint32_t end = tree.block_token_end(index);
     using Info = dialects::CodeInfo;
     std::uint8_t traits = 0;   // union of the block's G codes' binder traits
-    std::string_view data_letters;   // letters that are data in this block (G04 X, G71 U); one code's worth
-    std::string more_data_letters;   // rare: several codes with data letters
+    // Letters that are data in this block (G04 X, G71 U): at most a few codes' worth.
+    char data_letters[32];
+    std::size_t data_count = 0;
+    bool one_shot_code = false;   // a group 00 G code (cycle, G04, G10 ...): no direct drawing in its block
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
-        if (t.kind != TokenKind::word || t.letter != 'G') continue;
-        t.set_role(Role::g_code);
+        if (t.kind != TokenKind::word || (t.letter != 'G' && t.letter != 'M')) continue;
+        t.set_role(t.letter == 'G' ? Role::g_code : Role::m_code);
         const Info* info = code_info(tree, d, t);
         if (!info) continue;
+        if (info->binder_traits & Info::kOneShot) one_shot_code = true;
         traits |= info->binder_traits;
-        if (!info->parameter_letters.empty()) {
-            if (data_letters.empty()) data_letters = info->parameter_letters;
-            else more_data_letters += info->parameter_letters;
-        }
+        for (const char L : info->parameter_letters)
+            if (data_count < sizeof data_letters) data_letters[data_count++] = L;
         if (info->binder_traits & Info::kMotionGroup) context.linear = (info->binder_traits & Info::kLinear) != 0;
     }
     const bool arguments_block = (traits & Info::kTakesArguments) != 0;   // G65/G66: words are macro arguments
     auto is_data = [&](char L) {
-        return data_letters.find(L) != std::string_view::npos || more_data_letters.find(L) != std::string::npos;
+        return std::string_view(data_letters, data_count).find(L) != std::string_view::npos;
     };
-    const bool direct_drawing = rules.plain_direct_drawing && context.linear;
-    bool calls = false;
+    const bool direct_drawing = rules.plain_direct_drawing && context.linear && !one_shot_code;
+    BlockFacts facts;
+    bool seen_n = false;
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
         if (t.kind != TokenKind::word || t.letter == 'G') continue;
         const char L = t.letter;
         Role role = Role::parameter;
-        if (L == 'N') role = Role::sequence;
+        if (L == 'N') {
+            role = Role::sequence;
+            if (seen_n && !facts.second_n) facts.second_n = i;
+            seen_n = true;
+        }
         else if (L == 'O') role = Role::program;
         else if (L == 'M') {
             role = Role::m_code;
             const dialects::CodeInfo* info = code_info(tree, d, t);
-            calls |= info && info->function == fn::subprogram_call;
+            facts.calls |= info && info->function == fn::subprogram_call;
         }
         else if (arguments_block) role = Role::parameter;
         else if (is_data(L)) role = Role::parameter;
@@ -91,7 +101,7 @@ bool bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index,
         else if (rules.is_axis(L)) role = Role::axis_absolute;
         t.set_role(role);
     }
-    return calls;
+    return facts;
 }
 
 void split_programs(const SyntaxTree& tree, std::vector<Program>& programs) {
@@ -155,8 +165,17 @@ TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
     TypedFile file(tree, dialect);
     BindContext context;
     std::vector<std::size_t> call_blocks;
-    for (std::size_t i = 0; i < tree.block_count(); ++i)
-        if (bind_block(tree, dialect, i, context)) call_blocks.push_back(i);
+    for (std::size_t i = 0; i < tree.block_count(); ++i) {
+        const BlockFacts facts = bind_block(tree, dialect, i, context);
+        if (facts.calls) call_blocks.push_back(i);
+        if (facts.second_n) {
+            const Token& n = tree.tokens[facts.second_n];
+            file.diagnostics_.push_back(
+                {n.range(), Severity::error, "S0302",
+                 fmt::format("second sequence number '{}' in one block", tree.spelling(n)),
+                 "a block has one N word, at its start; remove this one or split the block"});
+        }
+    }
     split_programs(tree, file.programs_);
     // Call forms that contradict each other (dialects.md §3.6).
     for (const std::size_t i : call_blocks) {

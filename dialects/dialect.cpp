@@ -88,7 +88,8 @@ void Dialect::reindex() {
             (info.letter == 'G' && info.group == "01" ? CodeInfo::kMotionGroup : 0) |
             (info.function == functions::macro_call || info.function == functions::modal_macro_call
                  ? CodeInfo::kTakesArguments : 0) |
-            (info.function == functions::linear ? CodeInfo::kLinear : 0));
+            (info.function == functions::linear ? CodeInfo::kLinear : 0) |
+            (info.letter == 'G' && info.group == "00" ? CodeInfo::kOneShot : 0));
         index_[{info.letter, info.key}] = i;
         for (const std::string& alias : info.aliases)
             if (const auto parsed = parse_code_spelling(alias)) index_[*parsed] = i;

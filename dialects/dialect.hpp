@@ -52,6 +52,7 @@ struct CodeInfo {
     static constexpr std::uint8_t kMotionGroup = 1;   // group 01
     static constexpr std::uint8_t kTakesArguments = 2;   // G65/G66: the other words are macro arguments
     static constexpr std::uint8_t kLinear = 8;           // G01: plain A/R may be direct drawing
+    static constexpr std::uint8_t kOneShot = 16;         // group 00: no direct drawing in its block
 
     bool takes_word(std::string_view word) const;
 };

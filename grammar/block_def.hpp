@@ -386,13 +386,13 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                     return finish(r);
                 }
             }
-            // X?  Y?: a placeholder left in the program.
-            if (q < end && *q == '?') {
+            // X?  Y?  B_: a placeholder left in the program (or a format line copied from a manual).
+            if (q < end && (*q == '?' || *q == '_')) {
                 const char* r = q;
-                while (r < end && *r == '?') ++r;
+                while (r < end && (*r == '?' || *r == '_')) ++r;
                 b.add_error(begin, r, "S0104",
                             fmt::format("placeholder '{}': the value of {} is missing", view(begin, r), L),
-                            fmt::format("replace '?' with the value of {}", L), false);
+                            fmt::format("replace '{}' with the value of {}", view(q, r), L), false);
                 return finish(r);
             }
             // .: a second decimal point.
@@ -402,6 +402,16 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                 NumberLit n;
                 const char* s = r;
                 if (scan_number(s, end, true, false, n) && s < end && *s == '.') {
+                    if (n.point && s[-1] == '.' && s + 1 < end && s[1] == '.') {
+                        // N10... : an ellipsis of a printed listing, not a number.
+                        const char* e = s;
+                        while (e < end && e[0] == '.') ++e;
+                        b.add_error(begin, e, "S0113",
+                                    fmt::format("'{}' ends in an ellipsis: a listing's omission mark, not program text",
+                                                view(begin, e)),
+                                    "write the omitted blocks, or put the note in a comment", false);
+                        return finish(e);
+                    }
                     while (s < end && (*s == '.' || is_digit(*s))) ++s;
                     b.add_error(begin, s, "S0102",
                                 fmt::format("malformed number in '{}': more than one decimal point", view(begin, s)),
@@ -409,10 +419,12 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                     return finish(s);
                 }
             }
-            // Several letters: neither a word nor a macro keyword (IF, GOTO, WHILE, ...).
-            if (q < end && is_letter(*q)) {
-                const char* r = q;
-                while (r < end && is_letter(*r)) ++r;
+            // Three or more letters: neither a word nor a macro keyword (IF, GOTO, WHILE, ...). Two
+            // letters (IZ-0.6) are more likely a word whose value was lost: let the next one read.
+            const char* run = q;
+            while (run < end && is_letter(*run)) ++run;
+            if (run - begin >= 3) {
+                const char* r = run;
                 b.add_error(begin, r, "S0106",
                             fmt::format("'{}' is neither an address word nor a macro keyword", view(begin, r)),
                             b.rules.macro_b ? "put text in a comment '( ... )', or check the spelling of the keyword"
@@ -431,6 +443,32 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                            fmt::format("write the value right after {} (e.g. {}0.) or remove the letter", L, L));
             }
             return finish(q);
+        }
+        // 00018 at the start of a block: a program number whose O was read as zero (dialects.md §2, §11.10).
+        if (*p == '0' && b.tree.tokens.size() == b.block_first_token) {
+            const char* s = p + 1;
+            while (s < end && is_digit(*s)) ++s;
+            const std::size_t digits = static_cast<std::size_t>(s - p - 1);
+            if (digits >= 3 && digits <= 5 && (s == end || !(*s == '.' || is_digit(*s) || is_letter(*s)))) {
+                ast::Token& t = b.add_token(TokenKind::word, begin, s);
+                t.letter = 'O';
+                t.payload = 0;
+                for (const char* d = p + 1; d < s; ++d) t.payload = t.payload * 10 + (*d - '0');
+                b.diagnose(begin, p + 1, Severity::warning, "S0112",
+                           fmt::format("'{}' reads as program number O{}: the letter O was written as the digit 0",
+                                       view(begin, s), view(p + 1, s)),
+                           fmt::format("write 'O{}'", view(p + 1, s)));
+                b.last_error_mergeable = false;
+                return finish(s);
+            }
+        }
+        // '...' standing for omitted blocks in a printed listing.
+        if (*p == '.' && p + 2 < end && p[1] == '.' && p[2] == '.') {
+            const char* e = p;
+            while (e < end && *e == '.') ++e;
+            b.add_error(begin, e, "S0113", "'...' marks omitted blocks in a listing; it is not program text",
+                        "write the omitted blocks, or put the note in a comment", false);
+            return finish(e);
         }
         // 27 in 'N90 27 F100': a number without its address letter.
         {
@@ -452,9 +490,14 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                         "write the comment in parentheses: ( ... )", false);
             return finish(r);
         }
-        if (*p == '/') {
+        if (*p == '/' && !b.last_error_mergeable) {
             b.add_error(begin, p + 1, "S0108", "block delete '/' must be the first character of the block",
                         "move '/' to the start of the block, or remove it", false);
+            return finish(p + 1);
+        }
+        if (*p == ')' && !b.last_error_mergeable) {
+            b.add_error(begin, p + 1, "S0203", "')' without '(': the comment has no start",
+                        "add '(' where the comment begins", false);
             return finish(p + 1);
         }
         // Anything else: one character, or a whole run of non-ASCII bytes (prose outside a comment).
@@ -493,7 +536,7 @@ struct items_parser : x3::parser<items_parser<Item>> {
 };
 inline items_parser<decltype(item)> const items{item};
 
-auto const block_body = blanks >> -(block_delete >> blanks) >> -(colon_program >> blanks) >> items;
+auto const block_body = blanks >> -(block_delete >> blanks) >> -(&x3::lit(':') >> colon_program >> blanks) >> items;
 
 }  // namespace block_detail
 }  // namespace kerf::grammar

@@ -20,7 +20,15 @@ void Builder::add_error(const char* b, const char* e, const char* code, std::str
             last.length = offset(e) - last.begin;
             ast::Diagnostic& d = tree.diagnostics.back();
             d.range.end = offset(e);
-            d.message = fmt::format("unexpected text '{}'", std::string_view(base + last.begin, last.length));
+            const std::string_view text(base + last.begin, last.length);
+            if (text.back() == ')') {
+                // Prose that ends in ')' is a comment that lost its '(' (seed 000, N040).
+                d.code = "S0203";
+                d.message = fmt::format("text '{}' ends with ')' but has no '(': a comment without its start", text);
+                d.hint = "add '(' where the comment begins";
+            } else {
+                d.message = fmt::format("unexpected text '{}'", text);
+            }
             return;
         }
     }
@@ -40,26 +48,26 @@ bool only_blanks(const char* b, const char* e) {
     return true;
 }
 
-BlockKind classify(const ast::SyntaxTree& tree, std::size_t first, std::size_t last) {
+// One pass over the block's tokens: its kind and its flags.
+void classify(const ast::SyntaxTree& tree, ast::Block& block, std::size_t first, std::size_t last) {
     bool any = false;
     bool all_comments = true;
+    bool leading = true;   // before the first word/statement (comments and '/' do not count)
+    BlockKind kind = BlockKind::code;
     for (std::size_t i = first; i < last; ++i) {
         const ast::Token& t = tree.tokens[i];
+        if (t.kind == TokenKind::error) block.flags |= ast::block_flags::has_error;
+        if (t.kind == TokenKind::block_delete) block.flags |= ast::block_flags::deleted;
         if (t.kind == TokenKind::bom || t.kind == TokenKind::eob) continue;
-        if (!any) {
-            if (t.kind == TokenKind::percent) return BlockKind::percent;
-        }
+        if (!any && t.kind == TokenKind::percent) kind = BlockKind::percent;
         any = true;
         if (t.kind != TokenKind::comment) all_comments = false;
+        if (leading && t.kind != TokenKind::comment && t.kind != TokenKind::block_delete) {
+            leading = false;
+            if (kind != BlockKind::percent && t.kind == TokenKind::word && t.letter == 'O') kind = BlockKind::program_start;
+        }
     }
-    if (!any) return BlockKind::blank;
-    if (all_comments) return BlockKind::comment_only;
-    for (std::size_t i = first; i < last; ++i) {
-        const ast::Token& t = tree.tokens[i];
-        if (t.kind == TokenKind::comment || t.kind == TokenKind::block_delete || t.kind == TokenKind::bom) continue;
-        return t.kind == TokenKind::word && t.letter == 'O' ? BlockKind::program_start : BlockKind::code;
-    }
-    return BlockKind::code;
+    block.kind = !any ? BlockKind::blank : all_comments ? BlockKind::comment_only : kind;
 }
 
 class Driver {
@@ -174,13 +182,8 @@ private:
 
     void finish_block(std::size_t index, bool ended_by_eob) {
         ast::Block& b = tree_.blocks[index];
-        const std::size_t last = tree_.tokens.size();
-        b.kind = classify(tree_, b.first_token, last);
+        classify(tree_, b, b.first_token, tree_.tokens.size());
         if (ended_by_eob) b.flags |= ast::block_flags::has_eob;
-        for (std::size_t i = b.first_token; i < last; ++i) {
-            if (tree_.tokens[i].kind == TokenKind::error) b.flags |= ast::block_flags::has_error;
-            if (tree_.tokens[i].kind == TokenKind::block_delete) b.flags |= ast::block_flags::deleted;
-        }
         for (std::size_t i = diagnostics_at_start_; i < tree_.diagnostics.size(); ++i)
             if (tree_.diagnostics[i].severity == ast::Severity::error) b.flags |= ast::block_flags::has_error;
     }

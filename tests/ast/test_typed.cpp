@@ -111,3 +111,23 @@ TEST_CASE("rebinding one block takes its modal context from the blocks before") 
     typed.rebind_block(tree, 1);
     CHECK(tree.tokens[typed.block(1).first_token() + 1].role() == Role::direct_drawing);
 }
+
+TEST_CASE("a one-shot cycle code ends plain direct drawing for its block") {
+    const auto b = bind("G1 X10 Z0\nG71 U3 R1\nG76 P010060 Q50 R0.03\nX20 R2\n", "spinner-lathe-a");
+    CHECK(role_of(*b, 1, 'R') == Role::parameter);
+    CHECK(role_of(*b, 2, 'R') == Role::parameter);
+    CHECK(role_of(*b, 3, 'R') == Role::direct_drawing);   // G01 is still modal
+}
+
+TEST_CASE("SPINNER G384 H and M329 H are cycle data, not incremental C") {
+    const auto b = bind("G384 X0 C0 Z2 H20. R1 F1.5\nM329 Z2 H-30. R1 F1.5\nG1 H45\n", "spinner-lathe-a");
+    CHECK(role_of(*b, 0, 'H') == Role::parameter);
+    CHECK(role_of(*b, 1, 'H') == Role::parameter);
+    CHECK(role_of(*b, 2, 'H') == Role::axis_incremental);
+}
+
+TEST_CASE("a second N word in a block is diagnosed") {
+    const auto b = bind("N50 G384 N30 F1\n", "spinner-lathe-a");
+    REQUIRE(b->typed->diagnostics().size() == 1);
+    CHECK(b->typed->diagnostics()[0].code == "S0302");
+}

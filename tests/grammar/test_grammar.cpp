@@ -376,3 +376,43 @@ TEST_CASE("'//' comments of PC controls are one diagnostic to the end of the lin
     CHECK(diag_text(p.tree, 0) == "// UNLOAD ALL TOOLS");
     CHECK(tokens_of(p.tree, TokenKind::block_delete).empty());
 }
+
+TEST_CASE("OCR program number 00018 at the start of a block reads as O0018 with a warning") {
+    const dialects::Dialect* d = dialects::builtin_registry().find("spinner-lathe-a");
+    ast::SyntaxTree tree = grammar::parse("00018 (MAIN)\nM98 P1000\nM30\n01000 (SUB)\nM99\n", d->lexical);
+    const auto typed = ast::TypedFile::bind(tree, *d);
+    REQUIRE(typed.programs().size() == 2);
+    CHECK(typed.programs()[0].number == 18);
+    CHECK(typed.programs()[1].number == 1000);
+    REQUIRE(tree.diagnostics.size() == 2);
+    CHECK(tree.diagnostics[0].code == "S0112");
+    CHECK(tree.diagnostics[0].severity == ast::Severity::warning);
+    CHECK(tree.diagnostics[0].hint == "write 'O0018'");
+    // Not at the start of a block, a number without letter is still an error.
+    const auto p = parse("N10 00018\n");
+    CHECK(codes(p.tree) == std::vector<std::string>{"S0107"});
+}
+
+TEST_CASE("placeholders with '_' as in a manual's format line") {
+    const auto p = parse("G53 B_ Z__\n");
+    CHECK(codes(p.tree) == std::vector<std::string>{"S0104", "S0104"});
+    CHECK(diag_text(p.tree, 1) == "Z__");
+}
+
+TEST_CASE("an ellipsis after a number is named as such") {
+    const auto p = parse("N110.....\n");
+    CHECK(codes(p.tree) == std::vector<std::string>{"S0113"});
+}
+
+TEST_CASE("two letters without value do not swallow the word after them") {
+    const auto p = parse("G83X-2IZ-0.600\n", "adv400-lathe");
+    CHECK(p.tree.number_value(word(p.tree, 'Z')) == -0.6);
+    CHECK(codes(p.tree) == std::vector<std::string>{"S0101"});
+}
+
+TEST_CASE("')' without '(' is named; '/' inside prose is part of the prose") {
+    const auto p = parse("G1 X1 TEXT)\nF20 \xD0\xBC\xD0\xBC/\xD0\xBC\xD0\xB8\xD0\xBD\n");
+    CHECK(codes(p.tree) == std::vector<std::string>{"S0203", "S0109"});
+    const auto q = parse("G1 X1 )\n");
+    CHECK(codes(q.tree) == std::vector<std::string>{"S0203"});
+}
