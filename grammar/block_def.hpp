@@ -51,17 +51,17 @@ struct letter_parser : x3::parser<letter_parser> {
         return true;
     }
 };
-inline letter_parser const letter{};
-inline number_parser const word_number{true, true};
+letter_parser const letter{};
+number_parser const word_number{true, true};
 
 // --- word values ---------------------------------------------------------------------------------
 
-inline auto const set_number = [](auto& ctx) {
+auto const set_number = [](auto& ctx) {
     Builder& b = builder_of(ctx);
     b.pending = PendingValue::number;
     b.pending_number = x3::_attr(ctx);
 };
-inline auto const set_expr = [](auto& ctx) { builder_of(ctx).pending = PendingValue::expr; };
+auto const set_expr = [](auto& ctx) { builder_of(ctx).pending = PendingValue::expr; };
 
 // X-12.5 | X[#1+2] | X#5 | X-#5 | X-[#1] (dialects.md §2, FANUC macro B)
 auto const word_value = word_number[set_number] |
@@ -211,7 +211,7 @@ struct paren_comment_parser : builder_primitive<paren_comment_parser> {
         return true;
     }
 };
-inline paren_comment_parser const paren_comment{};
+paren_comment_parser const paren_comment{};
 
 // Comments to the end of the line: ';' where it is not the end of block (pcnc-mill), and the
 // dialect's line-comment introducers ('::' and ';;' in ADV400, dialects.md §6, §11.5).
@@ -232,14 +232,14 @@ struct line_comment_parser : builder_primitive<line_comment_parser> {
         return true;
     }
 };
-inline line_comment_parser const line_comment{};
+line_comment_parser const line_comment{};
 
 // --- macro statements ------------------------------------------------------------------------------
 
 struct macro_enabled_parser : builder_primitive<macro_enabled_parser> {
     bool scan(Builder& b, It&, It) const { return b.rules.macro_b; }
 };
-inline macro_enabled_parser const macro_enabled{};
+macro_enabled_parser const macro_enabled{};
 
 // DPRNT[...] text: brackets nest (#100[53] is a format), the text ends at the matching ']'.
 struct bracket_text_parser : builder_primitive<bracket_text_parser> {
@@ -258,7 +258,7 @@ struct bracket_text_parser : builder_primitive<bracket_text_parser> {
         return true;
     }
 };
-inline bracket_text_parser const bracket_text{};
+bracket_text_parser const bracket_text{};
 
 struct make_statement_t {
     StatementKind kind;
@@ -321,7 +321,7 @@ auto const print_stmt = x3::omit[x3::raw[kw("dprnt") >> blanks >> bracket_text][
                         x3::omit[x3::raw[kw("bprnt") >> blanks >> bracket_text][make_statement_t{StatementKind::bprnt}]];
 auto const file_stmt = x3::omit[x3::raw[kw("popen")][make_statement_t{StatementKind::popen}]] | x3::omit[x3::raw[kw("pclos")][make_statement_t{StatementKind::pclos}]];
 
-inline auto const make_statement_token = [](auto& ctx) {
+auto const make_statement_token = [](auto& ctx) {
     Builder& b = builder_of(ctx);
     const auto where = x3::_attr(ctx);
     const char* begin = &*where.begin();
@@ -509,8 +509,11 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
         return finish(r);
     }
 };
-inline error_rules_parser const error_rules{};
+error_rules_parser const error_rules{};
 
+// Grammar objects are namespace-scope constants with internal linkage, defined in dependency order in
+// the one translation unit that includes this header (grammar/parse.cpp): no inline variables, whose
+// initialization order against ordinary ones is not guaranteed (a fuzzer found that the hard way).
 // Items in the order they are tried; the error rules take whatever is left, so the item loop only
 // stops at the end of the line or at ';' (end of block).
 auto const item = paren_comment | word | line_comment | comma_word | statement | percent | error_rules;
@@ -534,7 +537,7 @@ struct items_parser : x3::parser<items_parser<Item>> {
         }
     }
 };
-inline items_parser<decltype(item)> const items{item};
+items_parser<decltype(item)> const items{item};
 
 auto const block_body = blanks >> -(block_delete >> blanks) >> -(&x3::lit(':') >> colon_program >> blanks) >> items;
 

@@ -58,11 +58,7 @@ using ast::Expr;
 using ast::ExprKind;
 using ast::Function;
 
-inline auto const blanks = x3::omit[*x3::char_(" \t\r\f\v")];
-
-struct binary_ops_ : x3::symbols<std::uint8_t> {
-    binary_ops_() = default;
-};
+auto const blanks = x3::omit[*x3::char_(" \t\r\f\v")];
 
 inline x3::symbols<std::uint8_t> make_symbols(std::initializer_list<std::pair<const char*, BinaryOp>> items) {
     x3::symbols<std::uint8_t> s;
@@ -71,11 +67,11 @@ inline x3::symbols<std::uint8_t> make_symbols(std::initializer_list<std::pair<co
 }
 
 // Keyword operators are case-insensitive (lower-case programs exist); x3::no_case wraps them.
-inline const x3::symbols<std::uint8_t> additive_ops =
+const x3::symbols<std::uint8_t> additive_ops =
     make_symbols({{"+", BinaryOp::add}, {"-", BinaryOp::sub}, {"or", BinaryOp::or_}, {"xor", BinaryOp::xor_}});
-inline const x3::symbols<std::uint8_t> multiplicative_ops =
+const x3::symbols<std::uint8_t> multiplicative_ops =
     make_symbols({{"*", BinaryOp::mul}, {"/", BinaryOp::div}, {"and", BinaryOp::and_}, {"mod", BinaryOp::mod}});
-inline const x3::symbols<std::uint8_t> comparison_ops =
+const x3::symbols<std::uint8_t> comparison_ops =
     make_symbols({{"eq", BinaryOp::eq}, {"ne", BinaryOp::ne}, {"gt", BinaryOp::gt}, {"lt", BinaryOp::lt},
                   {"ge", BinaryOp::ge}, {"le", BinaryOp::le}});
 
@@ -90,11 +86,11 @@ inline x3::symbols<std::uint8_t> make_functions() {
     for (const auto& [name, f] : items) s.add(name, static_cast<std::uint8_t>(f));
     return s;
 }
-inline const x3::symbols<std::uint8_t> functions = make_functions();
+const x3::symbols<std::uint8_t> functions = make_functions();
 
 // --- actions -------------------------------------------------------------------------------------
 
-inline auto const push_number = [](auto& ctx) {
+auto const push_number = [](auto& ctx) {
     Builder& b = builder_of(ctx);
     const NumberLit& n = x3::_attr(ctx);
     Expr e;
@@ -120,9 +116,9 @@ struct wrap_one {
     }
 };
 
-inline auto const push_operator = [](auto& ctx) { builder_of(ctx).operators.push_back(x3::_attr(ctx)); };
+auto const push_operator = [](auto& ctx) { builder_of(ctx).operators.push_back(x3::_attr(ctx)); };
 
-inline auto const make_binary = [](auto& ctx) {
+auto const make_binary = [](auto& ctx) {
     Builder& b = builder_of(ctx);
     Expr e;
     e.kind = ExprKind::binary;
@@ -135,12 +131,12 @@ inline auto const make_binary = [](auto& ctx) {
     b.push_expr(e);
 };
 
-inline auto const open_function = [](auto& ctx) {
+auto const open_function = [](auto& ctx) {
     Builder& b = builder_of(ctx);
     b.functions.push_back({static_cast<Function>(x3::_attr(ctx)), b.stack.size()});
 };
 
-inline auto const close_function = [](auto& ctx) {
+auto const close_function = [](auto& ctx) {
     Builder& b = builder_of(ctx);
     const Builder::FunctionMark mark = b.functions.back();
     b.functions.pop_back();
@@ -166,7 +162,7 @@ x3::rule<struct variable_class> const variable = "variable";
 x3::rule<struct bracket_class> const bracket = "bracket";
 x3::rule<struct function_call_class> const function_call = "function call";
 
-inline number_parser const expr_number{false, false};
+number_parser const expr_number{false, false};
 
 auto const bracket_def = x3::omit[x3::raw[x3::lit('[') >> blanks >> expression >> blanks >> x3::lit(']')][wrap_one<ExprKind::bracket>{}]];
 
