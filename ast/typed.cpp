@@ -40,7 +40,23 @@ const dialects::CodeInfo* code_info(const SyntaxTree& tree, const dialects::Dial
 
 // What the binder carries from block to block: the static reading of the motion group, used only
 // to recognise plain A/R direct-drawing words (dialects.md §11.4). The interpreter keeps the real state.
+// What the binder carries from block to block: the letter table of the dialect, and the static
+// reading of the motion group, used only to recognise plain A/R direct-drawing words
+// (dialects.md §11.4). The interpreter keeps the real state.
 struct BindContext {
+    explicit BindContext(const dialects::LexicalRules& rules) {
+        for (char L = 'A'; L <= 'Z'; ++L) {
+            Role r = Role::parameter;
+            if (rules.incremental_axis_of(L)) r = Role::axis_incremental;
+            else if (rules.is_axis(L)) r = Role::axis_absolute;
+            letter_role[static_cast<std::size_t>(L - 'A')] = r;
+        }
+        letter_role['N' - 'A'] = Role::sequence;
+        letter_role['O' - 'A'] = Role::program;
+        letter_role['M' - 'A'] = Role::m_code;
+        letter_role['G' - 'A'] = Role::g_code;
+    }
+    Role letter_role[26];
     bool linear = false;   // the motion group's code is G01
 };
 
@@ -49,56 +65,42 @@ struct BlockFacts {
     std::uint32_t second_n = 0;    // token index of a second N word, 0 if none
 };
 
+std::uint32_t letter_bit(char L) { return std::uint32_t{1} << (L - 'A'); }
+
 BlockFacts bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t index, BindContext& context) {
-    const dialects::LexicalRules& rules = d.lexical;
+    using Info = dialects::CodeInfo;
     const std::uint32_t first = tree.blocks[index].first_token;
     const std::uint32_t end = tree.block_token_end(index);
-    using Info = dialects::CodeInfo;
-    std::uint8_t traits = 0;   // union of the block's G codes' binder traits
-    // Letters that are data in this block (G04 X, G71 U): at most a few codes' worth.
-    char data_letters[32];
-    std::size_t data_count = 0;
-    bool one_shot_code = false;   // a group 00 G code (cycle, G04, G10 ...): no direct drawing in its block
+    BlockFacts facts;
+    // First the block's codes: they decide what the other letters mean.
+    std::uint8_t traits = 0;         // union of the codes' binder traits
+    std::uint32_t data_letters = 0;  // letters that are data in this block (G04 X, G71 U), one bit each
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
         if (t.kind != TokenKind::word || (t.letter != 'G' && t.letter != 'M')) continue;
         t.set_role(t.letter == 'G' ? Role::g_code : Role::m_code);
         const Info* info = code_info(tree, d, t);
         if (!info) continue;
-        if (info->binder_traits & Info::kOneShot) one_shot_code = true;
         traits |= info->binder_traits;
-        for (const char L : info->parameter_letters)
-            if (data_count < sizeof data_letters) data_letters[data_count++] = L;
+        data_letters |= info->parameter_mask;
+        facts.calls |= (info->binder_traits & Info::kCallsSubprogram) != 0;
         if (info->binder_traits & Info::kMotionGroup) context.linear = (info->binder_traits & Info::kLinear) != 0;
     }
-    const bool arguments_block = (traits & Info::kTakesArguments) != 0;   // G65/G66: words are macro arguments
-    auto is_data = [&](char L) {
-        return std::string_view(data_letters, data_count).find(L) != std::string_view::npos;
-    };
-    const bool direct_drawing = rules.plain_direct_drawing && context.linear && !one_shot_code;
-    BlockFacts facts;
+    if (traits & Info::kTakesArguments) data_letters = ~std::uint32_t{0};   // G65/G66: all arguments
+    const bool direct_drawing = d.lexical.plain_direct_drawing && context.linear && !(traits & Info::kOneShot);
     bool seen_n = false;
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
-        if (t.kind != TokenKind::word || t.letter == 'G') continue;
         const char L = t.letter;
-        Role role = Role::parameter;
-        if (L == 'N') {
-            role = Role::sequence;
+        if (t.kind != TokenKind::word || L == 'G' || L == 'M' || L < 'A' || L > 'Z') continue;
+        Role role = context.letter_role[L - 'A'];
+        if (role == Role::sequence) {
             if (seen_n && !facts.second_n) facts.second_n = i;
             seen_n = true;
+        } else if (role != Role::program) {
+            if (data_letters & letter_bit(L)) role = Role::parameter;
+            else if (direct_drawing && (L == 'A' || L == 'R')) role = Role::direct_drawing;
         }
-        else if (L == 'O') role = Role::program;
-        else if (L == 'M') {
-            role = Role::m_code;
-            const dialects::CodeInfo* info = code_info(tree, d, t);
-            facts.calls |= info && info->function == fn::subprogram_call;
-        }
-        else if (arguments_block) role = Role::parameter;
-        else if (is_data(L)) role = Role::parameter;
-        else if (direct_drawing && (L == 'A' || L == 'R')) role = Role::direct_drawing;
-        else if (rules.incremental_axis_of(L)) role = Role::axis_incremental;
-        else if (rules.is_axis(L)) role = Role::axis_absolute;
         t.set_role(role);
     }
     return facts;
@@ -163,7 +165,7 @@ void split_programs(const SyntaxTree& tree, std::vector<Program>& programs) {
 
 TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
     TypedFile file(tree, dialect);
-    BindContext context;
+    BindContext context(dialect.lexical);
     std::vector<std::size_t> call_blocks;
     for (std::size_t i = 0; i < tree.block_count(); ++i) {
         const BlockFacts facts = bind_block(tree, dialect, i, context);
@@ -194,7 +196,7 @@ TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
 }
 
 void TypedFile::rebind_block(SyntaxTree& tree, std::size_t index) {
-    BindContext context;
+    BindContext context(dialect_->lexical);
     // Modal context: the last motion code before this block.
     bool found = false;
     for (std::size_t i = index; i-- > 0 && !found;) {

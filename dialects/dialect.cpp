@@ -89,7 +89,11 @@ void Dialect::reindex() {
             (info.function == functions::macro_call || info.function == functions::modal_macro_call
                  ? CodeInfo::kTakesArguments : 0) |
             (info.function == functions::linear ? CodeInfo::kLinear : 0) |
-            (info.letter == 'G' && info.group == "00" ? CodeInfo::kOneShot : 0));
+            (info.letter == 'G' && info.group == "00" ? CodeInfo::kOneShot : 0) |
+            (info.function == functions::subprogram_call ? CodeInfo::kCallsSubprogram : 0));
+        info.parameter_mask = 0;
+        for (const char L : info.parameter_letters)
+            if (L >= 'A' && L <= 'Z') info.parameter_mask |= std::uint32_t{1} << (L - 'A');
         index_[{info.letter, info.key}] = i;
         for (const std::string& alias : info.aliases)
             if (const auto parsed = parse_code_spelling(alias)) index_[*parsed] = i;

@@ -53,6 +53,8 @@ struct CodeInfo {
     static constexpr std::uint8_t kTakesArguments = 2;   // G65/G66: the other words are macro arguments
     static constexpr std::uint8_t kLinear = 8;           // G01: plain A/R may be direct drawing
     static constexpr std::uint8_t kOneShot = 16;         // group 00: no direct drawing in its block
+    static constexpr std::uint8_t kCallsSubprogram = 32; // M98
+    std::uint32_t parameter_mask = 0;                    // parameter_letters as bits (A = bit 0)
 
     bool takes_word(std::string_view word) const;
 };
