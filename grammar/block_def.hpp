@@ -369,6 +369,16 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             first += (stop - begin);
             return true;
         };
+        // An expression nested past the grammar's limit: the rest of the line cannot be read.
+        if (b.too_deep_at) {
+            b.too_deep_at = nullptr;
+            const char* r = end;
+            while (r > p && *(r - 1) == '\r') --r;
+            b.add_error(begin, r, "S0114",
+                        fmt::format("expression nested more than {} levels deep", Builder::kMaxExpressionDepth),
+                        "FANUC allows 5 levels of brackets; split the expression with #variables", false);
+            return finish(r);
+        }
         if (is_letter(*p)) {
             const char L = upper(*p);
             const char* q = p + 1;

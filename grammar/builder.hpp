@@ -45,6 +45,16 @@ public:
     std::vector<FunctionMark> functions;
     std::vector<std::uint8_t> operators;   // pending binary operators of the current level
 
+    // Expression nesting (FANUC allows 5 bracket levels; the analyzer says so). Deeper than this the
+    // grammar gives up on the expression and the error rules report too_deep_at.
+    static constexpr int kMaxExpressionDepth = 64;
+    int depth = 0;
+    const char* too_deep_at = nullptr;
+
+    // Diagnostics of merged error runs whose message is written when the block ends (one message
+    // per run, not one per piece: a 1 MB line of junk must not cost 1 MB per character).
+    std::vector<std::size_t> merged_diagnostics;
+
     // The value of the word being parsed.
     PendingValue pending = PendingValue::none;
     NumberLit pending_number;

@@ -42,6 +42,39 @@ struct transactional_directive : x3::unary_parser<Subject, transactional_directi
     }
 };
 
+// Bounds the recursion of expressions: every nesting (bracket, function, unary sign) passes through
+// the unary rule, which this guards. Past the limit the subject fails and the builder records where,
+// so the error rules can say so instead of the stack overflowing (fuzz/regressions/stack-overflow-*).
+template <typename Subject>
+struct depth_guard_directive : x3::unary_parser<Subject, depth_guard_directive<Subject>> {
+    using base_type = x3::unary_parser<Subject, depth_guard_directive<Subject>>;
+    static bool const has_attribute = false;
+    using attribute_type = x3::unused_type;
+    constexpr depth_guard_directive(Subject const& subject) : base_type(subject) {}
+
+    template <typename It, typename Ctx, typename RCtx, typename Attr>
+    bool parse(It& first, It const& last, Ctx const& ctx, RCtx& rctx, Attr&) const {
+        Builder& b = builder_of(ctx);
+        if (b.depth >= Builder::kMaxExpressionDepth) {
+            if (!b.too_deep_at) b.too_deep_at = &*first;
+            return false;
+        }
+        ++b.depth;
+        const bool ok = this->subject.parse(first, last, ctx, rctx, x3::unused);
+        --b.depth;
+        return ok;
+    }
+};
+
+struct depth_guard_gen {
+    template <typename Subject>
+    constexpr depth_guard_directive<typename x3::extension::as_parser<Subject>::value_type> operator[](
+        Subject const& subject) const {
+        return {x3::as_parser(subject)};
+    }
+};
+inline constexpr depth_guard_gen depth_guard{};
+
 struct transactional_gen {
     template <typename Subject>
     constexpr transactional_directive<typename x3::extension::as_parser<Subject>::value_type> operator[](
@@ -177,8 +210,9 @@ auto const function_call_def =
 
 auto const primary_def = expr_number[push_number] | variable | transactional[bracket] | function_call;
 
-auto const unary_def = x3::omit[x3::raw[x3::lit('-') >> blanks >> unary][wrap_one<ExprKind::negate>{}]] |
-                       x3::omit[x3::raw[x3::lit('+') >> blanks >> unary][wrap_one<ExprKind::plus>{}]] | primary;
+auto const unary_def = depth_guard[x3::omit[x3::raw[x3::lit('-') >> blanks >> unary][wrap_one<ExprKind::negate>{}]] |
+                                   x3::omit[x3::raw[x3::lit('+') >> blanks >> unary][wrap_one<ExprKind::plus>{}]] |
+                                   primary];
 
 auto const multiplicative_def =
     unary >> *transactional[blanks >> x3::no_case[multiplicative_ops][push_operator] >> blanks >> unary][make_binary];

@@ -18,17 +18,9 @@ void Builder::add_error(const char* b, const char* e, const char* code, std::str
         for (const char* p = gap; only_blanks && p < b; ++p) only_blanks = block_detail::is_blank(*p);
         if (last.kind == ast::TokenKind::error && only_blanks && !tree.diagnostics.empty()) {
             last.length = offset(e) - last.begin;
-            ast::Diagnostic& d = tree.diagnostics.back();
-            d.range.end = offset(e);
-            const std::string_view text(base + last.begin, last.length);
-            if (text.back() == ')') {
-                // Prose that ends in ')' is a comment that lost its '(' (seed 000, N040).
-                d.code = "S0203";
-                d.message = fmt::format("text '{}' ends with ')' but has no '(': a comment without its start", text);
-                d.hint = "add '(' where the comment begins";
-            } else {
-                d.message = fmt::format("unexpected text '{}'", text);
-            }
+            tree.diagnostics.back().range.end = offset(e);
+            if (merged_diagnostics.empty() || merged_diagnostics.back() != tree.diagnostics.size() - 1)
+                merged_diagnostics.push_back(tree.diagnostics.size() - 1);
             return;
         }
     }
@@ -173,6 +165,8 @@ private:
             builder_.add_error(it, line_end, "S0199", "internal: the grammar stopped here", "", false);
             it = line_end;
         }
+        builder_.depth = 0;
+        builder_.too_deep_at = nullptr;
         builder_.stack.clear();
         builder_.statement_stack.clear();
         builder_.functions.clear();
@@ -180,7 +174,27 @@ private:
         return it;
     }
 
+    // Merged runs of junk get their message once, quoting at most 80 characters of the run.
+    void write_merged_messages() {
+        for (const std::size_t i : builder_.merged_diagnostics) {
+            ast::Diagnostic& d = tree_.diagnostics[i];
+            const std::string_view text = tree_.slice(d.range);
+            std::string shown(text.substr(0, 80));
+            if (text.size() > 80) shown += "...";
+            if (text.back() == ')') {
+                // Prose that ends in ')' is a comment that lost its '(' (seed 000, N040).
+                d.code = "S0203";
+                d.message = fmt::format("text '{}' ends with ')' but has no '(': a comment without its start", shown);
+                d.hint = "add '(' where the comment begins";
+            } else {
+                d.message = fmt::format("unexpected text '{}'", shown);
+            }
+        }
+        builder_.merged_diagnostics.clear();
+    }
+
     void finish_block(std::size_t index, bool ended_by_eob) {
+        write_merged_messages();
         ast::Block& b = tree_.blocks[index];
         classify(tree_, b, b.first_token, tree_.tokens.size());
         if (ended_by_eob) b.flags |= ast::block_flags::has_eob;

@@ -416,3 +416,27 @@ TEST_CASE("')' without '(' is named; '/' inside prose is part of the prose") {
     const auto q = parse("G1 X1 )\n");
     CHECK(codes(q.tree) == std::vector<std::string>{"S0203"});
 }
+
+TEST_CASE("expressions nested past the limit are one diagnostic, not a stack overflow") {
+    const auto brackets = parse("#1=" + std::string(20000, '[') + "1\nG0 X1\n");
+    CHECK(codes(brackets.tree) == std::vector<std::string>{"S0114"});
+    CHECK(brackets.tree.number_value(word(brackets.tree, 'X')) == 1);
+    const auto minus = parse("#1=" + std::string(40000, '-') + "1\n");
+    CHECK(codes(minus.tree) == std::vector<std::string>{"S0114"});
+    const auto functions = parse("X[" + [] {
+        std::string s;
+        for (int i = 0; i < 5000; ++i) s += "SIN[";
+        return s;
+    }() + "1\n");
+    CHECK(codes(functions.tree) == std::vector<std::string>{"S0114"});
+    // 64 levels are fine (FANUC's own limit of 5 is the analyzer's business).
+    const auto ok = parse("#1=" + std::string(60, '[') + "1" + std::string(60, ']') + "\n");
+    CHECK(ok.tree.diagnostics.empty());
+}
+
+TEST_CASE("a long line of junk is one diagnostic with a short message") {
+    const auto p = parse(std::string(200000, '@') + "\n");
+    REQUIRE(p.tree.diagnostics.size() == 1);
+    CHECK(p.tree.diagnostics[0].range.size() == 200000);
+    CHECK(p.tree.diagnostics[0].message.size() < 120);
+}
