@@ -179,8 +179,14 @@ private:
         for (const std::size_t i : builder_.merged_diagnostics) {
             ast::Diagnostic& d = tree_.diagnostics[i];
             const std::string_view text = tree_.slice(d.range);
-            std::string shown(text.substr(0, 80));
-            if (text.size() > 80) shown += "...";
+            // At most 80 characters, cut on a UTF-8 character boundary.
+            std::size_t cut = 0;
+            for (int chars = 0; cut < text.size() && chars < 80; ++chars) {
+                ++cut;
+                while (cut < text.size() && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) ++cut;
+            }
+            std::string shown(text.substr(0, cut));
+            if (cut < text.size()) shown += "...";
             if (text.back() == ')') {
                 // Prose that ends in ')' is a comment that lost its '(' (seed 000, N040).
                 d.code = "S0203";
