@@ -125,8 +125,8 @@ private:
         // Generous estimates: reserved capacity that is never written costs address space, not
         // memory (ast/large_allocator.hpp), and growing a 200 MB array would double the peak.
         const std::size_t size = static_cast<std::size_t>(end - base);
-        tree_.blocks.reserve(size / 8 + 16);
-        tree_.tokens.reserve(size / 4 + 16);
+        tree_.blocks.reserve(size / 4 + 16);
+        tree_.tokens.reserve(size / 2 + 16);   // a dense G1X1Y2 has 2-3 bytes per token
     }
 
     // Keeps the next stretch of the token and block arrays mapped before the parser writes there.
