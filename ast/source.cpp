@@ -15,6 +15,17 @@ LineIndex::LineIndex(std::string_view text) : text_(text) {
         p = static_cast<const char*>(nl) + 1;
         starts_.push_back(static_cast<std::uint32_t>(p - text.data()));
     }
+    // Most NC lines are ASCII; for them a UTF-16 column needs no walk along the line.
+    ascii_.assign(starts_.size(), true);
+    for (std::size_t line = 0; line < starts_.size(); ++line) {
+        const std::size_t end = line + 1 < starts_.size() ? starts_[line + 1] : text.size();
+        for (std::size_t i = starts_[line]; i < end; ++i) {
+            if (static_cast<unsigned char>(text[i]) >= 0x80) {
+                ascii_[line] = false;
+                break;
+            }
+        }
+    }
 }
 
 std::uint32_t LineIndex::line_of(std::uint32_t offset) const {
@@ -43,6 +54,7 @@ int utf8_length(unsigned char lead) {
 Position LineIndex::utf16(std::uint32_t offset) const {
     offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
     const std::uint32_t line = line_of(offset);
+    if (ascii_[line]) return {line, offset - starts_[line]};
     std::uint32_t units = 0;
     for (std::uint32_t i = starts_[line]; i < offset;) {
         const int n = utf8_length(static_cast<unsigned char>(text_[i]));
@@ -57,6 +69,7 @@ std::uint32_t LineIndex::offset_of_utf16(Position p) const {
     const std::uint32_t line_end =
         p.line + 1 < starts_.size() ? starts_[p.line + 1] : static_cast<std::uint32_t>(text_.size());
     std::uint32_t i = starts_[p.line];
+    if (ascii_[p.line]) return std::min(i + p.column, line_end);
     std::uint32_t units = 0;
     while (i < line_end && units < p.column) {
         const int n = utf8_length(static_cast<unsigned char>(text_[i]));

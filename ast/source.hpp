@@ -35,6 +35,7 @@ public:
 private:
     std::string_view text_;
     std::vector<std::uint32_t> starts_;
+    std::vector<bool> ascii_;   // per line: no byte >= 0x80, so UTF-16 columns are byte columns
     std::uint32_t line_of(std::uint32_t offset) const;
 };
 
