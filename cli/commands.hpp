@@ -11,5 +11,6 @@ using Command = std::function<int()>;
 Command add_parse_command(CLI::App& app);
 Command add_dialects_command(CLI::App& app);
 Command add_explain_command(CLI::App& app);
+Command add_run_command(CLI::App& app);
 
 }  // namespace kerf::cli

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     add("parse", kerf::cli::add_parse_command(app));
     add("dialects", kerf::cli::add_dialects_command(app));
     add("explain", kerf::cli::add_explain_command(app));
+    add("run", kerf::cli::add_run_command(app));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

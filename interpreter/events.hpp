@@ -1,0 +1,53 @@
+// The trace: one event per motion or state change, each pointing back to its source block. Every
+// consumer (CLI trace, plot, analyzer, language server, converter check) reads these events, so
+// what they show cannot disagree (design.md "One interpreter").
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "ast/source.hpp"
+
+namespace kerf::interpreter {
+
+// Axes in a fixed order; positions are in work coordinates as programmed (lathe X as diameter).
+enum class Axis : std::uint8_t { x, y, z, a, b, c };
+inline constexpr std::size_t kAxisCount = 6;
+inline constexpr char kAxisLetters[kAxisCount] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
+std::optional<Axis> axis_of_letter(char letter);
+
+using Position = std::array<double, kAxisCount>;
+
+struct SourceRef {
+    std::uint32_t file = 0;     // index into the run's file table (RunResult::files)
+    ast::Range range;           // the block
+    std::uint32_t line = 0;     // 1-based line of the block start
+};
+
+enum class EventKind : std::uint8_t {
+    rapid, linear, arc_cw, arc_ccw, thread, dwell,
+    tool_change, spindle, coolant, coordinate_change, feed_mode,
+    stop, optional_stop, end, alarm, message, call, return_,
+};
+const char* to_string(EventKind k);
+
+struct Event {
+    EventKind kind = EventKind::rapid;
+    SourceRef source;
+    Position start{};                    // motion: where it starts (work coordinates)
+    Position end{};                      // motion: where it ends; other events: the position then
+    std::optional<Position> center;      // arcs: the centre (X as diameter on lathes, like end)
+    double radius = 0;                   // arcs
+    double length_mm = 0;                // path length of the move
+    double time_s = 0;                   // estimated time of this event
+    double feed = 0;                     // motion: programmed feed (mm/min or mm/rev, see feed_per_rev)
+    bool feed_per_rev = false;
+    double spindle_rpm = 0;
+    int tool = 0;                        // tool_change: the tool number; otherwise the active tool
+    int code = 0;                        // alarm number, M code, call target ...
+    std::string text;                    // alarm/message text, DPRNT output
+};
+
+}  // namespace kerf::interpreter

@@ -1,0 +1,214 @@
+// Macro B statements and G65 calls (reference/dialects.md §3.7; FANUC custom macro B).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dialects/functions.hpp"
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+
+namespace {
+
+// Argument specification I: address → local variable (dialects.md §3.7).
+int argument_variable(char letter) {
+    switch (letter) {
+        case 'A': return 1;  case 'B': return 2;  case 'C': return 3;  case 'I': return 4;
+        case 'J': return 5;  case 'K': return 6;  case 'D': return 7;  case 'E': return 8;
+        case 'F': return 9;  case 'H': return 11; case 'M': return 13; case 'Q': return 17;
+        case 'R': return 18; case 'S': return 19; case 'T': return 20; case 'U': return 21;
+        case 'V': return 22; case 'W': return 23; case 'X': return 24; case 'Y': return 25;
+        case 'Z': return 26; default: return 0;
+    }
+}
+
+}  // namespace
+
+// Returns false when the block must not go on (a jump, an alarm, a call).
+bool Executor::execute_statements(Frame& frame, const ast::BlockView& view) {
+    const ast::SyntaxTree& tree = file_of(frame).tree;
+    for (const std::uint32_t ti : view.statements()) {
+        const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
+        if (!execute_statement(frame, view, s)) return false;
+    }
+    if (const auto call = view.macro_call()) return !start_macro_call(frame, view, *call);
+    return true;
+}
+
+bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const ast::Statement& s) {
+    const ast::SyntaxTree& tree = file_of(frame).tree;
+    auto fail = [&](const macro::Error& e) {
+        alarm(frame, view, e.alarm, e.message);
+        return false;
+    };
+    auto condition = [&]() -> std::optional<bool> {
+        const macro::ConditionResult c = macro::evaluate_condition(tree, s.value, variables_);
+        if (c.error) {
+            fail(*c.error);
+            return std::nullopt;
+        }
+        return c.value;
+    };
+    auto label_value = [&]() -> std::optional<double> {
+        const macro::Result r = macro::evaluate(tree, s.label, variables_);
+        if (r.error) {
+            fail(*r.error);
+            return std::nullopt;
+        }
+        return r.value.vacant ? 0.0 : r.value.number;
+    };
+    switch (s.kind) {
+        case ast::StatementKind::assign:
+            if (const auto e = macro::assign(tree, s, variables_)) return fail(*e);
+            return true;
+        case ast::StatementKind::if_then: {
+            const auto c = condition();
+            if (!c) return false;
+            if (*c) return execute_statement(frame, view, tree.statements[static_cast<std::size_t>(s.then_statement)]);
+            return true;
+        }
+        case ast::StatementKind::if_goto:
+        case ast::StatementKind::goto_: {
+            if (s.kind == ast::StatementKind::if_goto) {
+                const auto c = condition();
+                if (!c) return false;
+                if (!*c) return true;
+            }
+            const auto n = label_value();
+            if (!n) return false;
+            const auto target = find_label(frame, std::round(*n));
+            if (!target) {
+                alarm(frame, view, 128, fmt::format("GOTO {}: no sequence number N{} in this program (alarm 128)", *n, *n));
+                return false;
+            }
+            frame.block = *target;
+            frame.loops.clear();   // a jump out of a loop leaves it
+            return false;
+        }
+        case ast::StatementKind::while_do:
+        case ast::StatementKind::do_: {
+            const auto m = label_value();
+            if (!m) return false;
+            const bool enter = s.kind == ast::StatementKind::do_ ? true : [&] {
+                const auto c = condition();
+                return c.value_or(false);
+            }();
+            if (stopped_) return false;
+            if (enter) {
+                if (frame.loops.empty() || frame.loops.back().do_block != view.index()) {
+                    if (frame.loops.size() >= 3) {
+                        alarm(frame, view, 124, "WHILE/DO nested deeper than 3 (alarm 124)");
+                        return false;
+                    }
+                    frame.loops.push_back({view.index(), static_cast<int>(*m)});
+                }
+                return true;
+            }
+            // Condition false: continue after the matching END m.
+            if (!frame.loops.empty() && frame.loops.back().do_block == view.index()) frame.loops.pop_back();
+            const auto end = find_end(frame, view.index(), static_cast<int>(*m));
+            if (!end) {
+                alarm(frame, view, 124, fmt::format("DO {} without END {} (alarm 124)", *m, *m));
+                return false;
+            }
+            frame.block = *end + 1;
+            return false;
+        }
+        case ast::StatementKind::end: {
+            const auto m = label_value();
+            if (!m) return false;
+            if (frame.loops.empty() || frame.loops.back().label != static_cast<int>(*m)) {
+                alarm(frame, view, 124, fmt::format("END {} without its DO (alarm 124)", *m));
+                return false;
+            }
+            frame.block = frame.loops.back().do_block;   // back to WHILE: the condition is tested again
+            return false;
+        }
+        case ast::StatementKind::dprnt:
+        case ast::StatementKind::bprnt: {
+            Event e;
+            e.kind = EventKind::message;
+            e.source = source(frame, view);
+            e.end = position_;
+            e.text = std::string(tree.slice(s.text));
+            emit(e);
+            return true;
+        }
+        case ast::StatementKind::popen:
+        case ast::StatementKind::pclos:
+            return true;
+    }
+    return true;
+}
+
+std::optional<std::uint32_t> Executor::find_end(const Frame& frame, std::uint32_t from, int label) const {
+    const LoadedFile& file = file_of(frame);
+    const ast::Program& p = program_of(frame);
+    for (std::uint32_t b = from + 1; b < p.end_block; ++b) {
+        for (const std::uint32_t ti : file.typed->block(b).statements()) {
+            const ast::Statement& s = file.tree.statements[static_cast<std::size_t>(file.tree.tokens[ti].payload)];
+            if (s.kind != ast::StatementKind::end) continue;
+            const ast::Expr& e = file.tree.exprs[static_cast<std::size_t>(s.label)];
+            if (e.kind == ast::ExprKind::number && std::lround(file.tree.number_value(e)) == label) return b;
+        }
+    }
+    return std::nullopt;
+}
+
+// G65 P_ L_ arguments: a new level of local variables, set from the arguments (specification I).
+bool Executor::start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call) {
+    if (call.modal) return false;   // G66 modal calls: not yet
+    if (!call.program) {
+        alarm(frame, view, 0, "G65 without a program number P");
+        return true;
+    }
+    const auto target = programs_.find_or_load(*call.program, frame.program.file);
+    if (!target) {
+        alarm(frame, view, 76, fmt::format("G65: program O{:04} not found (alarm 076)", *call.program));
+        return true;
+    }
+    int macros = 0;
+    for (const Frame& f : frames_) macros += f.macro;
+    if (macros >= setup_.max_macro_depth) {
+        alarm(frame, view, 77, fmt::format("macro calls nested deeper than {} (alarm 077)", setup_.max_macro_depth));
+        return true;
+    }
+    const LoadedFile& file = file_of(frame);
+    std::vector<std::pair<int, macro::Value>> arguments;
+    for (const std::uint32_t ti : call.arguments) {
+        const ast::Token& t = file.tree.tokens[ti];
+        const int number = argument_variable(t.letter);
+        if (!number) continue;
+        macro::Value v = macro::Value::vacant_value();
+        if (t.has(ast::token_flags::value_expr)) {
+            const macro::Result r = macro::evaluate(file.tree, t.payload, variables_);
+            if (r.error) {
+                alarm(frame, view, r.error->alarm, r.error->message);
+                return true;
+            }
+            v = r.value;
+        } else if (t.is_number()) {
+            v = macro::Value::of(file.tree.number_value(t));
+        }
+        arguments.emplace_back(number, v);
+    }
+    variables_.push_level();
+    for (const auto& [number, value] : arguments) variables_.write(number, value);
+    Event e;
+    e.kind = EventKind::call;
+    e.source = source(frame, view);
+    e.end = position_;
+    e.code = static_cast<int>(*call.program);
+    emit(e);
+    Frame sub;
+    sub.program = *target;
+    sub.block = program_of(sub).first_block;
+    sub.repeats_left = call.repeats;
+    sub.macro = true;
+    frames_.push_back(sub);
+    return true;
+}
+
+}  // namespace kerf::interpreter

@@ -1,0 +1,17 @@
+// The trace as JSON lines and the run summary as JSON (docs/trace.md). Text in, text out: the
+// caller writes it where it wants.
+#pragma once
+
+#include <boost/json/value.hpp>
+#include <string>
+
+#include "interpreter/interpreter.hpp"
+
+namespace kerf::interpreter {
+
+// One JSON object per event: kind, file, line, end (axis letter → number, work coordinates, lathe X
+// as diameter), and per kind: start, center, radius, length_mm, time_s, feed, tool, code, text.
+boost::json::object event_to_json(const Event& e, const ProgramSet& programs, std::string_view axes);
+boost::json::object summary_to_json(const RunResult& r, std::string_view axes);
+
+}  // namespace kerf::interpreter

@@ -1,0 +1,147 @@
+// The interpreter core: positions, modes, subprograms, work shift, macros, loops, step limit.
+// Expected numbers are derived by hand in the comments.
+#include <catch2/catch.hpp>
+
+#include "interpreter/default_setup.hpp"
+#include "interpreter/interpreter.hpp"
+
+using namespace kerf;
+using interpreter::EventKind;
+
+namespace {
+
+struct Run {
+    interpreter::RunResult result;
+    std::vector<interpreter::Event> events;
+};
+
+Run run(const std::string& text, const char* dialect_id, std::uint64_t step_limit = 10'000'000) {
+    const dialects::Dialect* d = dialects::builtin_registry().find(dialect_id);
+    REQUIRE(d);
+    interpreter::ProgramSet programs;
+    const auto file = programs.add("test.nc", text, *d);
+    interpreter::Setup setup = interpreter::default_setup(*d);
+    setup.step_limit = step_limit;
+    interpreter::VectorSink sink;
+    Run r;
+    r.result = interpreter::run(programs, *programs.first_program(file), *d, setup, sink);
+    r.events = sink.events;
+    return r;
+}
+
+std::vector<interpreter::Event> moves(const Run& r) {
+    std::vector<interpreter::Event> out;
+    for (const auto& e : r.events)
+        if (e.kind == EventKind::rapid || e.kind == EventKind::linear || e.kind == EventKind::arc_cw ||
+            e.kind == EventKind::arc_ccw)
+            out.push_back(e);
+    return out;
+}
+
+constexpr std::size_t X = 0, Y = 1, Z = 2;
+
+}  // namespace
+
+TEST_CASE("system A: absolute X/Z and incremental U/W") {
+    const Run r = run("O1\nG0 X50. Z2.\nG1 U-10. W-5. F.2\nX20.\nM30\n", "fanuc-lathe-a");
+    const auto m = moves(r);
+    REQUIRE(m.size() == 3);
+    CHECK(m[1].end[X] == Approx(40));   // 50 + U-10 (diameter)
+    CHECK(m[1].end[Z] == Approx(-3));   // 2 + W-5
+    CHECK(m[1].length_mm == Approx(std::sqrt(25.0 + 25.0)));   // radius 5 in X, 5 in Z
+    CHECK(r.result.final_position[X] == Approx(20));
+    CHECK(r.result.completed);
+    CHECK(r.result.alarms.empty());
+}
+
+TEST_CASE("mill: G90/G91 decide absolute or incremental") {
+    const Run r = run("O1\nG90 G0 X10. Y10.\nG91 G1 X5. Y-5. F100\nG90 X0.\nM30\n", "fanuc-mill");
+    const auto m = moves(r);
+    REQUIRE(m.size() == 3);
+    CHECK(m[1].end[X] == Approx(15));
+    CHECK(m[1].end[Y] == Approx(5));
+    CHECK(m[1].time_s == Approx(std::sqrt(50.0) / 100.0 * 60.0));   // 7.071 mm at 100 mm/min
+    CHECK(m[2].end[X] == Approx(0));
+}
+
+TEST_CASE("M98 P41001 runs O1001 four times; M98 P12 L3 three times") {
+    const Run packed = run("O1\nG0 X0. Z0.\nM98 P41001\nM30\nO1001\nG0 W-10.\nM99\n", "fanuc-lathe-a");
+    CHECK(packed.result.final_position[Z] == Approx(-40));
+    CHECK(packed.result.completed);
+    const Run pl = run("O1\nG90 G0 X0 Y0\nM98 P12 L3\nM30\nO12\nG91 G0 X5\nG90\nM99\n", "adv400-mill");
+    CHECK(pl.result.final_position[X] == Approx(15));
+}
+
+TEST_CASE("M99 P returns to a sequence number of the caller") {
+    const Run r = run("O1\nG0 X0. Z0.\nM98 P2\nG0 Z100.\nN50 G0 Z7.\nM30\nO2\nG0 Z1.\nM99 P50\n", "fanuc-lathe-a");
+    CHECK(r.result.final_position[Z] == Approx(7));
+    for (const auto& m : moves(r)) CHECK(m.end[Z] != Approx(100));   // the block after M98 is skipped
+}
+
+TEST_CASE("G10 P0 work shift: X/Z replace, U/W add (semantics.md §2.6 example)") {
+    // O0001 of seed 001 §7.8: G10 P0 Z-130, then O0002 three times, each adding W10: the register
+    // ends at -100. machine = work + offset with offset = -shift (work offsets 0), so machine Z0
+    // (G53 Z0) is work Z = 0 - 100 = -100.
+    const Run r = run("O1\nG10 P0 Z-130\nM98 P30002\nG53 Z0\nM30\nO2\nG10 P0 W10\nM99\n", "spinner-lathe-a");
+    CHECK(r.result.alarms.empty());
+    CHECK(r.result.final_position[Z] == Approx(-100));
+}
+
+TEST_CASE("arcs: G02 with R on a lathe (G18), full geometry through the motion kernel") {
+    // From X20 Z0 to X40 Z-10 with R10: radius geometry (10,0) → (20,-10); centre (10,-10) for CW.
+    const Run r = run("O1\nG0 X20. Z0.\nG2 X40. Z-10. R10. F.1\nM30\n", "fanuc-lathe-a");
+    const auto m = moves(r);
+    REQUIRE(m.size() == 2);
+    REQUIRE(m[1].center);
+    CHECK(m[1].radius == Approx(10));
+    CHECK(m[1].length_mm == Approx(M_PI * 10 / 2));   // a quarter circle
+    CHECK(r.result.alarms.empty());
+}
+
+TEST_CASE("arc radius mismatch is an alarm") {
+    const Run r = run("O1\nG0 X0. Y0.\nG2 X10. Y0. I3. J0. F100\nM30\n", "fanuc-mill");
+    REQUIRE(r.result.alarms.size() == 1);
+    CHECK(r.result.alarms[0].code == 20);
+}
+
+TEST_CASE("macro: assignments, WHILE loop, IF GOTO, values in words") {
+    const Run r = run("O1\n#1=0\nG90 G0 X0. Y0.\nWHILE [#1 LT 3] DO 1\n#1=#1+1\nG91 X10.\nEND 1\nG90\n"
+                      "IF [#1 EQ 3] GOTO 20\nG0 Y99.\nN20 G0 Y[#1*2]\nM30\n", "fanuc-mill");
+    CHECK(r.result.alarms.empty());
+    CHECK(r.result.final_position[X] == Approx(30));
+    CHECK(r.result.final_position[Y] == Approx(6));
+}
+
+TEST_CASE("G65 passes arguments as locals of a new level") {
+    const Run r = run("O1\n#1=5\nG90 G0 X0.\nG65 P9000 X12.5 A2.\nG0 Y#1\nM30\nO9000\nG0 X[#24*#1]\nM99\n", "fanuc-mill");
+    CHECK(r.result.alarms.empty());
+    CHECK(r.result.final_position[X] == Approx(25));   // #24 = X12.5, #1 = A2. inside the call
+    CHECK(r.result.final_position[Y] == Approx(5));    // the caller's #1 is untouched
+}
+
+TEST_CASE("an endless loop ends at the step limit with an alarm") {
+    const Run r = run("O1\nN10 G0 X1.\nGOTO 10\n", "fanuc-mill", 1000);
+    REQUIRE(r.result.alarms.size() == 1);
+    CHECK(r.result.alarms[0].text.find("step limit") != std::string::npos);
+    CHECK_FALSE(r.result.completed);
+}
+
+TEST_CASE("G96 rpm follows X and is clamped by G50 S") {
+    // Vc 200 m/min at X50 (diameter): n = 1000*200/(pi*50) = 1273.2 rpm; at X10: 6366 → clamp 2000.
+    const Run r = run("O1\nG50 S2000\nG96 S200 M3\nG0 X50. Z0.\nG1 Z-1. F.1\nX10.\nM30\n", "fanuc-lathe-a");
+    const auto m = moves(r);
+    REQUIRE(m.size() == 3);
+    CHECK(m[1].spindle_rpm == Approx(1000.0 * 200 / (M_PI * 50)));
+    CHECK(m[2].spindle_rpm == Approx(2000));
+}
+
+TEST_CASE("dwell: X and U in seconds, P in milliseconds") {
+    const Run r = run("O1\nG4 X1.5\nG4 P500\nG4 U2.\nM30\n", "fanuc-lathe-a");
+    std::vector<double> dwells;
+    for (const auto& e : r.events)
+        if (e.kind == EventKind::dwell) dwells.push_back(e.time_s);
+    REQUIRE(dwells.size() == 3);
+    CHECK(dwells[0] == Approx(1.5));
+    CHECK(dwells[1] == Approx(0.5));
+    CHECK(dwells[2] == Approx(2));
+}
