@@ -7,23 +7,17 @@
 #include <toml++/toml.h>
 
 #include "dialects/dialect.hpp"
+#include "dialects/toml_errors.hpp"
 
 namespace kerf::dialects {
 namespace {
 
-class Reader {
+class Reader : public TomlErrors {
 public:
-    explicit Reader(std::string_view source) : source_(source) {}
-    std::vector<LoadError> errors;
+    using TomlErrors::TomlErrors;
 
-    void error(const toml::node* node, std::string message) {
-        LoadError e;
-        e.message = fmt::format("{}: {}", source_, message);
-        if (node) {
-            e.line = static_cast<int>(node->source().begin.line);
-            e.column = static_cast<int>(node->source().begin.column);
-        }
-        errors.push_back(std::move(e));
+    void check_keys(const toml::table& t, std::initializer_list<std::string_view> allowed, std::string_view where) {
+        TomlErrors::check_keys(t, allowed, where, "dialects/SCHEMA.md");
     }
 
     std::string string(const toml::table& t, std::string_view key, std::string_view where, bool required) {
@@ -79,17 +73,6 @@ public:
         return out;
     }
 
-    // A misspelt key must not silently drop what it meant to say (a `defualt = true`).
-    void check_keys(const toml::table& t, std::initializer_list<std::string_view> allowed, std::string_view where) {
-        for (const auto& [key, node] : t) {
-            bool known = false;
-            for (const std::string_view a : allowed) known |= key.str() == a;
-            if (!known) error(&node, fmt::format("{}: unknown key '{}' (see dialects/SCHEMA.md)", where, key.str()));
-        }
-    }
-
-private:
-    std::string_view source_;
 };
 
 Availability parse_availability(Reader& r, const toml::table& t, std::string_view where) {

@@ -9,6 +9,7 @@
 
 #include <toml++/toml.h>
 
+#include "dialects/toml_errors.hpp"
 #include "machine/machine.hpp"
 #include "machine/switch_table.hpp"
 
@@ -17,27 +18,12 @@ namespace {
 
 constexpr std::string_view kAxisOrder = "XYZABCUVW";
 
-class Reader {
+class Reader : public dialects::TomlErrors {
 public:
-    explicit Reader(std::string_view source) : source_(source) {}
-    std::vector<LoadError> errors;
-
-    void error(const toml::node* node, std::string message) {
-        LoadError e;
-        e.message = fmt::format("{}: {}", source_, message);
-        if (node) {
-            e.line = static_cast<int>(node->source().begin.line);
-            e.column = static_cast<int>(node->source().begin.column);
-        }
-        errors.push_back(std::move(e));
-    }
+    using TomlErrors::TomlErrors;
 
     void check_keys(const toml::table& t, std::initializer_list<std::string_view> allowed, std::string_view where) {
-        for (const auto& [key, node] : t) {
-            bool known = false;
-            for (const std::string_view a : allowed) known |= key.str() == a;
-            if (!known) error(&node, fmt::format("{}: unknown key '{}' (see machine/SCHEMA.md)", where, key.str()));
-        }
+        TomlErrors::check_keys(t, allowed, where, "machine/SCHEMA.md");
     }
 
     std::optional<std::string> string(const toml::table& t, std::string_view key, std::string_view where) {
@@ -104,8 +90,6 @@ public:
         return nullptr;
     }
 
-private:
-    std::string_view source_;
 };
 
 std::optional<char> axis_letter(std::string_view key) {

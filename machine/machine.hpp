@@ -258,11 +258,8 @@ struct Machine {
 // Loading
 // ---------------------------------------------------------------------------------------------
 
-struct LoadError {
-    std::string message;   // "<source>: <key path>: what is wrong"
-    int line = 0;          // 1-based line in the TOML text, 0 if unknown
-    int column = 0;
-};
+// "<source>: <key path>: what is wrong", 1-based line and column (0 if unknown): the dialect loader's.
+using LoadError = dialects::LoadError;
 
 struct LoadResult {
     std::optional<Machine> machine;
