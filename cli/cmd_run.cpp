@@ -24,6 +24,7 @@ struct RunCliOptions {
     std::string dialect = "auto";
     std::vector<std::string> dialect_files;
     bool json = false;
+    bool lenient = false;
     std::string trace;
 };
 
@@ -99,7 +100,9 @@ int run_run(const RunCliOptions& o) {
     }
     const std::string axes = dialect->lexical.axes;
     JsonLinesSink sink(trace, programs, axes);
-    const interpreter::RunResult result = interpreter::run(programs, *main, *dialect, setup, sink);
+    interpreter::RunOptions run_options;
+    run_options.lenient = o.lenient;
+    const interpreter::RunResult result = interpreter::run(programs, *main, *dialect, setup, sink, run_options);
     if (o.json) {
         std::cout << boost::json::serialize(interpreter::summary_to_json(result, axes)) << "\n";
     } else {
@@ -128,6 +131,7 @@ Command add_run_command(CLI::App& app) {
     cmd->add_option("--dialect", o->dialect, "dialect id, or auto (default)");
     cmd->add_option("--dialect-file", o->dialect_files, "load a dialect data file (TOML)");
     cmd->add_flag("--json", o->json, "the summary as JSON");
+    cmd->add_flag("--lenient", o->lenient, "run blocks with syntax errors without their defective words");
     cmd->add_option("--trace", o->trace, "write the trace as JSON lines to this file");
     return [o] { return run_run(*o); };
 }

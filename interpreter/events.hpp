@@ -38,6 +38,7 @@ struct Event {
     SourceRef source;
     Position start{};                    // motion: where it starts (work coordinates)
     Position end{};                      // motion: where it ends; other events: the position then
+    Position machine_end{};              // `end` in machine coordinates (offsets, shift, G52, G50 applied)
     std::optional<Position> center;      // arcs: the centre (X as diameter on lathes, like end)
     double radius = 0;                   // arcs
     double length_mm = 0;                // path length of the move

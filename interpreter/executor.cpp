@@ -73,6 +73,8 @@ std::string_view Executor::modal_function(const std::string& group) const {
 
 void Executor::emit(Event e) {
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
+    const Position offset = machine_offset();
+    for (std::size_t a = 0; a < kAxisCount; ++a) e.machine_end[a] = e.end[a] + offset[a];
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;
     if (e.time_s > 0) result_.time_per_tool_s[tool_] += e.time_s;
@@ -93,6 +95,14 @@ void Executor::alarm(const Frame& f, const ast::BlockView& view, int number, std
 void Executor::pop_frame() {
     if (frames_.back().macro) variables_.pop_level();   // a G65 call's locals end with it
     frames_.pop_back();
+}
+
+void Executor::change_offsets(const std::function<void()>& change) {
+    // The tool does not move when an offset changes: its work coordinates do (semantics.md §2.7).
+    const Position before = machine_offset();
+    change();
+    const Position after = machine_offset();
+    for (std::size_t a = 0; a < kAxisCount; ++a) position_[a] += before[a] - after[a];
 }
 
 // --- the loop ------------------------------------------------------------------------------------
@@ -133,8 +143,16 @@ void Executor::execute_block(Frame& frame) {
     if (block.kind != ast::BlockKind::code) return;
     if (block.has(ast::block_flags::deleted) && options_.block_delete) return;
     if (block.has(ast::block_flags::has_error)) {
-        alarm(frame, view, 0, "the block has syntax errors (see the diagnostics of kerf parse)");
-        return;
+        if (!options_.lenient) {
+            alarm(frame, view, 0, "the block has syntax errors (see the diagnostics of kerf parse)");
+            return;
+        }
+        Event e;
+        e.kind = EventKind::message;
+        e.source = source(frame, view);
+        e.end = position_;
+        e.text = "block with syntax errors run without its defective words (lenient)";
+        emit(e);
     }
     view_ = &view;
     frame_ = &frame;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -107,6 +108,7 @@ private:
     motion::Plane plane() const;
     std::optional<std::uint32_t> find_label(const Frame& f, double n) const;
     void pop_frame();
+    void change_offsets(const std::function<void()>& change);
     Frame* current_frame() { return frames_.empty() ? nullptr : &frames_.back(); }
     const ast::BlockView* view_ = nullptr;
     const Frame* frame_ = nullptr;

@@ -117,21 +117,25 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
         if (f.rfind(fn::work_coordinate_prefix, 0) == 0) {
             const int n = f.back() - '1';
             if (n >= 0 && n < 6) {
-                work_system_ = n;
-                if (setup_.g52_current_point) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)
+                change_offsets([&] {
+                    work_system_ = n;
+                    if (setup_.g52_current_point) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)
+                });
             }
         } else if (f == fn::programmable_data_input) {
             const auto* p = words.get('P');
             if (p && p->value == 0) {
                 // G10 P0: the work shift register; X/Z replace it, U/W add to it (semantics.md §2.6).
                 // In the G10 block U/W are data words (parameter_words), so they arrive by letter.
-                for (const auto& [letter, w] : words.words) {
-                    const char incremental_of = dialect_.lexical.incremental_axis_of(letter);
-                    const auto axis = axis_of_letter(incremental_of ? incremental_of : letter);
-                    if (!axis || letter == 'P') continue;
-                    double& reg = work_shift_[static_cast<std::size_t>(*axis)];
-                    reg = incremental_of ? reg + axis_value(w, letter) : axis_value(w, letter);
-                }
+                change_offsets([&] {
+                    for (const auto& [letter, w] : words.words) {
+                        const char incremental_of = dialect_.lexical.incremental_axis_of(letter);
+                        const auto axis = axis_of_letter(incremental_of ? incremental_of : letter);
+                        if (!axis || letter == 'P') continue;
+                        double& reg = work_shift_[static_cast<std::size_t>(*axis)];
+                        reg = incremental_of ? reg + axis_value(w, letter) : axis_value(w, letter);
+                    }
+                });
                 Event e;
                 e.kind = EventKind::coordinate_change;
                 e.source = source(*frame_, view);

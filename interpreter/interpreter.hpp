@@ -17,6 +17,9 @@ namespace kerf::interpreter {
 struct RunOptions {
     bool block_delete = true;   // the block-delete switch: '/' blocks are skipped
     bool stop_at_m00 = false;   // a dry run goes on past M00/M01 (they are events)
+    // A block with syntax errors stops the control (an alarm). Lenient: run it without its defective
+    // words and say so in a message event — for reading damaged listings like the seeds.
+    bool lenient = false;
 };
 
 struct RunResult {

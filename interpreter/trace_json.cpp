@@ -23,7 +23,8 @@ json::object event_to_json(const Event& e, const ProgramSet& programs, std::stri
     json::object o{{"kind", to_string(e.kind)},
                    {"file", programs.file(e.source.file).name},
                    {"line", e.source.line},
-                   {"end", position_json(e.end, axes)}};
+                   {"end", position_json(e.end, axes)},
+                   {"machine", position_json(e.machine_end, axes)}};
     if (is_motion(e.kind)) {
         o["start"] = position_json(e.start, axes);
         o["length_mm"] = e.length_mm;
