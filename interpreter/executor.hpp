@@ -87,6 +87,7 @@ private:
     void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);
     void apply_modal_codes(const ast::BlockView& view);
     bool apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words);
+    void apply_local_system(const ast::BlockView& view, const BlockWords& words, bool current_point_code);
     void apply_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);

@@ -155,12 +155,48 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
                 position_[a] = value;
             }
             return false;
+        } else if (f == fn::local_system_shift || f == fn::local_system_current_point) {
+            apply_local_system(view, words, f == fn::local_system_current_point);
+            return false;   // G52 does not move the tool (semantics.md §2.4)
+        } else if (f == fn::local_system_cancel) {
+            change_offsets([&] { local_shift_ = {}; });   // G152 (pcnc-mill)
         } else if (f == fn::cancel_coordinate_setting) {
             for (std::size_t a = 0; a < kAxisCount; ++a) position_[a] += setting_shift_[a];
             setting_shift_ = {};
         }
     }
     return true;
+}
+
+// G52, semantics.md §2.4. FANUC: the local origin is the work origin plus the programmed vector
+// (G52 X0 Z0 cancels). pcnc/ADV400 (the machine's g52 switch, or the dialect's function id): the
+// current point takes the programmed values on the programmed axes; all zeros cancel (ADV400).
+void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& words, bool current_point_code) {
+    const bool current_point = current_point_code || setup_.g52_current_point;
+    bool all_zero = true;
+    for (const auto& [letter, w] : words.words)
+        if (axis_of_letter(letter) && dialect_.lexical.is_axis(letter) && w.value != 0) all_zero = false;
+    change_offsets([&] {
+        if (current_point && all_zero) {
+            local_shift_ = {};
+            return;
+        }
+        for (const auto& [letter, w] : words.words) {
+            const auto axis = axis_of_letter(letter);
+            if (!axis || !dialect_.lexical.is_axis(letter)) continue;
+            const std::size_t a = static_cast<std::size_t>(*axis);
+            const double v = axis_value(w, letter);
+            // current point: program p maps to work p + L with L = position − value (§2.4);
+            // FANUC: the vector itself.
+            local_shift_[a] = current_point ? local_shift_[a] + (position_[a] - v) : v;
+        }
+    });
+    Event e;
+    e.kind = EventKind::coordinate_change;
+    e.source = source(*frame_, view);
+    e.end = position_;
+    e.text = "local coordinate system (G52)";
+    emit(e);
 }
 
 }  // namespace kerf::interpreter

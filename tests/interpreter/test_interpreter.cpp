@@ -197,3 +197,24 @@ TEST_CASE("changing the work system changes the work coordinates, not the tool")
     CHECK(r.final_position[X] == Approx(-100));
     CHECK(sink.events.back().machine_end[X] == Approx(100));
 }
+
+TEST_CASE("G52 in its three readings (semantics.md §2.4)") {
+    // pcnc-mill: tool at X200 Y160, G52 X100 Y100 → it reads X100 Y100 (A = (100, 60)); X20 is
+    // then work X120; G152 restores the work system: the tool reads X120 Y100+60 = Y160.
+    const Run pcnc = run("G90 G0 X200 Y160\nG52 X100 Y100\nG0 X20\nG152\nM2\n", "pcnc-mill");
+    const auto m = moves(pcnc);
+    REQUIRE(m.size() == 2);
+    CHECK(m[1].end[X] == Approx(20));
+    const double g54_x = m[0].machine_end[X] - 200;   // the built-in machine's G54 offset
+    CHECK(m[1].machine_end[X] - g54_x == Approx(120));
+    CHECK(pcnc.result.final_position[X] == Approx(120));
+    CHECK(pcnc.result.final_position[Y] == Approx(160));
+    // FANUC: the local origin is the work origin plus the vector; G52 X0 Y0 cancels.
+    const Run fanuc = run("O1\nG90 G0 X0. Y0.\nG52 X10. Y5.\nG0 X0. Y0.\nG52 X0. Y0.\nM30\n", "fanuc-mill");
+    const auto f = moves(fanuc);
+    REQUIRE(f.size() == 2);
+    CHECK(f[1].machine_end[X] - f[0].machine_end[X] == Approx(10));   // moves 0 and 1 both go to X0 Y0
+    CHECK(f[1].machine_end[Y] - f[0].machine_end[Y] == Approx(5));
+    CHECK(fanuc.result.final_position[X] == Approx(10));   // after the cancel the tool reads X10 Y5
+    CHECK(fanuc.result.final_position[Y] == Approx(5));
+}
