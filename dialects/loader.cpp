@@ -225,17 +225,9 @@ std::vector<CodeInfo> read_codes(Reader& r, const toml::table& root, char letter
 LoadResult load_dialect_text(std::string_view toml_text, std::string_view source_name) {
     LoadResult result;
     Reader r(source_name);
-    toml::table root;
-    try {
-        root = toml::parse(toml_text, source_name);
-    } catch (const toml::parse_error& e) {
-        LoadError err;
-        err.message = fmt::format("{}: {}", source_name, e.description());
-        err.line = static_cast<int>(e.source().begin.line);
-        err.column = static_cast<int>(e.source().begin.column);
-        result.errors.push_back(std::move(err));
-        return result;
-    }
+    std::optional<toml::table> parsed = dialects::parse_toml(toml_text, source_name, result.errors);
+    if (!parsed) return result;
+    const toml::table& root = *parsed;
     DialectFile file;
     Dialect& d = file.dialect;
     r.check_keys(root, {"id", "name", "machine", "reference", "overlay", "applies_to", "combined_ids", "lexical", "g", "m"},

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -44,5 +45,20 @@ public:
 protected:
     std::string_view source_;
 };
+
+// Parses TOML text; a syntax error becomes one LoadError with its position and nullopt.
+inline std::optional<toml::table> parse_toml(std::string_view text, std::string_view source_name,
+                                             std::vector<LoadError>& errors) {
+    try {
+        return toml::parse(text, source_name);
+    } catch (const toml::parse_error& e) {
+        LoadError err;
+        err.message = fmt::format("{}: {}", source_name, e.description());
+        err.line = static_cast<int>(e.source().begin.line);
+        err.column = static_cast<int>(e.source().begin.column);
+        errors.push_back(std::move(err));
+        return std::nullopt;
+    }
+}
 
 }  // namespace kerf::dialects

@@ -71,6 +71,14 @@ std::string_view Executor::modal_function(const std::string& group) const {
     return it == modal_.end() || !it->second ? std::string_view() : std::string_view(it->second->function);
 }
 
+Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const {
+    Event e;
+    e.kind = kind;
+    e.source = source(f, view);
+    e.start = e.end = position_;
+    return e;
+}
+
 void Executor::emit(Event e) {
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
     const Position offset = machine_offset();
@@ -82,10 +90,7 @@ void Executor::emit(Event e) {
 }
 
 void Executor::alarm(const Frame& f, const ast::BlockView& view, int number, std::string text) {
-    Event e;
-    e.kind = EventKind::alarm;
-    e.source = source(f, view);
-    e.end = position_;
+    Event e = event_at(EventKind::alarm, f, view);
     e.code = number;
     e.text = std::move(text);
     emit(std::move(e));
@@ -147,10 +152,7 @@ void Executor::execute_block(Frame& frame) {
             alarm(frame, view, 0, "the block has syntax errors (see the diagnostics of kerf parse)");
             return;
         }
-        Event e;
-        e.kind = EventKind::message;
-        e.source = source(frame, view);
-        e.end = position_;
+        Event e = event_at(EventKind::message, frame, view);
         e.text = "block with syntax errors run without its defective words (lenient)";
         emit(e);
     }

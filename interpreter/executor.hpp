@@ -102,6 +102,8 @@ private:
     Position target_position(const BlockWords& words, bool& moves) const;
     Position machine_offset() const;
     double current_rpm(double x_diameter) const;
+    // An event of this block at the current position (start = end), before its details are set.
+    Event event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const;
     void emit(Event e);
     void alarm(const Frame& f, const ast::BlockView& view, int number, std::string text);
     void move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view);

@@ -128,10 +128,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
         }
         case ast::StatementKind::dprnt:
         case ast::StatementKind::bprnt: {
-            Event e;
-            e.kind = EventKind::message;
-            e.source = source(frame, view);
-            e.end = position_;
+            Event e = event_at(EventKind::message, frame, view);
             e.text = std::string(tree.slice(s.text));
             emit(e);
             return true;
@@ -196,10 +193,7 @@ bool Executor::start_macro_call(Frame& frame, const ast::BlockView& view, const 
     }
     variables_.push_level();
     for (const auto& [number, value] : arguments) variables_.write(number, value);
-    Event e;
-    e.kind = EventKind::call;
-    e.source = source(frame, view);
-    e.end = position_;
+    Event e = event_at(EventKind::call, frame, view);
     e.code = static_cast<int>(*call.program);
     emit(e);
     Frame sub;

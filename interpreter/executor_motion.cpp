@@ -117,10 +117,7 @@ void Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, words, view);
     else if (motion == fn::thread_cutting) move(EventKind::thread, to, f, view);
     else {
-        Event e;
-        e.kind = EventKind::message;
-        e.source = source(f, view);
-        e.end = position_;
+        Event e = event_at(EventKind::message, f, view);
         e.text = fmt::format("motion of '{}' is not expanded yet (cycles: next issue); position kept", motion);
         emit(e);
     }
@@ -133,10 +130,7 @@ void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) 
     if (const auto* x = words.get('X')) seconds = x->value;
     else if (const auto* u = words.incremental.count('X') ? &words.incremental.at('X') : words.get('U')) seconds = u->value;
     else if (const auto* p = words.get('P')) seconds = setup_.dwell_p_in_seconds ? p->value : p->value / 1000.0;
-    Event e;
-    e.kind = EventKind::dwell;
-    e.source = source(*frame_, view);
-    e.start = e.end = position_;
+    Event e = event_at(EventKind::dwell, *frame_, view);
     e.time_s = seconds;
     emit(e);
 }
@@ -153,9 +147,7 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
     for (const ast::CodeRef& c : view.m_codes()) {
         if (!c.info) continue;
         const std::string& f = c.info->function;
-        Event e;
-        e.source = source(frame, view);
-        e.start = e.end = position_;
+        Event e = event_at(EventKind::message, frame, view);   // the kind is set per code below
         e.code = c.key ? *c.key / 10 : 0;
         if (f == fn::spindle_cw || f == fn::spindle_ccw || f == fn::spindle_stop) {
             spindle_on_ = f != fn::spindle_stop;

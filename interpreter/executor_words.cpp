@@ -79,10 +79,7 @@ void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWord
         const int station = lathe ? value / 100 : value;
         tool_offset_ = lathe ? value % 100 : tool_offset_;
         if (lathe && station != 0 && station != tool_) {
-            Event e;
-            e.kind = EventKind::tool_change;
-            e.source = source(*frame_, view);
-            e.end = position_;
+            Event e = event_at(EventKind::tool_change, *frame_, view);
             e.tool = station;
             e.code = tool_offset_;
             tool_ = station;
@@ -136,10 +133,7 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
                         reg = incremental_of ? reg + axis_value(w, letter) : axis_value(w, letter);
                     }
                 });
-                Event e;
-                e.kind = EventKind::coordinate_change;
-                e.source = source(*frame_, view);
-                e.end = position_;
+                Event e = event_at(EventKind::coordinate_change, *frame_, view);
                 e.text = "work shift";
                 emit(e);
             }
@@ -191,10 +185,7 @@ void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& 
             local_shift_[a] = current_point ? local_shift_[a] + (position_[a] - v) : v;
         }
     });
-    Event e;
-    e.kind = EventKind::coordinate_change;
-    e.source = source(*frame_, view);
-    e.end = position_;
+    Event e = event_at(EventKind::coordinate_change, *frame_, view);
     e.text = "local coordinate system (G52)";
     emit(e);
 }

@@ -349,17 +349,9 @@ LoadResult load_machine_text(std::string_view toml_text, std::string_view source
 
 LoadResult load_machine_text(std::string_view toml_text, std::string_view source_name, const Registry& bases) {
     LoadResult result;
-    toml::table root;
-    try {
-        root = toml::parse(toml_text, source_name);
-    } catch (const toml::parse_error& e) {
-        LoadError err;
-        err.message = fmt::format("{}: {}", source_name, e.description());
-        err.line = static_cast<int>(e.source().begin.line);
-        err.column = static_cast<int>(e.source().begin.column);
-        result.errors.push_back(std::move(err));
-        return result;
-    }
+    std::optional<toml::table> parsed = dialects::parse_toml(toml_text, source_name, result.errors);
+    if (!parsed) return result;
+    const toml::table& root = *parsed;
     Reader r(source_name);
     Machine m;
     r.check_keys(root,
