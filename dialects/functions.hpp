@@ -46,6 +46,14 @@ inline constexpr std::string_view optional_stop = "optional-stop";
 inline constexpr std::string_view program_end = "program-end";
 inline constexpr std::string_view program_end_rewind = "program-end-rewind";
 inline constexpr std::string_view tool_change = "tool-change";
+inline constexpr std::string_view reference_return_nth = "reference-return-nth";
+inline constexpr std::string_view return_from_reference = "return-from-reference";
+inline constexpr std::string_view coordinate_rotation = "coordinate-rotation";
+inline constexpr std::string_view coordinate_rotation_cw = "coordinate-rotation-cw";
+inline constexpr std::string_view coordinate_rotation_cancel = "coordinate-rotation-cancel";
+inline constexpr std::string_view modal_macro_call_cancel = "modal-macro-call-cancel";
+inline constexpr std::string_view stroke_check_on = "stroke-check-on";
+inline constexpr std::string_view stroke_check_off = "stroke-check-off";
 // "work-coordinate-1" ... "work-coordinate-6" are G54 ... G59.
 inline constexpr std::string_view work_coordinate_prefix = "work-coordinate-";
 

@@ -8,6 +8,33 @@ Position position_of(const machine::AxisValues& values) {
     for (std::size_t a = 0; a < kAxisCount; ++a) p[a] = machine::axis_value(values, kAxisLetters[a]);
     return p;
 }
+
+ToolOffset tool_offset_of(const machine::ToolOffset& tool) {
+    ToolOffset t;
+    t.geometry = position_of(tool.geometry);
+    t.wear = position_of(tool.wear);
+    t.nose_radius = tool.nose_radius;
+    t.nose_radius_wear = tool.nose_radius_wear;
+    t.tip = tool.tip;
+    t.length = tool.length;
+    t.length_wear = tool.length_wear;
+    t.radius = tool.radius;
+    t.radius_wear = tool.radius_wear;
+    return t;
+}
+
+void set_axes(Setup& s, const machine::Machine& m) {
+    s.axis_order.clear();
+    for (const machine::Axis& axis : m.axes) {
+        const auto a = axis_of_letter(axis.letter);
+        if (!a) continue;   // U V W as separate axes: not modelled by the interpreter
+        const std::size_t i = static_cast<std::size_t>(*a);
+        s.axis_order += axis.letter;
+        s.rapid_mm_min[i] = axis.rapid;
+        s.accel_mm_s2[i] = axis.acceleration;
+        s.soft_limits[i] = {axis.min, axis.max};
+    }
+}
 }  // namespace
 
 Setup make_setup(const machine::Machine& m) {
@@ -17,24 +44,25 @@ Setup make_setup(const machine::Machine& m) {
     s.calculator_decimal = m.calculator_decimal;
     for (std::size_t i = 0; i < 6; ++i) s.work_offsets[i] = position_of(m.work_offsets[i]);
     s.external_offset = position_of(m.external_offset);
+    s.work_shift = position_of(m.work_shift);
     for (std::size_t i = 0; i < 4; ++i) s.reference_points[i] = position_of(m.reference_points[i]);
-    for (std::size_t a = 0; a < kAxisCount; ++a)
-        if (const machine::Axis* axis = m.axis(kAxisLetters[a])) s.rapid_mm_min[a] = axis->rapid;
+    set_axes(s, m);
     s.max_rpm = m.max_spindle_rpm;
-    s.rapid_dogleg = m.switches.rapid == machine::RapidMode::dog_leg;
-    s.dwell_p_in_seconds = m.switches.dwell_p_unit == machine::DwellUnit::s;
-    s.g52_current_point = m.switches.g52 != machine::G52Semantics::vector_shift;
-    for (const auto& [number, tool] : m.tools) {
-        ToolOffset t;
-        t.geometry = position_of(tool.geometry);
-        t.wear = position_of(tool.wear);
-        t.nose_radius = tool.nose_radius;
-        t.tip = tool.tip;
-        s.tools[number] = t;
-    }
-    s.step_limit = static_cast<std::uint64_t>(m.switches.max_blocks);
-    s.max_call_depth = m.switches.subprogram_nesting;
-    s.max_macro_depth = m.switches.macro_nesting;
+    const machine::Switches& sw = m.switches;
+    s.rapid_dogleg = sw.rapid == machine::RapidMode::dog_leg;
+    s.dwell_p_in_seconds = sw.dwell_p_unit == machine::DwellUnit::s;
+    s.g52_current_point = sw.g52 != machine::G52Semantics::vector_shift;
+    s.g28_point_in_machine = sw.g28_intermediate == machine::PointFrame::machine;
+    s.g30_default_p = sw.g30_default_p;
+    s.g68_positive_cw = sw.g68_positive == machine::RotationSign::cw;
+    s.arc_tolerance = sw.arc_tolerance;
+    s.arc_negative_r = sw.arc_negative_r == machine::ArcLargeR::negative_r;
+    s.arc_enlarge_small_r = sw.arc_radius_mismatch == machine::ArcMismatch::enlarge;
+    s.tool_offset_count = m.tool_offset_count;
+    for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);
+    s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);
+    s.max_call_depth = sw.subprogram_nesting;
+    s.max_macro_depth = sw.macro_nesting;
     return s;
 }
 

@@ -30,6 +30,7 @@ enum class EventKind : std::uint8_t {
     rapid, linear, arc_cw, arc_ccw, thread, dwell,
     tool_change, spindle, coolant, coordinate_change, feed_mode,
     stop, optional_stop, end, alarm, message, call, return_,
+    state,   // the modal state after a block (RunOptions::emit_state): text "G00 G18 ... F S T"
 };
 const char* to_string(EventKind k);
 
@@ -45,7 +46,8 @@ struct Event {
     double time_s = 0;                   // estimated time of this event
     double feed = 0;                     // motion: programmed feed (mm/min or mm/rev, see feed_per_rev)
     bool feed_per_rev = false;
-    double spindle_rpm = 0;
+    double spindle_rpm = 0;              // the rpm the time uses (G96: at the end point)
+    bool spindle_running = true;         // feed moves: false when the spindle is stopped (M05)
     int tool = 0;                        // tool_change: the tool number; otherwise the active tool
     int code = 0;                        // alarm number, M code, call target ...
     std::string text;                    // alarm/message text, DPRNT output

@@ -37,16 +37,55 @@ const char* to_string(EventKind k) {
         case EventKind::message: return "message";
         case EventKind::call: return "call";
         case EventKind::return_: return "return";
+        case EventKind::state: return "state";
     }
     return "?";
 }
 
 Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const Setup& setup, EventSink& sink,
                    const RunOptions& options)
-    : programs_(programs), dialect_(dialect), setup_(setup), sink_(sink), options_(options) {
+    : programs_(programs), dialect_(dialect), setup_(setup), sink_(sink), options_(options),
+      work_offsets_(setup.work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
+      tools_(setup.tools) {
     // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
     for (const dialects::CodeInfo& c : dialect_.codes())
         if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group] = &c;
+    update_flags();
+}
+
+void Executor::update_flags() {
+    ModalFlags f;
+    f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
+    for (const auto& [group, code] : modal_) {
+        if (!code) continue;
+        const std::string& fn_id = code->function;
+        if (code->binder_traits & dialects::CodeInfo::kMotionGroup) f.motion = fn_id;
+        else if (fn_id == fn::incremental_programming) f.incremental = true;
+        else if (fn_id == fn::feed_per_revolution) f.per_revolution = true;
+        else if (fn_id == fn::css_on) f.css = true;
+        else if (fn_id == fn::inch_input) f.inch = true;
+        else if (fn_id == fn::plane_xy) f.plane = motion::Plane::xy;
+        else if (fn_id == fn::plane_zx) f.plane = motion::Plane::zx;
+        else if (fn_id == fn::plane_yz) f.plane = motion::Plane::yz;
+    }
+    flags_ = f;
+}
+
+bool Executor::modal_active(std::string_view function) const {
+    for (const auto& [group, code] : modal_)
+        if (code && code->function == function) return true;
+    return false;
+}
+
+std::string Executor::block_comment(const ast::BlockView& view) const {
+    const ast::SyntaxTree& tree = file_of(*frame_).tree;
+    for (const std::uint32_t ti : view.comments()) {
+        std::string_view text = tree.spelling(tree.tokens[ti]);
+        if (!text.empty() && text.front() == '(') text.remove_prefix(1);
+        if (!text.empty() && text.back() == ')') text.remove_suffix(1);
+        return std::string(text);
+    }
+    return {};
 }
 
 const ast::Program& Executor::program_of(const Frame& f) const {
@@ -64,11 +103,6 @@ bool Executor::has_function(const ast::BlockView& view, std::string_view functio
     for (const ast::CodeRef& c : view.m_codes())
         if (c.info && c.info->function == function) return true;
     return false;
-}
-
-std::string_view Executor::modal_function(const std::string& group) const {
-    const auto it = modal_.find(group);
-    return it == modal_.end() || !it->second ? std::string_view() : std::string_view(it->second->function);
 }
 
 Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const {
@@ -161,14 +195,39 @@ void Executor::execute_block(Frame& frame) {
     const std::size_t depth = frames_.size();
     if (!execute_statements(frame, view)) return;
     if (frames_.size() != depth || stopped_) return;   // a call or an alarm
+    if (const auto call = view.macro_call(); call && call->modal) {
+        // G66 P L args: remembers the call; its words are arguments, not moves (dialects.md §3.7).
+        if (const auto arguments = macro_arguments(frame, view, *call)) {
+            if (!call->program) alarm(frame, view, 0, "G66 without a program number P");
+            else modal_call_ = ModalCall{*call->program, call->repeats, *arguments};
+        }
+        return;
+    }
     BlockWords words;
     if (!evaluate_words(view, words)) return;
+    remember_words(view, words);
     apply_feed_speed_tool(view, words);
     apply_modal_codes(view);
-    if (!apply_coordinate_operations(view, words)) return;
-    apply_motion(view, words);
+    if (!apply_coordinate_operations(view, words) || stopped_) return;
+    const bool moved = apply_motion(view, words);
+    if (stopped_) return;
     apply_dwell(view, words);
     apply_m_codes(frame, view, words);
+    if (options_.emit_state && !frames_.empty()) emit_state(frame, view);
+    // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
+    if (moved && modal_call_ && !stopped_ && frames_.size() == depth && !frame.modal_macro)
+        push_macro_frame(frame, view, modal_call_->program, modal_call_->repeats, modal_call_->arguments, true);
+}
+
+void Executor::emit_state(const Frame& frame, const ast::BlockView& view) {
+    Event e = event_at(EventKind::state, frame, view);
+    std::string text;
+    for (const auto& [group, code] : modal_)
+        if (code) text += (text.empty() ? "" : " ") + code->spelling;
+    text += fmt::format(" F{} S{} T{}", feed_, flags_.css ? css_ : spindle_rpm_, tool_ * 100 + tool_offset_);
+    e.text = std::move(text);
+    e.feed = feed_;
+    emit(std::move(e));
 }
 
 }  // namespace kerf::interpreter

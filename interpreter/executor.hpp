@@ -12,6 +12,7 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/macro/evaluate.hpp"
 #include "interpreter/macro/variables.hpp"
+#include "motion/arc.hpp"
 #include "motion/vec.hpp"
 
 namespace kerf::interpreter {
@@ -31,18 +32,66 @@ struct BlockWords {
     }
 };
 
+// The modal state that motion reads on every block, derived from the active codes when a modal
+// code changes (so a move does not search the code table).
+struct ModalFlags {
+    std::string_view motion;          // function id of group 01
+    bool incremental = false;         // G91 (B/C, mills)
+    bool per_revolution = false;      // G95/G99
+    bool css = false;                 // G96
+    bool inch = false;                // G20 (C: G70)
+    motion::Plane plane = motion::Plane::xy;
+};
+
+// G68 coordinate rotation (semantics.md §2.9): programmed points are turned about `center` by
+// `angle` (radians, counter-clockwise positive in the plane frame) in `plane`.
+struct Rotation {
+    motion::Plane plane = motion::Plane::xy;
+    double center_first = 0, center_second = 0;
+    double angle = 0;
+};
+
+// G66 modal macro call: called after each move block until G67 (dialects.md §3.7).
+struct ModalCall {
+    std::int64_t program = 0;
+    std::int64_t repeats = 1;
+    std::vector<std::pair<int, macro::Value>> arguments;
+};
+
+class Executor;
+
+// Work coordinates (program units, lathe X diameter) → geometric mm (X radius).
+motion::Vec3 geometric_mm(const Position& p, bool diameter_x, double scale);
+
+// The system variables (#1000 and up) as the interpreter's state: executor_system.cpp.
+class ExecutorSystemVariables : public macro::SystemVariables {
+public:
+    explicit ExecutorSystemVariables(Executor& executor) : executor_(executor) {}
+    std::optional<macro::Value> read(int number) override;
+    macro::WriteResult write(int number, macro::Value value) override;
+    bool read_only(int number) const override;
+
+private:
+    Executor& executor_;
+};
+
 class Executor {
 public:
     Executor(ProgramSet& programs, const dialects::Dialect& dialect, const Setup& setup, EventSink& sink,
              const RunOptions& options);
+    Executor(const Executor&) = delete;
+    Executor& operator=(const Executor&) = delete;
     RunResult run(ProgramRef main);
 
 private:
+    friend class ExecutorSystemVariables;
+
     struct Frame {
         ProgramRef program;
         std::uint32_t block = 0;          // next block to execute (index into the file's blocks)
         std::int64_t repeats_left = 1;    // M98 repeats still to run, this one included
-        bool macro = false;               // G65 call: has its own local variables
+        bool macro = false;               // G65/G66 call: has its own local variables
+        bool modal_macro = false;         // called by G66: its moves do not call again
         struct Loop {
             std::uint32_t do_block;       // the WHILE/DO block
             int label;                    // m of DO m / END m
@@ -58,15 +107,24 @@ private:
     RunResult result_;
 
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
-    macro::Variables variables_;
+    ExecutorSystemVariables system_variables_{*this};
+    macro::Variables variables_{system_variables_};
 
     // Modal state.
     std::map<std::string, const dialects::CodeInfo*> modal_;   // group → active code
+    ModalFlags flags_;
     Position position_{};            // work coordinates as programmed (lathe X diameter)
     int work_system_ = 0;            // 0..5 = G54..G59
+    std::array<Position, 6> work_offsets_{};   // G54..G59 (writable by #5221.., G10 L2)
+    Position external_offset_{};
     Position work_shift_{};          // G10 P0 (lathe), subtracted (semantics.md §2.6)
     Position local_shift_{};         // G52
     Position setting_shift_{};       // G50/G92 correction
+    std::map<int, ToolOffset> tools_;   // offset registers (writable by #2001.., #10001..)
+    std::array<std::optional<double>, kAxisCount> intermediate_{};   // G28/G30 point, work coordinates
+    std::optional<Rotation> rotation_;
+    std::optional<ModalCall> modal_call_;
+    bool soft_limits_on_ = true;     // G22 / G23
     double feed_ = 0;
     double spindle_rpm_ = 0;         // programmed S under G97
     double css_ = 0;                 // G96 S, m/min
@@ -76,43 +134,73 @@ private:
     int tool_offset_ = 0;
     int pending_tool_ = 0;           // mills: T selects, M06 changes
     bool stopped_ = false;
+    std::map<char, double> last_words_;   // B D E F H M N O S T of the last block (#4102..#4120)
+    double clock_ms_offset_ = 0;          // #3001 preset
+    double clock_h_offset_ = 0;           // #3002 preset
+    std::map<int, double> stored_system_;   // #3003 #3004 #3901 #3902 ...: written, read back
 
     // Block execution.
     void execute_block(Frame& frame);
     bool execute_statements(Frame& frame, const ast::BlockView& view);
     bool execute_statement(Frame& frame, const ast::BlockView& view, const ast::Statement& s);
     bool start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call);
+    std::optional<std::vector<std::pair<int, macro::Value>>> macro_arguments(const Frame& frame, const ast::BlockView& view,
+                                                                             const ast::MacroCall& call);
+    bool push_macro_frame(const Frame& frame, const ast::BlockView& view, std::int64_t program, std::int64_t repeats,
+                          const std::vector<std::pair<int, macro::Value>>& arguments, bool modal);
     std::optional<std::uint32_t> find_end(const Frame& frame, std::uint32_t from, int label) const;
     bool evaluate_words(const ast::BlockView& view, BlockWords& out);
+    void remember_words(const ast::BlockView& view, const BlockWords& words);
     void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);
     void apply_modal_codes(const ast::BlockView& view);
+    void update_flags();
     bool apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words);
     void apply_local_system(const ast::BlockView& view, const BlockWords& words, bool current_point_code);
-    void apply_motion(const ast::BlockView& view, const BlockWords& words);
+    void apply_data_input(const ast::BlockView& view, const BlockWords& words);
+    void apply_rotation(const ast::BlockView& view, const BlockWords& words, bool cw);
+    bool apply_motion(const ast::BlockView& view, const BlockWords& words);
+    std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    void emit_state(const Frame& frame, const ast::BlockView& view);
 
     // Helpers.
     const LoadedFile& file_of(const Frame& f) const { return programs_.file(f.program.file); }
     const ast::Program& program_of(const Frame& f) const;
     SourceRef source(const Frame& f, const ast::BlockView& view) const;
     bool has_function(const ast::BlockView& view, std::string_view function) const;
-    std::string_view modal_function(const std::string& group) const;
+    bool modal_active(std::string_view function) const;
     double axis_value(const BlockWords::Word& w, char letter) const;
     Position target_position(const BlockWords& words, bool& moves) const;
+    Position to_program(const Position& work) const;     // undo G68
+    Position from_program(const Position& program) const;   // apply G68
     Position machine_offset() const;
+    Position tool_offset() const;
+    double unit_scale() const { return flags_.inch ? 25.4 : 1.0; }
     double current_rpm(double x_diameter) const;
     // An event of this block at the current position (start = end), before its details are set.
     Event event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const;
     void emit(Event e);
     void alarm(const Frame& f, const ast::BlockView& view, int number, std::string text);
+    // Stored stroke check of the box low..high (work coordinates); false after an OT alarm.
+    bool within_soft_limits(const Position& low, const Position& high, const Frame& f, const ast::BlockView& view);
     void move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view);
+    // Time of a feed move or thread (e.start/end/kind set): F per minute or per revolution, G96
+    // rpm along the path (a line, or `arc` when not null), exact-stop acceleration.
+    void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const;
     void arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view);
-    motion::Plane plane() const;
+    motion::Plane plane() const { return flags_.plane; }
     std::optional<std::uint32_t> find_label(const Frame& f, double n) const;
     void pop_frame();
     void change_offsets(const std::function<void()>& change);
+    std::string block_comment(const ast::BlockView& view) const;
     Frame* current_frame() { return frames_.empty() ? nullptr : &frames_.back(); }
+
+    // System variables (executor_system.cpp).
+    std::optional<macro::Value> read_system(int number);
+    macro::WriteResult write_system(int number, macro::Value value);
+    bool system_read_only(int number) const;
+
     const ast::BlockView* view_ = nullptr;
     const Frame* frame_ = nullptr;
 };

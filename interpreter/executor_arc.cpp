@@ -3,73 +3,88 @@
 // than 180°), lathe X converted from diameter to radius for the geometry and back for the trace.
 #include <fmt/format.h>
 
-#include "dialects/functions.hpp"
+#include <cmath>
+
 #include "interpreter/executor.hpp"
 #include "motion/arc.hpp"
+#include "motion/time.hpp"
 
 namespace kerf::interpreter {
 
-namespace fn = dialects::functions;
-
 namespace {
 
-motion::Vec3 geometric(const Position& p, bool diameter_x) {
-    return {diameter_x ? p[0] / 2 : p[0], p[1], p[2]};
+// I/J/K of a rotated block are in the program's frame: turn the vector with the rotation.
+motion::Vec3 rotate_vector(motion::Vec3 v, const std::optional<Rotation>& rotation) {
+    if (!rotation) return v;
+    const motion::PlaneAxes axes = motion::plane_axes(rotation->plane);
+    const double u = motion::get(v, axes.first), w = motion::get(v, axes.second);
+    motion::set(v, axes.first, u * std::cos(rotation->angle) - w * std::sin(rotation->angle));
+    motion::set(v, axes.second, u * std::sin(rotation->angle) + w * std::cos(rotation->angle));
+    return v;
+}
+
+Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, double scale) {
+    Position p = like;
+    p[0] = (diameter_x ? g.x * 2 : g.x) / scale;
+    p[1] = g.y / scale;
+    p[2] = g.z / scale;
+    return p;
 }
 
 }  // namespace
 
-motion::Plane Executor::plane() const {
-    for (const auto& [group, code] : modal_) {
-        if (!code) continue;
-        if (code->function == fn::plane_xy) return motion::Plane::xy;
-        if (code->function == fn::plane_zx) return motion::Plane::zx;
-        if (code->function == fn::plane_yz) return motion::Plane::yz;
-    }
-    return dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
-}
-
 void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view) {
     const Frame& f = *frame_;
-    const motion::Vec3 start = geometric(position_, setup_.diameter_x);
-    const motion::Vec3 end = geometric(to, setup_.diameter_x);
+    const double scale = unit_scale();
+    const motion::Vec3 start = geometric_mm(position_, setup_.diameter_x, scale);
+    const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
     const motion::ArcDirection dir = cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
+    motion::ArcOptions options;
+    options.radius_tolerance = setup_.arc_tolerance;
+    options.allow_negative_r = setup_.arc_negative_r;
+    options.enlarge_small_r = setup_.arc_enlarge_small_r;
     const auto* r = words.get('R');
-    motion::ArcResult arc = [&] {
-        if (r) return motion::arc_from_radius(start, end, plane(), dir, axis_value(*r, 'R'));
+    const motion::ArcResult arc = [&] {
+        if (r) return motion::arc_from_radius(start, end, plane(), dir, axis_value(*r, 'R') * scale, options);
         motion::Vec3 offset{};
-        if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I');
-        if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J');
-        if (const auto* k = words.get('K')) offset.z = axis_value(*k, 'K');
-        return motion::arc_from_center(start, end, plane(), dir, offset);
+        if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * scale;
+        if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * scale;
+        if (const auto* k = words.get('K')) offset.z = axis_value(*k, 'K') * scale;
+        return motion::arc_from_center(start, end, plane(), dir, rotate_vector(offset, rotation_), options);
     }();
     if (!arc) {
         const motion::ArcError& e = arc.error();
+        if (e.code == motion::ArcErrorCode::r_zero_chord) {
+            // FANUC runs an R arc whose end is its start as a 0° arc: no motion (semantics.md §3).
+            Event m = event_at(EventKind::message, f, view);
+            m.text = "arc with R whose end point is its start point: no motion (a 0° arc)";
+            emit(m);
+            return;
+        }
         alarm(f, view, e.fanuc_alarm,
               fmt::format("arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(e.code), e.found, e.allowed));
         return;
     }
+    const motion::Box box = motion::bounds(arc.arc());
+    if (!within_soft_limits(from_geometric(box.min, to, setup_.diameter_x, scale),
+                            from_geometric(box.max, to, setup_.diameter_x, scale), f, view))
+        return;
     Event e;
     e.kind = cw ? EventKind::arc_cw : EventKind::arc_ccw;
     e.source = source(f, view);
     e.start = position_;
     e.end = to;
-    const motion::Vec3 c = arc.arc().center;
-    Position center = to;
-    center[0] = setup_.diameter_x ? c.x * 2 : c.x;
-    center[1] = c.y;
-    center[2] = c.z;
-    e.center = center;
+    e.center = from_geometric(arc.arc().center, to, setup_.diameter_x, scale);
     e.radius = arc.arc().radius;
     e.length_mm = motion::length(arc.arc());
     // F is the speed along the arc in its plane; a helix's third axis follows (semantics.md §3).
-    const double timed_length = motion::feed_length(arc.arc());
-    e.feed = feed_;
-    const bool per_rev = modal_function("05") == fn::feed_per_revolution;
-    e.feed_per_rev = per_rev;
-    e.spindle_rpm = current_rpm(to[0]);
-    const double mm_per_min = per_rev ? feed_ * e.spindle_rpm : feed_;
-    e.time_s = mm_per_min > 0 ? timed_length / mm_per_min * 60.0 : 0;
+    const motion::PlaneAxes axes = motion::plane_axes(plane());
+    double accel = 0;
+    for (const motion::Axis a : {axes.first, axes.second}) {
+        const double axis_accel = setup_.accel_mm_s2[static_cast<std::size_t>(a)];
+        if (axis_accel > 0) accel = accel > 0 ? std::min(accel, axis_accel) : axis_accel;
+    }
+    time_feed_move(e, motion::feed_length(arc.arc()), accel, &arc.arc());
     result_.feed_distance_mm += e.length_mm;
     position_ = to;
     emit(std::move(e));

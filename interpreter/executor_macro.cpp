@@ -12,8 +12,8 @@ namespace fn = dialects::functions;
 
 namespace {
 
-// Argument specification I: address → local variable (dialects.md §3.7).
-int argument_variable(char letter) {
+// Argument specification I: address → local variable (dialects.md §3.7; [FANUC] custom macro).
+int specification_one(char letter) {
     switch (letter) {
         case 'A': return 1;  case 'B': return 2;  case 'C': return 3;  case 'I': return 4;
         case 'J': return 5;  case 'K': return 6;  case 'D': return 7;  case 'E': return 8;
@@ -24,6 +24,25 @@ int argument_variable(char letter) {
     }
 }
 
+// Specification II: A B C, then up to ten sets I J K → #4..#33 (I_n = #(3n+1), J_n = #(3n+2),
+// K_n = #(3n+3)). A set ends when a letter does not come later in I J K than the previous one,
+// so `I1 K3 I4` is I1 K1 I2. The first set is specification I's I J K (#4 #5 #6), so one
+// mapping serves both, and where both name one variable the later word wins ([FANUC]).
+class ArgumentMapper {
+public:
+    int variable(char letter) {
+        const int ijk = letter == 'I' ? 0 : letter == 'J' ? 1 : letter == 'K' ? 2 : -1;
+        if (ijk < 0) return specification_one(letter);
+        if (ijk <= last_ijk_) ++set_;
+        last_ijk_ = ijk;
+        return set_ < 10 ? 4 + 3 * set_ + ijk : 0;   // an 11th set has no variable
+    }
+
+private:
+    int set_ = 0;
+    int last_ijk_ = -1;
+};
+
 }  // namespace
 
 // Returns false when the block must not go on (a jump, an alarm, a call).
@@ -31,7 +50,7 @@ bool Executor::execute_statements(Frame& frame, const ast::BlockView& view) {
     const ast::SyntaxTree& tree = file_of(frame).tree;
     for (const std::uint32_t ti : view.statements()) {
         const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
-        if (!execute_statement(frame, view, s)) return false;
+        if (!execute_statement(frame, view, s) || stopped_) return false;
     }
     if (const auto call = view.macro_call()) return !start_macro_call(frame, view, *call);
     return true;
@@ -154,36 +173,22 @@ std::optional<std::uint32_t> Executor::find_end(const Frame& frame, std::uint32_
     return std::nullopt;
 }
 
-// G65 P_ L_ arguments: a new level of local variables, set from the arguments (specification I).
-bool Executor::start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call) {
-    if (call.modal) return false;   // G66 modal calls: not yet
-    if (!call.program) {
-        alarm(frame, view, 0, "G65 without a program number P");
-        return true;
-    }
-    const auto target = programs_.find_or_load(*call.program, frame.program.file);
-    if (!target) {
-        alarm(frame, view, 76, fmt::format("G65: program O{:04} not found (alarm 076)", *call.program));
-        return true;
-    }
-    int macros = 0;
-    for (const Frame& f : frames_) macros += f.macro;
-    if (macros >= setup_.max_macro_depth) {
-        alarm(frame, view, 77, fmt::format("macro calls nested deeper than {} (alarm 077)", setup_.max_macro_depth));
-        return true;
-    }
+std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_arguments(const Frame& frame,
+                                                                                    const ast::BlockView& view,
+                                                                                    const ast::MacroCall& call) {
     const LoadedFile& file = file_of(frame);
+    ArgumentMapper mapper;
     std::vector<std::pair<int, macro::Value>> arguments;
     for (const std::uint32_t ti : call.arguments) {
         const ast::Token& t = file.tree.tokens[ti];
-        const int number = argument_variable(t.letter);
+        const int number = mapper.variable(t.letter);
         if (!number) continue;
         macro::Value v = macro::Value::vacant_value();
         if (t.has(ast::token_flags::value_expr)) {
             const macro::Result r = macro::evaluate(file.tree, t.payload, variables_);
             if (r.error) {
                 alarm(frame, view, r.error->alarm, r.error->message);
-                return true;
+                return std::nullopt;
             }
             v = r.value;
         } else if (t.is_number()) {
@@ -191,17 +196,49 @@ bool Executor::start_macro_call(Frame& frame, const ast::BlockView& view, const 
         }
         arguments.emplace_back(number, v);
     }
+    return arguments;
+}
+
+bool Executor::push_macro_frame(const Frame& frame, const ast::BlockView& view, std::int64_t program,
+                                std::int64_t repeats, const std::vector<std::pair<int, macro::Value>>& arguments,
+                                bool modal) {
+    const auto target = programs_.find_or_load(program, frame.program.file);
+    if (!target) {
+        alarm(frame, view, 76, fmt::format("G6{}: program O{:04} not found (alarm 076)", modal ? 6 : 5, program));
+        return false;
+    }
+    int macros = 0;
+    for (const Frame& f : frames_) macros += f.macro;
+    if (macros >= setup_.max_macro_depth) {
+        alarm(frame, view, 77, fmt::format("macro calls nested deeper than {} (alarm 077)", setup_.max_macro_depth));
+        return false;
+    }
+    // A new level of local variables, set from the arguments (vacant where not given).
     variables_.push_level();
     for (const auto& [number, value] : arguments) variables_.write(number, value);
     Event e = event_at(EventKind::call, frame, view);
-    e.code = static_cast<int>(*call.program);
+    e.code = static_cast<int>(program);
+    e.text = modal ? "G66 modal macro call" : "G65 macro call";
     emit(e);
     Frame sub;
     sub.program = *target;
     sub.block = program_of(sub).first_block;
-    sub.repeats_left = call.repeats;
+    sub.repeats_left = repeats;
     sub.macro = true;
+    sub.modal_macro = modal;
     frames_.push_back(sub);
+    return true;
+}
+
+// G65 P_ L_ arguments: true when the block ends here (the call started, or an alarm).
+bool Executor::start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call) {
+    if (call.modal) return false;   // G66: execute_block remembers it
+    if (!call.program) {
+        alarm(frame, view, 0, "G65 without a program number P");
+        return true;
+    }
+    const auto arguments = macro_arguments(frame, view, call);
+    if (arguments) push_macro_frame(frame, view, *call.program, call.repeats, *arguments, false);
     return true;
 }
 

@@ -6,36 +6,42 @@
 
 #include "dialects/functions.hpp"
 #include "interpreter/executor.hpp"
+#include "motion/line.hpp"
+#include "motion/time.hpp"
 
 namespace kerf::interpreter {
 
 namespace fn = dialects::functions;
 
 namespace {
-bool incremental_mode(std::string_view distance_function) { return distance_function == fn::incremental_programming; }
 
 // Geometric length: lathe X is a diameter, the path runs at the radius.
 double distance(const Position& a, const Position& b, bool diameter_x) {
     double sum = 0;
-    for (std::size_t i = 0; i < kAxisCount; ++i) {
-        if (i >= 3) continue;   // rotary axes add time, not length
+    for (std::size_t i = 0; i < 3; ++i) {   // rotary axes add time, not length
         const double d = (b[i] - a[i]) * (i == 0 && diameter_x ? 0.5 : 1.0);
         sum += d * d;
     }
     return std::sqrt(sum);
 }
+
 }  // namespace
 
+motion::Vec3 geometric_mm(const Position& p, bool diameter_x, double scale) {
+    return {(diameter_x ? p[0] / 2 : p[0]) * scale, p[1] * scale, p[2] * scale};
+}
+
 Position Executor::target_position(const BlockWords& words, bool& moves) const {
-    Position to = position_;
+    // Built in the program's frame (G68 undone), then turned back into work coordinates.
+    const Position start = to_program(position_);
+    Position to = start;
     moves = false;
-    const bool incremental = incremental_mode(modal_function("03"));
     for (const auto& [letter, w] : words.words) {
         const auto axis = axis_of_letter(letter);
         if (!axis || !dialect_.lexical.is_axis(letter)) continue;
         const std::size_t a = static_cast<std::size_t>(*axis);
         const double v = axis_value(w, letter);
-        to[a] = incremental ? to[a] + v : v;
+        to[a] = flags_.incremental ? to[a] + v : v;
         moves = true;
     }
     // U W H: incremental in system A; "the later-specified word is used" with X/U together (§3.2).
@@ -44,10 +50,62 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         if (!axis) continue;
         const std::size_t a = static_cast<std::size_t>(*axis);
         const auto absolute = words.words.find(axis_letter);
-        if (absolute == words.words.end() || absolute->second.token < w.token) to[a] = position_[a] + axis_value(w, axis_letter);
+        if (absolute == words.words.end() || absolute->second.token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
         moves = true;
     }
-    return to;
+    return from_program(to);
+}
+
+// Stored stroke check 1 (alarms OT500/OT501 [FANUC]): checked before the move, which does not
+// start when its end (or an arc's extreme) lies past a limit.
+bool Executor::within_soft_limits(const Position& low, const Position& high, const Frame& f,
+                                  const ast::BlockView& view) {
+    if (!soft_limits_on_) return true;
+    const Position offset = machine_offset();
+    for (std::size_t a = 0; a < kAxisCount; ++a) {
+        const SoftLimit& limit = setup_.soft_limits[a];
+        const double scale = a < 3 ? unit_scale() : 1.0;
+        const double machine_low = low[a] * scale + offset[a], machine_high = high[a] * scale + offset[a];
+        const bool over = limit.max && machine_high > *limit.max + 1e-9;
+        const bool under = limit.min && machine_low < *limit.min - 1e-9;
+        if (!over && !under) continue;
+        const int number = over ? 500 : 501;
+        alarm(f, view, number,
+              fmt::format("OT{}: {} overtravel on {}: machine {:.3f} past the soft limit {:.3f} (stored stroke check)",
+                          number, over ? "+" : "-", kAxisLetters[a], over ? machine_high : machine_low,
+                          over ? *limit.max : *limit.min));
+        return false;
+    }
+    return true;
+}
+
+void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const {
+    // F under G99/G95 and every thread lead are per revolution (semantics.md §4, cycles.md §9).
+    const bool per_rev = flags_.per_revolution || e.kind == EventKind::thread;
+    e.feed = feed_;
+    e.feed_per_rev = per_rev;
+    e.spindle_rpm = current_rpm(e.end[0]);
+    e.spindle_running = spindle_on_;
+    const double feed_mm = feed_ * unit_scale();
+    double seconds = 0;
+    if (per_rev && flags_.css && e.kind != EventKind::thread) {
+        // G96: the rpm follows the diameter along the move (motion/time.hpp css_feed_time).
+        motion::SpindleClamp clamp;
+        if (max_rpm_ > 0) clamp.max_rpm = max_rpm_;
+        if (setup_.max_rpm > 0) clamp.max_rpm = std::min(clamp.max_rpm, setup_.max_rpm);
+        const motion::Line line{geometric_mm(e.start, setup_.diameter_x, unit_scale()),
+                                geometric_mm(e.end, setup_.diameter_x, unit_scale())};
+        if (feed_mm > 0) seconds = arc ? motion::css_feed_time(*arc, css_, feed_mm, clamp) : motion::css_feed_time(line, css_, feed_mm, clamp);
+    } else {
+        const double mm_per_min = per_rev ? motion::feed_per_minute(feed_mm, e.spindle_rpm) : feed_mm;
+        seconds = mm_per_min > 0 ? timed_length_mm / mm_per_min * 60.0 : 0;
+    }
+    if (seconds > 0 && std::isfinite(seconds) && accel_mm_s2 > 0) {
+        // Exact-stop trapezoid at the move's mean speed (motion/time.hpp).
+        const double v = timed_length_mm / seconds;
+        seconds = motion::trapezoid_time(timed_length_mm, v, accel_mm_s2);
+    }
+    e.time_s = std::isfinite(seconds) ? seconds : 0;
 }
 
 void Executor::move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view) {
@@ -56,62 +114,41 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
     e.source = source(f, view);
     e.start = position_;
     e.end = to;
-    e.length_mm = distance(position_, to, setup_.diameter_x);
-    e.feed = feed_;
+    if (!within_soft_limits(to, to, f, view)) return;
+    e.length_mm = distance(position_, to, setup_.diameter_x) * unit_scale();
+    std::array<motion::AxisLimits, kAxisCount> limits{};
+    std::array<double, kAxisCount> travel{};
+    for (std::size_t a = 0; a < kAxisCount; ++a) {
+        limits[a] = {setup_.rapid_mm_min[a], setup_.accel_mm_s2[a]};
+        const double scale = a < 3 ? unit_scale() : 1.0;
+        travel[a] = std::fabs(to[a] - position_[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0) * scale;
+    }
     if (kind == EventKind::rapid) {
-        // Each axis at its own rapid rate (dog-leg) or all scaled to the slowest (straight line):
-        // either way the move lasts as long as its slowest axis needs (gcode-tables.md §5).
-        double t = 0;
-        for (std::size_t a = 0; a < kAxisCount; ++a) {
-            const double rate = setup_.rapid_mm_min[a];
-            const double d = std::fabs(to[a] - position_[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0);
-            if (rate > 0) t = std::max(t, d / rate * 60.0);
-        }
-        e.time_s = t;
+        // Each axis at its own rapid rate (dog-leg) or all scaled to the slowest (straight line),
+        // with each axis' acceleration (gcode-tables.md §5, motion/time.hpp rapid_time).
+        e.time_s = motion::rapid_time(travel, limits, setup_.rapid_dogleg ? motion::RapidMode::dog_leg
+                                                                          : motion::RapidMode::straight);
+        if (!std::isfinite(e.time_s)) e.time_s = 0;   // an axis without a rapid rate: not timed
+        e.feed = feed_;
         result_.rapid_distance_mm += e.length_mm;
     } else {
-        const bool per_rev = modal_function("05") == fn::feed_per_revolution;
-        e.feed_per_rev = per_rev;
-        const double rpm = current_rpm(to[0]);
-        e.spindle_rpm = rpm;
-        const double mm_per_min = per_rev ? feed_ * rpm : feed_;
-        e.time_s = mm_per_min > 0 ? e.length_mm / mm_per_min * 60.0 : 0;
+        const motion::Vec3 delta{travel[0], travel[1], travel[2]};
+        const motion::AxisLimits3 l3{limits[0], limits[1], limits[2]};
+        const double accel = motion::path_accel(delta, l3);
+        time_feed_move(e, e.length_mm, std::isfinite(accel) ? accel : 0.0, nullptr);
         result_.feed_distance_mm += e.length_mm;
     }
     position_ = to;
     emit(std::move(e));
 }
 
-void Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
+bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
+    if (const auto reference = apply_reference_motion(view, words)) return *reference;
     bool moves = false;
     const Position to = target_position(words, moves);
+    if (!moves) return false;
     const Frame& f = *frame_;
-    // One-shot motion codes first: G53 machine coordinates, G28 reference return.
-    if (has_function(view, fn::machine_coordinate_select) || has_function(view, fn::machine_coordinate_select_g0_g1)) {
-        if (!moves) return;
-        const Position offset = machine_offset();
-        Position target = position_;
-        for (const auto& [letter, w] : words.words)
-            if (const auto axis = axis_of_letter(letter); axis && dialect_.lexical.is_axis(letter))
-                target[static_cast<std::size_t>(*axis)] = axis_value(w, letter) - offset[static_cast<std::size_t>(*axis)];
-        move(EventKind::rapid, target, f, view);
-        return;
-    }
-    if (has_function(view, fn::reference_return)) {
-        if (!moves) return;
-        // Via the intermediate point, then to reference point 1, programmed axes only (§2.8).
-        move(EventKind::rapid, to, f, view);
-        const Position offset = machine_offset();
-        Position home = position_;
-        for (std::size_t a = 0; a < kAxisCount; ++a) {
-            const bool programmed = words.words.count(kAxisLetters[a]) || words.incremental.count(kAxisLetters[a]);
-            if (programmed) home[a] = setup_.reference_points[0][a] - offset[a];
-        }
-        move(EventKind::rapid, home, f, view);
-        return;
-    }
-    if (!moves) return;
-    const std::string_view motion = modal_function("01");
+    const std::string_view motion = flags_.motion;
     if (motion == fn::rapid) move(EventKind::rapid, to, f, view);
     else if (motion == fn::linear) move(EventKind::linear, to, f, view);
     else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, words, view);
@@ -120,7 +157,9 @@ void Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
         Event e = event_at(EventKind::message, f, view);
         e.text = fmt::format("motion of '{}' is not expanded yet (cycles: next issue); position kept", motion);
         emit(e);
+        return false;
     }
+    return true;
 }
 
 void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) {

@@ -50,7 +50,7 @@ double Executor::axis_value(const BlockWords::Word& w, char) const {
 }
 
 double Executor::current_rpm(double x_diameter) const {
-    if (modal_function("02") != fn::css_on && modal_function("04") != fn::css_on) return spindle_rpm_;
+    if (!flags_.css) return spindle_rpm_;
     // G96: n = 1000·Vc / (π·D), clamped by G50/G92 S and the machine (semantics.md §4.1).
     const double d = std::fabs(setup_.diameter_x ? x_diameter : 2 * x_diameter);
     double rpm = d > 1e-9 ? 1000.0 * css_ / (M_PI * d) : 1e12;
@@ -64,9 +64,7 @@ void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWord
     if (const auto* s = words.get('S')) {
         if (has_function(view, fn::coordinate_system_setting)) {
             max_rpm_ = s->value;   // G50 S / G92 S: the clamp for G96 (semantics.md §4.1)
-        } else if (has_function(view, fn::css_on) ||
-                   ((modal_function("02") == fn::css_on || modal_function("04") == fn::css_on) &&
-                    !has_function(view, fn::css_off))) {
+        } else if (has_function(view, fn::css_on) || (flags_.css && !has_function(view, fn::css_off))) {
             css_ = s->value;
         } else {
             spindle_rpm_ = s->value;
@@ -77,6 +75,7 @@ void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWord
         const int value = static_cast<int>(std::lround(t->value));
         const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
         const int station = lathe ? value / 100 : value;
+        // The offset applies at once: the machine position moves, the work position does not.
         tool_offset_ = lathe ? value % 100 : tool_offset_;
         if (lathe && station != 0 && station != tool_) {
             Event e = event_at(EventKind::tool_change, *frame_, view);
@@ -94,16 +93,43 @@ void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWord
 
 void Executor::apply_modal_codes(const ast::BlockView& view) {
     // Several codes of one group in a block: the last one wins (semantics.md §1.1).
-    for (const ast::CodeRef& c : view.g_codes())
-        if (c.info && c.info->group != "00") modal_[c.info->group] = c.info;
+    bool changed = false;
+    for (const ast::CodeRef& c : view.g_codes()) {
+        if (!c.info || c.info->group == "00" || c.info->group.empty()) continue;
+        const dialects::CodeInfo*& slot = modal_[c.info->group];
+        changed = changed || slot != c.info;
+        slot = c.info;
+    }
+    if (changed) update_flags();
+}
+
+// What #4102..#4120 read: the last B D E F H M N O S T (FANUC "modal information").
+void Executor::remember_words(const ast::BlockView& view, const BlockWords& words) {
+    for (const auto& [letter, w] : words.words)
+        if (std::string_view("BDEFHST").find(letter) != std::string_view::npos) last_words_[letter] = w.value;
+    for (const ast::CodeRef& c : view.m_codes())
+        if (c.key) last_words_['M'] = static_cast<double>(*c.key) / 10.0;
+    if (const auto n = view.sequence_number()) last_words_['N'] = *n;
 }
 
 Position Executor::machine_offset() const {
-    // semantics.md §2.7: work offset + external − work shift + local shift + setting correction.
+    // semantics.md §2.7: work offset + external − work shift + local shift + setting correction,
+    // and on lathes the tool offset (geometry + wear) of the active T (dialects.md §3.5).
+    const Position tool = tool_offset();
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        p[a] = setup_.work_offsets[static_cast<std::size_t>(work_system_)][a] + setup_.external_offset[a] -
-               work_shift_[a] + local_shift_[a] + setting_shift_[a];
+        p[a] = work_offsets_[static_cast<std::size_t>(work_system_)][a] + external_offset_[a] - work_shift_[a] +
+               local_shift_[a] + setting_shift_[a] + tool[a];
+    return p;
+}
+
+Position Executor::tool_offset() const {
+    // Mills offset the length with G43 H and the radius with G41/G42 D (the next issue), not by T.
+    if (dialect_.machine != dialects::MachineKind::lathe || tool_offset_ == 0) return {};
+    const auto it = tools_.find(tool_offset_);
+    if (it == tools_.end()) return {};
+    Position p{};
+    for (std::size_t a = 0; a < kAxisCount; ++a) p[a] = it->second.geometry[a] + it->second.wear[a];
     return p;
 }
 
@@ -120,24 +146,17 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
                 });
             }
         } else if (f == fn::programmable_data_input) {
-            const auto* p = words.get('P');
-            if (p && p->value == 0) {
-                // G10 P0: the work shift register; X/Z replace it, U/W add to it (semantics.md §2.6).
-                // In the G10 block U/W are data words (parameter_words), so they arrive by letter.
-                change_offsets([&] {
-                    for (const auto& [letter, w] : words.words) {
-                        const char incremental_of = dialect_.lexical.incremental_axis_of(letter);
-                        const auto axis = axis_of_letter(incremental_of ? incremental_of : letter);
-                        if (!axis || letter == 'P') continue;
-                        double& reg = work_shift_[static_cast<std::size_t>(*axis)];
-                        reg = incremental_of ? reg + axis_value(w, letter) : axis_value(w, letter);
-                    }
-                });
-                Event e = event_at(EventKind::coordinate_change, *frame_, view);
-                e.text = "work shift";
-                emit(e);
-            }
+            apply_data_input(view, words);
             return false;   // no motion in a G10 block
+        } else if (f == fn::coordinate_rotation || f == fn::coordinate_rotation_cw) {
+            apply_rotation(view, words, f == fn::coordinate_rotation_cw);
+            return false;   // G68 sets the rotation; the next block moves (semantics.md §2.9)
+        } else if (f == fn::coordinate_rotation_cancel) {
+            rotation_.reset();
+        } else if (f == fn::modal_macro_call_cancel) {
+            modal_call_.reset();   // G67
+        } else if (f == fn::stroke_check_on || f == fn::stroke_check_off) {
+            soft_limits_on_ = f == fn::stroke_check_on;
         } else if (f == fn::coordinate_system_setting && (words.get('X') || words.get('Z') || words.get('Y'))) {
             // G50/G92 X Z: the current point gets the programmed values (semantics.md §2.5).
             for (const auto& [letter, w] : words.words) {

@@ -20,6 +20,7 @@ struct RunOptions {
     // A block with syntax errors stops the control (an alarm). Lenient: run it without its defective
     // words and say so in a message event — for reading damaged listings like the seeds.
     bool lenient = false;
+    bool emit_state = false;    // a `state` event after every executed block (hovers, debugging)
 };
 
 struct RunResult {

@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
+#include <string>
 
 #include "interpreter/events.hpp"
 
@@ -14,21 +16,42 @@ struct ToolOffset {
     Position geometry{};   // X (diameter on lathes), Z, ... geometry offsets
     Position wear{};
     double nose_radius = 0;
+    double nose_radius_wear = 0;
     int tip = 0;
+    double length = 0;        // mill: H register, geometry and wear
+    double length_wear = 0;
+    double radius = 0;        // mill: D register, geometry and wear
+    double radius_wear = 0;
+};
+
+struct SoftLimit {
+    std::optional<double> min;   // machine coordinates (lathe X as diameter)
+    std::optional<double> max;
 };
 
 struct Setup {
     bool diameter_x = false;           // lathe: X and U are diameters (dialects.md §3.3)
+    std::string axis_order = "XYZ";    // the machine's axes in control order: #5001 is the first (FANUC)
     double increment_mm = 0.001;       // IS-B 0.001, IS-C 0.0001
     bool calculator_decimal = true;    // an axis value without point is mm (true) or increments (false)
     std::array<Position, 6> work_offsets{};   // G54..G59, machine coordinates of each zero
     Position external_offset{};
+    Position work_shift{};             // G10 P0 register at power-on (semantics.md §2.6)
     std::array<Position, 4> reference_points{};   // G28 (1), G30 P2..P4
     Position rapid_mm_min{};           // per axis; 0 = axis absent
+    Position accel_mm_s2{};            // per axis; 0 = acceleration not modelled (motion/time.hpp)
+    std::array<SoftLimit, kAxisCount> soft_limits{};   // stored stroke check 1 (alarm 500/501)
     double max_rpm = 0;                // 0 = no limit
     bool rapid_dogleg = true;          // G00 axes move independently (gcode-tables.md §5)
     bool dwell_p_in_seconds = false;   // ADV400: G04 P in seconds (semantics.md §8.2)
     bool g52_current_point = false;    // pcnc/ADV400: G52 makes the current point take the values
+    bool g28_point_in_machine = false; // G28/G30 intermediate point in machine coordinates (semantics.md §2.8)
+    int g30_default_p = 2;             // G30 without P (semantics.md §2.8)
+    bool g68_positive_cw = false;      // ADV400: positive G68 R turns clockwise (semantics.md §2.9, §12.4)
+    double arc_tolerance = 0.01;       // mm, end-point radius mismatch allowed (semantics.md §3)
+    bool arc_negative_r = true;        // R < 0 = arc over 180° (semantics.md §3, §12.5)
+    bool arc_enlarge_small_r = false;  // a too small R becomes chord/2 instead of alarm 020
+    int tool_offset_count = 64;        // offset numbers 1..count exist
     std::map<int, ToolOffset> tools;   // by offset number
     std::uint64_t step_limit = 10'000'000;
     int max_call_depth = 4;            // M98 nesting ([FANUC], dialects.md §3.6)

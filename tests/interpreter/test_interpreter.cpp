@@ -19,13 +19,15 @@ struct Run {
     std::vector<interpreter::Event> events;
 };
 
-Run run(const std::string& text, const char* dialect_id, std::uint64_t step_limit = 10'000'000) {
+Run run(const std::string& text, const char* dialect_id, std::uint64_t step_limit = 10'000'000,
+        bool acceleration = true) {
     const dialects::Dialect* d = dialects::builtin_registry().find(dialect_id);
     REQUIRE(d);
     interpreter::ProgramSet programs;
     const auto file = programs.add("test.nc", text, *d);
     interpreter::Setup setup = interpreter::default_setup(*d);
     setup.step_limit = step_limit;
+    if (!acceleration) setup.accel_mm_s2 = {};
     interpreter::VectorSink sink;
     Run r;
     r.result = interpreter::run(programs, *programs.first_program(file), *d, setup, sink);
@@ -59,7 +61,7 @@ TEST_CASE("system A: absolute X/Z and incremental U/W") {
 }
 
 TEST_CASE("mill: G90/G91 decide absolute or incremental") {
-    const Run r = run("O1\nG90 G0 X10. Y10.\nG91 G1 X5. Y-5. F100\nG90 X0.\nM30\n", "fanuc-mill");
+    const Run r = run("O1\nG90 G0 X10. Y10.\nG91 G1 X5. Y-5. F100\nG90 X0.\nM30\n", "fanuc-mill", 10'000'000, false);
     const auto m = moves(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].end[X] == Approx(15));

@@ -1,0 +1,89 @@
+// Moves to and from fixed machine points (semantics.md §2.2, §2.8): G53 one-shot machine
+// coordinates, G28 reference return, G30 P2..P4 2nd–4th reference point, G29 return from the
+// reference point through the intermediate point remembered per axis.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dialects/functions.hpp"
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+
+namespace {
+
+bool programmed(const BlockWords& words, std::size_t axis) {
+    const char letter = kAxisLetters[axis];
+    return words.words.count(letter) || words.incremental.count(letter);
+}
+
+}  // namespace
+
+// nullopt: the block has none of these codes; otherwise whether the tool moved.
+std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view, const BlockWords& words) {
+    const Frame& f = *frame_;
+    const bool g53 = has_function(view, fn::machine_coordinate_select) || has_function(view, fn::machine_coordinate_select_g0_g1);
+    const bool g28 = has_function(view, fn::reference_return);
+    const bool g30 = has_function(view, fn::reference_return_nth);
+    const bool g29 = has_function(view, fn::return_from_reference);
+    if (!g53 && !g28 && !g30 && !g29) return std::nullopt;
+    bool moves = false;
+    const Position to = target_position(words, moves);
+    if (!moves) return false;
+    if (g53) {
+        // The programmed values are machine coordinates, for this block only (§2.2).
+        const Position offset = machine_offset();
+        Position target = position_;
+        for (const auto& [letter, w] : words.words)
+            if (const auto axis = axis_of_letter(letter); axis && dialect_.lexical.is_axis(letter)) {
+                const std::size_t a = static_cast<std::size_t>(*axis);
+                target[a] = (axis_value(w, letter) - offset[a]) / (a < 3 ? unit_scale() : 1.0);
+            }
+        move(EventKind::rapid, target, f, view);
+        return !stopped_;
+    }
+    if (g29) {
+        // To the remembered intermediate point, then to the programmed point; incremental words
+        // count from the intermediate point ([FANUC] G29).
+        Position mid = position_;
+        for (std::size_t a = 0; a < kAxisCount; ++a)
+            if (programmed(words, a) && intermediate_[a]) mid[a] = *intermediate_[a];
+        move(EventKind::rapid, mid, f, view);
+        if (stopped_) return false;
+        bool unused = false;
+        move(EventKind::rapid, target_position(words, unused), f, view);
+        return !stopped_;
+    }
+    int point = 1;
+    if (g30) {
+        const auto* p = words.get('P');
+        point = p ? static_cast<int>(std::lround(p->value)) : setup_.g30_default_p;
+        if (point < 2 || point > 4) {
+            alarm(f, view, 46, fmt::format("G30 P{}: P must be 2, 3 or 4 (alarm 046)", point));
+            return false;
+        }
+    }
+    // Through the intermediate point (remembered per axis for G29), then to the reference point,
+    // programmed axes only (§2.8).
+    Position via = to;
+    if (setup_.g28_point_in_machine) {
+        const Position offset = machine_offset();
+        for (std::size_t a = 0; a < kAxisCount; ++a)
+            if (const auto* w = words.get(kAxisLetters[a]); w && programmed(words, a)) via[a] = axis_value(*w, kAxisLetters[a]) - offset[a];
+    }
+    for (std::size_t a = 0; a < kAxisCount; ++a)
+        if (programmed(words, a)) intermediate_[a] = via[a];
+    move(EventKind::rapid, via, f, view);
+    if (stopped_) return false;
+    const Position offset = machine_offset();
+    Position home = position_;
+    for (std::size_t a = 0; a < kAxisCount; ++a)
+        if (programmed(words, a))
+            home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / (a < 3 ? unit_scale() : 1.0);
+    move(EventKind::rapid, home, f, view);
+    return !stopped_;
+}
+
+}  // namespace kerf::interpreter

@@ -1,0 +1,67 @@
+// G68 / G69 coordinate rotation (semantics.md §2.9). The interpreter keeps positions in work
+// coordinates (what the tool does); a rotated block's words are in the program's frame, so the
+// target is built in that frame and turned into work coordinates.
+#include <cmath>
+#include <numbers>
+
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace {
+
+// The plane's (first, second) axes as Position indices (vec.hpp: G17 X Y, G18 Z X, G19 Y Z).
+std::pair<std::size_t, std::size_t> plane_indices(motion::Plane plane) {
+    switch (plane) {
+        case motion::Plane::xy: return {0, 1};
+        case motion::Plane::zx: return {2, 0};
+        case motion::Plane::yz: return {1, 2};
+    }
+    return {0, 1};
+}
+
+Position rotate(const Position& p, const Rotation& r, double angle) {
+    const auto [i, j] = plane_indices(r.plane);
+    const double u = p[i] - r.center_first;
+    const double v = p[j] - r.center_second;
+    Position out = p;
+    out[i] = r.center_first + u * std::cos(angle) - v * std::sin(angle);
+    out[j] = r.center_second + u * std::sin(angle) + v * std::cos(angle);
+    return out;
+}
+
+}  // namespace
+
+Position Executor::to_program(const Position& work) const {
+    return rotation_ ? rotate(work, *rotation_, -rotation_->angle) : work;
+}
+
+Position Executor::from_program(const Position& program) const {
+    return rotation_ ? rotate(program, *rotation_, rotation_->angle) : program;
+}
+
+// `G68 <centre words of the plane> R<angle>`: a missing centre word is the current position, a
+// missing R is 0 ([FANUC] parameter 5410). Positive R turns counter-clockwise on FANUC and
+// clockwise on ADV400 (the dialect's function id, or the machine's g68 switch).
+void Executor::apply_rotation(const ast::BlockView&, const BlockWords& words, bool cw) {
+    Rotation r;
+    r.plane = flags_.plane;
+    const auto [i, j] = plane_indices(r.plane);
+    const Position here = to_program(position_);
+    r.center_first = here[i];
+    r.center_second = here[j];
+    for (const auto& [letter, w] : words.words) {
+        const auto axis = axis_of_letter(letter);
+        if (!axis) continue;
+        const std::size_t a = static_cast<std::size_t>(*axis);
+        if (a == i) r.center_first = axis_value(w, letter);
+        if (a == j) r.center_second = axis_value(w, letter);
+    }
+    const auto* angle = words.get('R');
+    const double degrees = angle ? angle->value : 0.0;
+    const bool clockwise_positive = cw || setup_.g68_positive_cw;
+    r.angle = (clockwise_positive ? -degrees : degrees) * std::numbers::pi / 180.0;
+    rotation_ = r;
+}
+
+}  // namespace kerf::interpreter

@@ -1,0 +1,201 @@
+// System variables (#1000 and up) of FANUC Custom Macro B, read from and written to the
+// interpreter's state ([FANUC] 0i/16i/18i/30i operator manuals, "System variables"; the ranges
+// are also listed in interpreter/macro/variables.hpp). The tables below are data: an entry names a
+// range and what it maps to, so a control with other numbers needs a new table, not new code.
+//
+//   #1000-#1035 / #1100-#1135  interface signals: read 0, writes accepted (no PMC in a dry run)
+//   #2001.. / #10001..          tool offsets (lathe: X Z R T wear and geometry; mill: H D)
+//   #3000 = n (MSG)             macro alarm 3000 + n with the block's comment as message
+//   #3001 / #3002               clock in ms / hours: the dry-run time, writable (preset)
+//   #3003 #3004 #3005 #3901 #3902  stored and read back
+//   #3006 = n (MSG)             stop with message (a stop event)
+//   #3011 / #3012               date / time: 0 (a dry run has no date; deterministic traces)
+//   #4001-#4030 (#4201..)       modal G code of group 1..30: its number (G01 → 1, G96 → 96)
+//   #4102-#4130 (#4302..)       last B D E F H M N O S T
+//   #5001.. #5021.. #5041..     end point, machine and work position per axis (axis order of the machine)
+//   #5061.. #5081.. #5101..     skip position, tool offset, servo deviation: 0 / offset / 0
+//   #5201.. #5221.. ... #5321.. external offset, G54..G59 per axis: read and write
+#include <fmt/format.h>
+
+#include <cmath>
+#include <span>
+
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace {
+
+enum class OffsetField { x_wear, z_wear, r_wear, tip, x_geometry, z_geometry, r_geometry, h_wear, h_geometry, d_wear, d_geometry };
+
+struct OffsetRange {
+    int first;    // variable of offset number 1
+    int count;    // offsets in the range
+    OffsetField field;
+};
+
+// [FANUC] T series, tool compensation memory (64 offsets or fewer, and the #10000 ranges).
+constexpr OffsetRange kLatheOffsets[] = {
+    {2001, 64, OffsetField::x_wear},      {2101, 64, OffsetField::z_wear},     {2201, 64, OffsetField::r_wear},
+    {2301, 64, OffsetField::tip},         {2701, 64, OffsetField::x_geometry}, {2801, 64, OffsetField::z_geometry},
+    {2901, 64, OffsetField::r_geometry},  {10001, 999, OffsetField::x_wear},   {11001, 999, OffsetField::z_wear},
+    {12001, 999, OffsetField::r_wear},    {13001, 999, OffsetField::tip},      {15001, 999, OffsetField::x_geometry},
+    {16001, 999, OffsetField::z_geometry}, {17001, 999, OffsetField::r_geometry},
+};
+// [FANUC] M series, tool compensation memory C (200 offsets or fewer, and the #10000 ranges).
+constexpr OffsetRange kMillOffsets[] = {
+    {2001, 200, OffsetField::h_wear},    {2201, 200, OffsetField::h_geometry}, {2401, 200, OffsetField::d_wear},
+    {2601, 200, OffsetField::d_geometry}, {10001, 999, OffsetField::h_wear},   {11001, 999, OffsetField::h_geometry},
+    {12001, 999, OffsetField::d_wear},   {13001, 999, OffsetField::d_geometry},
+};
+
+double& field_of(ToolOffset& t, OffsetField f) {
+    static double tip_dummy = 0;   // never used: the tip is an int, handled by the caller
+    switch (f) {
+        case OffsetField::x_wear: return t.wear[0];
+        case OffsetField::z_wear: return t.wear[2];
+        case OffsetField::r_wear: return t.nose_radius_wear;
+        case OffsetField::x_geometry: return t.geometry[0];
+        case OffsetField::z_geometry: return t.geometry[2];
+        case OffsetField::r_geometry: return t.nose_radius;
+        case OffsetField::h_wear: return t.length_wear;
+        case OffsetField::h_geometry: return t.length;
+        case OffsetField::d_wear: return t.radius_wear;
+        case OffsetField::d_geometry: return t.radius;
+        case OffsetField::tip: break;
+    }
+    return tip_dummy;
+}
+
+// Variable ranges per axis: #5001 + i, the i-th axis of the machine (0-based).
+constexpr int kEndPoint = 5001, kMachinePosition = 5021, kWorkPosition = 5041, kSkipPosition = 5061,
+              kToolOffsetValue = 5081, kServoDeviation = 5101, kWorkOffsets = 5201, kWorkOffsetsEnd = 5340;
+constexpr int kAxesPerRange = 20;
+
+}  // namespace
+
+std::optional<macro::Value> ExecutorSystemVariables::read(int number) { return executor_.read_system(number); }
+macro::WriteResult ExecutorSystemVariables::write(int number, macro::Value value) {
+    return executor_.write_system(number, value);
+}
+bool ExecutorSystemVariables::read_only(int number) const { return executor_.system_read_only(number); }
+
+bool Executor::system_read_only(int number) const {
+    // Modal information and positions are read-only (#4001-#4330, #5001-#5200); alarm 116.
+    return (number >= 4001 && number <= 4330) || (number >= kEndPoint && number < kWorkOffsets) ||
+           number == 3007 || number == 3011 || number == 3012;
+}
+
+std::optional<macro::Value> Executor::read_system(int number) {
+    using macro::Value;
+    const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
+    // Tool offsets.
+    for (const OffsetRange& r : lathe ? std::span<const OffsetRange>(kLatheOffsets) : std::span<const OffsetRange>(kMillOffsets)) {
+        if (number < r.first || number >= r.first + r.count) continue;
+        const int offset = number - r.first + 1;
+        if (offset > setup_.tool_offset_count) return std::nullopt;
+        const auto it = tools_.find(offset);
+        if (it == tools_.end()) return Value::of(0);
+        if (r.field == OffsetField::tip) return Value::of(it->second.tip);
+        ToolOffset copy = it->second;
+        return Value::of(field_of(copy, r.field));
+    }
+    if ((number >= 1000 && number <= 1035) || (number >= 1100 && number <= 1135)) return Value::of(0);
+    if (number == 3000 || number == 3006) return Value::vacant_value();
+    if (number == 3001) return Value::of(result_.total_time_s * 1000.0 - clock_ms_offset_);
+    if (number == 3002) return Value::of(result_.total_time_s / 3600.0 - clock_h_offset_);
+    if (number == 3011 || number == 3012 || number == 3007) return Value::of(0);
+    if (const auto it = stored_system_.find(number); it != stored_system_.end()) return Value::of(it->second);
+    if (number == 3003 || number == 3004 || number == 3005 || number == 3901 || number == 3902) return Value::of(0);
+    // #4001-#4030 (and #4201-#4230, the block being executed: the same in a dry run).
+    const int modal = number >= 4201 && number <= 4330 ? number - 200 : number;
+    if (modal >= 4001 && modal <= 4030) {
+        const auto it = modal_.find(fmt::format("{:02}", modal - 4000));
+        if (it == modal_.end() || !it->second) return Value::vacant_value();
+        const std::string& spelling = it->second->spelling;
+        return Value::of(std::strtod(spelling.c_str() + 1, nullptr));
+    }
+    if (modal >= 4102 && modal <= 4130) {
+        // The numbers follow argument specification I: #4102 B, #4107 D, #4109 F, #4113 M, #4119 S ...
+        constexpr std::pair<int, char> kLetters[] = {{2, 'B'}, {7, 'D'}, {8, 'E'}, {9, 'F'}, {11, 'H'}, {13, 'M'},
+                                                     {14, 'N'}, {15, 'O'}, {19, 'S'}, {20, 'T'}};
+        char letter = 0;
+        for (const auto& [n, l] : kLetters)
+            if (modal - 4100 == n) letter = l;
+        if (!letter) return Value::vacant_value();
+        if (letter == 'O') return Value::of(static_cast<double>(program_of(frames_.back()).number.value_or(0)));
+        if (letter == 'T' && dialect_.machine == dialects::MachineKind::lathe) return Value::of(tool_ * 100 + tool_offset_);
+        const auto it = last_words_.find(letter);
+        return it == last_words_.end() ? Value::vacant_value() : Value::of(it->second);
+    }
+    // Positions: per axis in the machine's order.
+    const auto axis_at = [&](int base) -> std::optional<std::size_t> {
+        const int i = number - base;
+        if (i < 0 || i >= kAxesPerRange || static_cast<std::size_t>(i) >= setup_.axis_order.size()) return std::nullopt;
+        const auto a = axis_of_letter(setup_.axis_order[static_cast<std::size_t>(i)]);
+        return a ? std::optional<std::size_t>(static_cast<std::size_t>(*a)) : std::nullopt;
+    };
+    if (const auto a = axis_at(kEndPoint)) return Value::of(position_[*a]);
+    if (const auto a = axis_at(kWorkPosition)) return Value::of(position_[*a]);
+    if (const auto a = axis_at(kMachinePosition)) return Value::of(position_[*a] * (*a < 3 ? unit_scale() : 1.0) + machine_offset()[*a]);
+    if (const auto a = axis_at(kSkipPosition)) return Value::of(0);
+    if (const auto a = axis_at(kToolOffsetValue)) return Value::of(tool_offset()[*a]);
+    if (const auto a = axis_at(kServoDeviation)) return Value::of(0);
+    if (number >= kWorkOffsets && number <= kWorkOffsetsEnd) {
+        const int set = (number - kWorkOffsets) / kAxesPerRange;   // 0 = external, 1..6 = G54..G59
+        if (const auto a = axis_at(kWorkOffsets + set * kAxesPerRange))
+            return Value::of(set == 0 ? external_offset_[*a] : work_offsets_[static_cast<std::size_t>(set - 1)][*a]);
+    }
+    return std::nullopt;
+}
+
+macro::WriteResult Executor::write_system(int number, macro::Value value) {
+    using macro::WriteResult;
+    const double v = value.or_zero();
+    const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
+    if (number == 3000) {
+        // Macro alarm: number 3000 + n, the comment of the block is the message ([FANUC]).
+        alarm(*frame_, *view_, 3000 + static_cast<int>(std::lround(v)), block_comment(*view_));
+        return WriteResult::ok;
+    }
+    if (number == 3006) {
+        Event e = event_at(EventKind::stop, *frame_, *view_);
+        e.code = 3006;
+        e.text = block_comment(*view_);
+        emit(e);
+        if (options_.stop_at_m00) stopped_ = true;
+        return WriteResult::ok;
+    }
+    if (number == 3001) { clock_ms_offset_ = result_.total_time_s * 1000.0 - v; return WriteResult::ok; }
+    if (number == 3002) { clock_h_offset_ = result_.total_time_s / 3600.0 - v; return WriteResult::ok; }
+    if (number == 3003 || number == 3004 || number == 3005 || number == 3901 || number == 3902) {
+        stored_system_[number] = v;
+        return WriteResult::ok;
+    }
+    if (number >= 1100 && number <= 1135) return WriteResult::ok;
+    for (const OffsetRange& r : lathe ? std::span<const OffsetRange>(kLatheOffsets) : std::span<const OffsetRange>(kMillOffsets)) {
+        if (number < r.first || number >= r.first + r.count) continue;
+        const int offset = number - r.first + 1;
+        if (offset > setup_.tool_offset_count) return WriteResult::undefined;
+        ToolOffset& t = tools_[offset];
+        if (r.field == OffsetField::tip) t.tip = static_cast<int>(std::lround(v));
+        else field_of(t, r.field) = v;
+        return WriteResult::ok;
+    }
+    if (number >= kWorkOffsets && number <= kWorkOffsetsEnd) {
+        const int set = (number - kWorkOffsets) / kAxesPerRange;
+        const int i = (number - kWorkOffsets) % kAxesPerRange;
+        if (static_cast<std::size_t>(i) >= setup_.axis_order.size()) return WriteResult::undefined;
+        const auto a = axis_of_letter(setup_.axis_order[static_cast<std::size_t>(i)]);
+        if (!a) return WriteResult::undefined;
+        // The tool stays where it is; its work coordinates follow the new offset.
+        change_offsets([&] {
+            Position& reg = set == 0 ? external_offset_ : work_offsets_[static_cast<std::size_t>(set - 1)];
+            reg[static_cast<std::size_t>(*a)] = v;
+        });
+        return WriteResult::ok;
+    }
+    return system_read_only(number) ? WriteResult::read_only : WriteResult::undefined;
+}
+
+}  // namespace kerf::interpreter
