@@ -1,6 +1,7 @@
 // Macro B statements and G65 calls (reference/dialects.md §3.7; FANUC custom macro B).
 #include <fmt/format.h>
 
+#include <cctype>
 #include <cmath>
 
 #include "dialects/functions.hpp"
@@ -42,6 +43,39 @@ private:
     int set_ = 0;
     int last_ijk_ = -1;
 };
+
+// DPRNT[...] output ([FANUC] "External output commands"): characters are printed as written, `*`
+// prints a space, blanks are not printed, and `#n[ab]` prints variable n with a integer digits and
+// b decimals (`#n` without a format: the value as is). A vacant variable prints as 0.
+std::string format_print(std::string_view text, const macro::Variables& variables) {
+    std::string out;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        const char c = text[i];
+        if (c != '#') {
+            if (c == '*') out += ' ';
+            else if (c != ' ' && c != '\t') out += c;
+            ++i;
+            continue;
+        }
+        std::size_t j = i + 1;
+        int number = 0;
+        while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) number = number * 10 + (text[j++] - '0');
+        int decimals = -1;
+        if (j + 1 < text.size() && text[j] == '[') {
+            const std::size_t close = text.find(']', j);
+            if (close != std::string_view::npos && close > j + 1) {
+                decimals = text[close - 1] - '0';
+                j = close + 1;
+            }
+        }
+        const auto value = variables.read(number);
+        const double v = value ? value->or_zero() : 0.0;
+        out += decimals >= 0 ? fmt::format("{:.{}f}", v, decimals) : fmt::format("{}", v);
+        i = j;
+    }
+    return out;
+}
 
 }  // namespace
 
@@ -148,7 +182,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
         case ast::StatementKind::dprnt:
         case ast::StatementKind::bprnt: {
             Event e = event_at(EventKind::message, frame, view);
-            e.text = std::string(tree.slice(s.text));
+            e.text = format_print(tree.slice(s.text), variables_);
             emit(e);
             return true;
         }

@@ -11,6 +11,9 @@ namespace kerf::interpreter {
 
 // One JSON object per event: kind, file, line, end (axis letter → number, work coordinates, lathe X
 // as diameter), and per kind: start, center, radius, length_mm, time_s, feed, tool, code, text.
+// Appends the event as one line of JSON text (no newline) to `line`: the fast path of --trace.
+void append_event_json(std::string& line, const Event& e, const ProgramSet& programs, std::string_view axes);
+// The same as a JSON object (parsed from that text, so both always agree).
 boost::json::object event_to_json(const Event& e, const ProgramSet& programs, std::string_view axes);
 boost::json::object summary_to_json(const RunResult& r, std::string_view axes);
 
