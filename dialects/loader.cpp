@@ -188,7 +188,11 @@ LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, s
         else r.error(t.get("decimal_comma"), fmt::format("lexical.decimal_comma: unknown value '{}'", s));
     }
     rules.calculator_decimal = r.boolean(t, "calculator_decimal", where, rules.calculator_decimal);
-    if (t.contains("tool_word")) rules.tool_word = r.string(t, "tool_word", where, false);
+    if (t.contains("tool_word")) {
+        rules.tool_word = r.string(t, "tool_word", where, false);
+        if (rules.tool_word != "mmnn" && rules.tool_word != "number")
+            r.error(t.get("tool_word"), fmt::format("lexical.tool_word: unknown value '{}' (mmnn or number)", rules.tool_word));
+    }
     rules.macro_b = r.boolean(t, "macro_b", where, rules.macro_b);
     if (const toml::node* n = t.get("max_m_per_block")) {
         if (const auto v = n->value<std::int64_t>(); v && *v >= 1 && *v <= 9)

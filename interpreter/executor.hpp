@@ -89,6 +89,7 @@ private:
     struct Frame {
         ProgramRef program;
         std::uint32_t block = 0;          // next block to execute (index into the file's blocks)
+        std::uint32_t start_block = 0;    // where a repeat starts again (M98 Q: the label)
         std::int64_t repeats_left = 1;    // M98 repeats still to run, this one included
         bool macro = false;               // G65/G66 call: has its own local variables
         bool modal_macro = false;         // called by G66: its moves do not call again
@@ -152,6 +153,7 @@ private:
     bool evaluate_words(const ast::BlockView& view, BlockWords& out);
     void remember_words(const ast::BlockView& view, const BlockWords& words);
     void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);
+    void apply_tool_word(const ast::BlockView& view, int value);
     void apply_modal_codes(const ast::BlockView& view);
     void update_flags();
     bool apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words);
@@ -162,6 +164,7 @@ private:
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    void call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     void emit_state(const Frame& frame, const ast::BlockView& view);
 
     // Helpers.

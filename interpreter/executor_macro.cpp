@@ -256,7 +256,7 @@ bool Executor::push_macro_frame(const Frame& frame, const ast::BlockView& view, 
     emit(e);
     Frame sub;
     sub.program = *target;
-    sub.block = program_of(sub).first_block;
+    sub.block = sub.start_block = program_of(sub).first_block;
     sub.repeats_left = repeats;
     sub.macro = true;
     sub.modal_macro = modal;

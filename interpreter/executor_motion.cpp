@@ -182,6 +182,47 @@ std::optional<std::uint32_t> Executor::find_label(const Frame& f, double n) cons
     return std::nullopt;
 }
 
+// M98 P (both forms, dialects.md §3.6) and [FANUC] M98 Q: Q is the sequence number where the
+// called program starts; without P it is a label of the program being run (a local subroutine
+// that ends with M99).
+void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
+    const auto call = view.subprogram_call();
+    const auto* q = words.get('Q');
+    if (!call && !q) {
+        alarm(frame, view, 0, "M98 without a program number P or a sequence number Q");
+        return;
+    }
+    std::optional<ProgramRef> target = frame.program;
+    if (call) target = programs_.find_or_load(call->program, frame.program.file);
+    if (!target) {
+        alarm(frame, view, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
+        return;
+    }
+    if (static_cast<int>(frames_.size()) > setup_.max_call_depth) {
+        alarm(frame, view, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
+        return;
+    }
+    Frame sub;
+    sub.program = *target;
+    sub.block = program_of(sub).first_block;
+    if (q) {
+        const auto label = find_label(sub, q->value);
+        if (!label) {
+            alarm(frame, view, 78, fmt::format("M98 Q{}: no sequence number N{} in the called program (alarm 078)", q->value, q->value));
+            return;
+        }
+        sub.block = *label;
+    }
+    sub.start_block = sub.block;
+    const auto* l = words.get('L');
+    sub.repeats_left = call ? call->repeats : (l ? std::max<std::int64_t>(1, std::lround(l->value)) : 1);
+    Event e = event_at(EventKind::call, frame, view);
+    e.code = call ? static_cast<int>(call->program) : 0;
+    e.text = q ? fmt::format("M98 Q{}", q->value) : "M98";
+    emit(e);
+    frames_.push_back(sub);
+}
+
 void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
     for (const ast::CodeRef& c : view.m_codes()) {
         if (!c.info) continue;
@@ -214,28 +255,7 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             frames_.clear();
             return;
         } else if (f == fn::subprogram_call) {
-            const auto call = view.subprogram_call();
-            if (!call) {
-                alarm(frame, view, 0, "M98 without a program number P");
-                return;
-            }
-            const auto target = programs_.find_or_load(call->program, frame.program.file);
-            if (!target) {
-                alarm(frame, view, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
-                return;
-            }
-            if (static_cast<int>(frames_.size()) > setup_.max_call_depth) {
-                alarm(frame, view, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
-                return;
-            }
-            e.kind = EventKind::call;
-            e.code = static_cast<int>(call->program);
-            emit(e);
-            Frame sub;
-            sub.program = *target;
-            sub.block = program_of(sub).first_block;
-            sub.repeats_left = call->repeats;
-            frames_.push_back(sub);
+            call_subprogram(frame, view, words);
             return;
         } else if (f == fn::subprogram_return) {
             e.kind = EventKind::return_;
@@ -247,7 +267,7 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
                 return;
             }
             if (--frame.repeats_left > 0) {
-                frame.block = program_of(frame).first_block;
+                frame.block = frame.start_block;
                 return;
             }
             pop_frame();

@@ -70,25 +70,28 @@ void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWord
             spindle_rpm_ = s->value;
         }
     }
-    if (const auto* t = words.get('T')) {
-        // Tmmnn on lathes (dialects.md §3.5): mm = station, nn = offset; T0 / Tmm00 cancel the offset.
-        const int value = static_cast<int>(std::lround(t->value));
-        const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
-        const int station = lathe ? value / 100 : value;
-        // The offset applies at once: the machine position moves, the work position does not.
-        tool_offset_ = lathe ? value % 100 : tool_offset_;
-        if (lathe && station != 0 && station != tool_) {
-            Event e = event_at(EventKind::tool_change, *frame_, view);
-            e.tool = station;
-            e.code = tool_offset_;
-            tool_ = station;
-            if (std::find(result_.tools.begin(), result_.tools.end(), station) == result_.tools.end())
-                result_.tools.push_back(station);
-            emit(e);
-        } else if (!lathe) {
-            pending_tool_ = station;   // a mill changes tools on M06
-        }
+    if (const auto* t = words.get('T')) apply_tool_word(view, static_cast<int>(std::lround(t->value)));
+}
+
+// T per the dialect's tool word (dialects.md §3.5): `mmnn` = tool mm, offset nn (`T0` / `Tmm00`
+// cancel the offset; the offset applies at once, moving the machine position, not the work
+// position); `number` = a tool number. A turret (lathe) indexes at the T word, a mill's magazine
+// changes on M06.
+void Executor::apply_tool_word(const ast::BlockView& view, int value) {
+    const bool split = dialect_.lexical.tool_word == "mmnn";
+    const int tool = split ? value / 100 : value;
+    if (split) tool_offset_ = value % 100;
+    if (dialect_.machine != dialects::MachineKind::lathe) {
+        pending_tool_ = tool;
+        return;
     }
+    if (tool == 0 || tool == tool_) return;
+    Event e = event_at(EventKind::tool_change, *frame_, view);
+    e.tool = tool;
+    e.code = tool_offset_;
+    tool_ = tool;
+    if (std::find(result_.tools.begin(), result_.tools.end(), tool) == result_.tools.end()) result_.tools.push_back(tool);
+    emit(e);
 }
 
 void Executor::apply_modal_codes(const ast::BlockView& view) {
