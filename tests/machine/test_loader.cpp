@@ -146,8 +146,10 @@ TEST_CASE("the SPINNER TS-like lathe: axes, diameter X, IS-B, calculator input p
 TEST_CASE("built-in values read back: offsets, reference points, limits, cycle parameters", "[machine][builtin]") {
     const Machine* lathe = builtin_machines().find("fanuc-lathe");
     REQUIRE(lathe);
-    CHECK(lathe->axis('X')->min.value() == Approx(-10));
-    CHECK(lathe->axis('X')->max.value() == Approx(320));
+    // Built-in machines state no soft limits: kerf cannot know the travels (machine files set them;
+    // the loader reads min/max in the inheritance tests below).
+    CHECK_FALSE(lathe->axis('X')->min.has_value());
+    CHECK_FALSE(lathe->axis('X')->max.has_value());
     CHECK(lathe->axis('X')->rapid == Approx(24000));
     CHECK_FALSE(lathe->axis('C')->min.has_value());
     CHECK(axis_value(lathe->reference_points[0], 'X') == Approx(300));
