@@ -1,6 +1,7 @@
 // Golden tests of the typed AST (ast::to_text) on the reference examples.
 //
-// Every tests/golden/ast/<example>.expected holds, after a first line "# dialect: <id>", the exact
+// Every tests/golden/ast/<example>.expected holds, after a first line "# dialect: <id>" (the dialect
+// mapping of the examples, shared through tests/example_dialects.hpp), the exact
 // text tree that `kerf parse <example> --dialect <id>` prints on stdout. The example itself is read
 // from KERF_SHARED_DIR/reference/examples/<example>. Each golden was reviewed line by line against
 // the reference (tests/golden/ast/REVIEW.md says what was checked and which examples are left out
@@ -23,6 +24,7 @@
 #include "ast/typed.hpp"
 #include "dialects/dialect.hpp"
 #include "grammar/parse.hpp"
+#include "tests/example_dialects.hpp"
 
 namespace fs = std::filesystem;
 
@@ -116,15 +118,12 @@ struct Golden {
 bool read_golden(const fs::path& path, Golden& golden, std::string& error) {
     const std::string all = read_text(path);
     const std::size_t eol = all.find('\n');
-    const std::string first = all.substr(0, eol);
-    const std::string prefix = "# dialect: ";
-    if (eol == std::string::npos || first.rfind(prefix, 0) != 0) {
+    const auto dialect = eol == std::string::npos ? std::nullopt : kerf::tests::parse_dialect_line(all.substr(0, eol));
+    if (!dialect) {
         error = "the first line must be '# dialect: <id>'";
         return false;
     }
-    golden.dialect = first.substr(prefix.size());
-    while (!golden.dialect.empty() && (golden.dialect.back() == ' ' || golden.dialect.back() == '\r'))
-        golden.dialect.pop_back();
+    golden.dialect = *dialect;
     golden.text = all.substr(eol + 1);
     return true;
 }
