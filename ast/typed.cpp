@@ -86,7 +86,13 @@ BlockFacts bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t 
         facts.calls |= (info->binder_traits & Info::kCallsSubprogram) != 0;
         if (info->binder_traits & Info::kMotionGroup) context.linear = (info->binder_traits & Info::kLinear) != 0;
     }
-    if (traits & Info::kTakesArguments) data_letters = ~std::uint32_t{0};   // G65/G66: all arguments
+    if (traits & Info::kTakesArguments) {
+        // G65/G66: every other word is an argument, M too (`M13` → #13, dialects.md §3.7).
+        data_letters = ~std::uint32_t{0};
+        facts.calls = false;
+        for (std::uint32_t i = first; i < end; ++i)
+            if (Token& t = tree.tokens[i]; t.kind == TokenKind::word && t.letter == 'M') t.set_role(Role::parameter);
+    }
     const bool direct_drawing = d.lexical.plain_direct_drawing && context.linear && !(traits & Info::kOneShot);
     bool seen_n = false;
     for (std::uint32_t i = first; i < end; ++i) {

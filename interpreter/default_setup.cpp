@@ -32,6 +32,7 @@ void set_axes(Setup& s, const machine::Machine& m) {
         s.axis_order += axis.letter;
         s.rapid_mm_min[i] = axis.rapid;
         s.accel_mm_s2[i] = axis.acceleration;
+        s.rotary[i] = axis.rotary;
         s.soft_limits[i] = {axis.min, axis.max};
     }
 }
@@ -52,12 +53,16 @@ Setup make_setup(const machine::Machine& m) {
     s.rapid_dogleg = sw.rapid == machine::RapidMode::dog_leg;
     s.dwell_p_in_seconds = sw.dwell_p_unit == machine::DwellUnit::s;
     s.g52_current_point = sw.g52 != machine::G52Semantics::vector_shift;
+    s.g52_zeros_cancel = sw.g52 != machine::G52Semantics::current_point_g152;
+    s.g54_cancels_g52 = sw.g52 == machine::G52Semantics::current_point_g152;
     s.g28_point_in_machine = sw.g28_intermediate == machine::PointFrame::machine;
     s.g30_default_p = sw.g30_default_p;
     s.g68_positive_cw = sw.g68_positive == machine::RotationSign::cw;
     s.arc_tolerance = sw.arc_tolerance;
     s.arc_negative_r = sw.arc_negative_r == machine::ArcLargeR::negative_r;
     s.arc_enlarge_small_r = sw.arc_radius_mismatch == machine::ArcMismatch::enlarge;
+    s.atan_minus_180 = sw.atan_range == machine::AtanRange::minus_180_to_180;
+    s.dwell_f_seconds = sw.dwell_f_word == machine::DwellF::seconds;
     s.tool_offset_count = m.tool_offset_count;
     for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);
     s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <algorithm>
 #include <cmath>
 
 #include "dialects/functions.hpp"
@@ -60,6 +61,7 @@ void Executor::update_flags() {
         if (!code) continue;
         const std::string& fn_id = code->function;
         if (code->binder_traits & dialects::CodeInfo::kMotionGroup) f.motion = fn_id;
+        if (code->modal && is_cycle(*code)) f.modal_cycle = code;
         else if (fn_id == fn::incremental_programming) f.incremental = true;
         else if (fn_id == fn::feed_per_revolution) f.per_revolution = true;
         else if (fn_id == fn::css_on) f.css = true;
@@ -198,7 +200,7 @@ void Executor::execute_block(Frame& frame) {
     if (const auto call = view.macro_call(); call && call->modal) {
         // G66 P L args: remembers the call; its words are arguments, not moves (dialects.md §3.7).
         if (const auto arguments = macro_arguments(frame, view, *call)) {
-            if (!call->program) alarm(frame, view, 0, "G66 without a program number P");
+            if (!call->program) alarm(frame, view, 76, "G66 without a program number P (alarm 076)");
             else modal_call_ = ModalCall{*call->program, call->repeats, *arguments};
         }
         return;

@@ -22,6 +22,7 @@ struct BlockWords {
     struct Word {
         double value = 0;
         bool has_point = false;
+        bool data = false;          // data of a code in the block (G04 X): not a move, not modal F/S/T
         std::uint32_t token = 0;
     };
     std::map<char, Word> words;   // the last word of each letter (the analyzer reports duplicates)
@@ -41,6 +42,7 @@ struct ModalFlags {
     bool css = false;                 // G96
     bool inch = false;                // G20 (C: G70)
     motion::Plane plane = motion::Plane::xy;
+    const dialects::CodeInfo* modal_cycle = nullptr;   // a modal canned cycle (G81.., lathe G83..)
 };
 
 // G68 coordinate rotation (semantics.md §2.9): programmed points are turned about `center` by
@@ -127,6 +129,7 @@ private:
     std::optional<ModalCall> modal_call_;
     bool soft_limits_on_ = true;     // G22 / G23
     double feed_ = 0;
+    double thread_lead_ = 0;         // lead of the thread being cut (F or E)
     double spindle_rpm_ = 0;         // programmed S under G97
     double css_ = 0;                 // G96 S, m/min
     double max_rpm_ = 0;             // G50/G92 S clamp
@@ -151,6 +154,8 @@ private:
                           const std::vector<std::pair<int, macro::Value>>& arguments, bool modal);
     std::optional<std::uint32_t> find_end(const Frame& frame, std::uint32_t from, int label) const;
     bool evaluate_words(const ast::BlockView& view, BlockWords& out);
+    std::uint32_t data_letters(const ast::BlockView& view) const;
+    macro::Options macro_options(bool address) const;
     void remember_words(const ast::BlockView& view, const BlockWords& words);
     void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);
     void apply_tool_word(const ast::BlockView& view, int value);
@@ -161,6 +166,9 @@ private:
     void apply_data_input(const ast::BlockView& view, const BlockWords& words);
     void apply_rotation(const ast::BlockView& view, const BlockWords& words, bool cw);
     bool apply_motion(const ast::BlockView& view, const BlockWords& words);
+    static bool is_cycle(const dialects::CodeInfo& code);
+    bool apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words);
+    void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);

@@ -97,7 +97,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
         return false;
     };
     auto condition = [&]() -> std::optional<bool> {
-        const macro::ConditionResult c = macro::evaluate_condition(tree, s.value, variables_);
+        const macro::ConditionResult c = macro::evaluate_condition(tree, s.value, variables_, macro_options(false));
         if (c.error) {
             fail(*c.error);
             return std::nullopt;
@@ -105,7 +105,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
         return c.value;
     };
     auto label_value = [&]() -> std::optional<double> {
-        const macro::Result r = macro::evaluate(tree, s.label, variables_);
+        const macro::Result r = macro::evaluate(tree, s.label, variables_, macro_options(false));
         if (r.error) {
             fail(*r.error);
             return std::nullopt;
@@ -114,7 +114,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
     };
     switch (s.kind) {
         case ast::StatementKind::assign:
-            if (const auto e = macro::assign(tree, s, variables_)) return fail(*e);
+            if (const auto e = macro::assign(tree, s, variables_, macro_options(false))) return fail(*e);
             return true;
         case ast::StatementKind::if_then: {
             const auto c = condition();
@@ -144,6 +144,10 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
         case ast::StatementKind::do_: {
             const auto m = label_value();
             if (!m) return false;
+            if (*m < 1 || *m > 3) {
+                alarm(frame, view, 126, fmt::format("DO {}: the loop number must be 1, 2 or 3 (alarm 126)", *m));
+                return false;
+            }
             const bool enter = s.kind == ast::StatementKind::do_ ? true : [&] {
                 const auto c = condition();
                 return c.value_or(false);
@@ -155,7 +159,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
                         alarm(frame, view, 124, "WHILE/DO nested deeper than 3 (alarm 124)");
                         return false;
                     }
-                    frame.loops.push_back({view.index(), static_cast<int>(*m)});
+                    frame.loops.push_back({static_cast<std::uint32_t>(view.index()), static_cast<int>(*m)});
                 }
                 return true;
             }
@@ -219,14 +223,18 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
         if (!number) continue;
         macro::Value v = macro::Value::vacant_value();
         if (t.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(file.tree, t.payload, variables_);
+            const macro::Result r = macro::evaluate(file.tree, t.payload, variables_, macro_options(true));
             if (r.error) {
                 alarm(frame, view, r.error->alarm, r.error->message);
                 return std::nullopt;
             }
             v = r.value;
         } else if (t.is_number()) {
-            v = macro::Value::of(file.tree.number_value(t));
+            // Without a decimal point an argument counts least input increments unless the
+            // machine has calculator-type input ([FANUC]: G65 X10 gives #24 = 0.010 on IS-B).
+            const double n = file.tree.number_value(t);
+            const bool increments = !t.has(ast::token_flags::has_point) && !setup_.calculator_decimal;
+            v = increments ? macro::Value::of_increments(n * setup_.increment_mm) : macro::Value::of(n);
         }
         arguments.emplace_back(number, v);
     }
@@ -238,7 +246,7 @@ bool Executor::push_macro_frame(const Frame& frame, const ast::BlockView& view, 
                                 bool modal) {
     const auto target = programs_.find_or_load(program, frame.program.file);
     if (!target) {
-        alarm(frame, view, 76, fmt::format("G6{}: program O{:04} not found (alarm 076)", modal ? 6 : 5, program));
+        alarm(frame, view, 78, fmt::format("G6{}: program O{:04} not found (alarm 078)", modal ? 6 : 5, program));
         return false;
     }
     int macros = 0;
@@ -268,7 +276,7 @@ bool Executor::push_macro_frame(const Frame& frame, const ast::BlockView& view, 
 bool Executor::start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call) {
     if (call.modal) return false;   // G66: execute_block remembers it
     if (!call.program) {
-        alarm(frame, view, 0, "G65 without a program number P");
+        alarm(frame, view, 76, "G65 without a program number P (alarm 076)");
         return true;
     }
     const auto arguments = macro_arguments(frame, view, call);

@@ -15,14 +15,20 @@ namespace fn = dialects::functions;
 
 namespace {
 
-// Geometric length: lathe X is a diameter, the path runs at the radius.
-double distance(const Position& a, const Position& b, bool diameter_x) {
-    double sum = 0;
-    for (std::size_t i = 0; i < 3; ++i) {   // rotary axes add time, not length
-        const double d = (b[i] - a[i]) * (i == 0 && diameter_x ? 0.5 : 1.0);
-        sum += d * d;
+// Path length of the linear axes (lathe X is a diameter: the path runs at the radius; a linear B
+// slide counts) and the travel of the rotary axes in degrees.
+struct Travel {
+    double linear = 0;
+    double rotary = 0;
+};
+
+Travel travel_of(const Position& a, const Position& b, const Setup& setup) {
+    double linear = 0, rotary = 0;
+    for (std::size_t i = 0; i < kAxisCount; ++i) {
+        const double d = (b[i] - a[i]) * (i == 0 && setup.diameter_x ? 0.5 : 1.0);
+        (setup.rotary[i] ? rotary : linear) += d * d;
     }
-    return std::sqrt(sum);
+    return {std::sqrt(linear), std::sqrt(rotary)};
 }
 
 }  // namespace
@@ -38,7 +44,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
     moves = false;
     for (const auto& [letter, w] : words.words) {
         const auto axis = axis_of_letter(letter);
-        if (!axis || !dialect_.lexical.is_axis(letter)) continue;
+        if (!axis || !dialect_.lexical.is_axis(letter) || w.data) continue;
         const std::size_t a = static_cast<std::size_t>(*axis);
         const double v = axis_value(w, letter);
         to[a] = flags_.incremental ? to[a] + v : v;
@@ -82,11 +88,11 @@ bool Executor::within_soft_limits(const Position& low, const Position& high, con
 void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const {
     // F under G99/G95 and every thread lead are per revolution (semantics.md §4, cycles.md §9).
     const bool per_rev = flags_.per_revolution || e.kind == EventKind::thread;
-    e.feed = feed_;
+    e.feed = e.kind == EventKind::thread ? thread_lead_ : feed_;
     e.feed_per_rev = per_rev;
     e.spindle_rpm = current_rpm(e.end[0]);
     e.spindle_running = spindle_on_;
-    const double feed_mm = feed_ * unit_scale();
+    const double feed_mm = e.feed * unit_scale();
     double seconds = 0;
     if (per_rev && flags_.css && e.kind != EventKind::thread) {
         // G96: the rpm follows the diameter along the move (motion/time.hpp css_feed_time).
@@ -115,7 +121,8 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
     e.start = position_;
     e.end = to;
     if (!within_soft_limits(to, to, f, view)) return;
-    e.length_mm = distance(position_, to, setup_.diameter_x) * unit_scale();
+    const Travel travel_total = travel_of(position_, to, setup_);
+    e.length_mm = travel_total.linear * unit_scale();
     std::array<motion::AxisLimits, kAxisCount> limits{};
     std::array<double, kAxisCount> travel{};
     for (std::size_t a = 0; a < kAxisCount; ++a) {
@@ -135,7 +142,10 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
         const motion::Vec3 delta{travel[0], travel[1], travel[2]};
         const motion::AxisLimits3 l3{limits[0], limits[1], limits[2]};
         const double accel = motion::path_accel(delta, l3);
-        time_feed_move(e, e.length_mm, std::isfinite(accel) ? accel : 0.0, nullptr);
+        // F applies to the composite of linear mm and rotary degrees ([FANUC] "feedrate of rotary
+        // axes"): a C-only move at F100 turns 100°/min.
+        const double timed = std::hypot(e.length_mm, travel_total.rotary);
+        time_feed_move(e, timed, std::isfinite(accel) ? accel : 0.0, nullptr);
         result_.feed_distance_mm += e.length_mm;
     }
     position_ = to;
@@ -146,16 +156,28 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     if (const auto reference = apply_reference_motion(view, words)) return *reference;
     bool moves = false;
     const Position to = target_position(words, moves);
-    if (!moves) return false;
-    const Frame& f = *frame_;
+    if (apply_cycle_placeholder(view, words, moves)) return false;
+    note_path_changers(view);
     const std::string_view motion = flags_.motion;
+    // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
+    const bool full_circle = (motion == fn::circular_cw || motion == fn::circular_ccw) &&
+                             (words.get('I') || words.get('J') || words.get('K'));
+    if (!moves && !full_circle) return false;
+    const Frame& f = *frame_;
     if (motion == fn::rapid) move(EventKind::rapid, to, f, view);
     else if (motion == fn::linear) move(EventKind::linear, to, f, view);
     else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, words, view);
-    else if (motion == fn::thread_cutting) move(EventKind::thread, to, f, view);
+    else if (motion == fn::thread_cutting) {
+        // The lead is F, or E where the block has one (cycles.md §9: seed 003 "E = lead in mm",
+        // ADV400 "pitch E").
+        const auto* e = words.get('E');
+        thread_lead_ = e ? axis_value(*e, 'E') : feed_;
+        move(EventKind::thread, to, f, view);
+    }
     else {
         Event e = event_at(EventKind::message, f, view);
-        e.text = fmt::format("motion of '{}' is not expanded yet (cycles: next issue); position kept", motion);
+        e.text = motion.empty() ? std::string("axis words without a motion code (no G00/G01/G02/G03 active): no motion")
+                                : fmt::format("motion '{}' is not expanded yet (next issue): no motion", motion);
         emit(e);
         return false;
     }
@@ -164,13 +186,16 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
 
 void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) {
     if (!has_function(view, fn::dwell)) return;
-    // X and U in seconds, P in milliseconds (ADV400: P in seconds) — semantics.md §8.2.
+    // X and U in seconds, P in milliseconds (ADV400: P in seconds); `G4 F1` seconds with the
+    // machine's dwell_f_word switch (semantics.md §8.2, §12.15).
     double seconds = 0;
+    const auto* u = words.incremental.count('X') ? &words.incremental.at('X') : words.get('U');
     if (const auto* x = words.get('X')) seconds = x->value;
-    else if (const auto* u = words.incremental.count('X') ? &words.incremental.at('X') : words.get('U')) seconds = u->value;
+    else if (u) seconds = u->value;
     else if (const auto* p = words.get('P')) seconds = setup_.dwell_p_in_seconds ? p->value : p->value / 1000.0;
+    else if (const auto* f = words.get('F'); f && setup_.dwell_f_seconds) seconds = f->value;
     Event e = event_at(EventKind::dwell, *frame_, view);
-    e.time_s = seconds;
+    e.time_s = std::max(0.0, seconds);
     emit(e);
 }
 
@@ -189,7 +214,7 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
     const auto call = view.subprogram_call();
     const auto* q = words.get('Q');
     if (!call && !q) {
-        alarm(frame, view, 0, "M98 without a program number P or a sequence number Q");
+        alarm(frame, view, 76, "M98 without a program number P or a sequence number Q (alarm 076)");
         return;
     }
     std::optional<ProgramRef> target = frame.program;
@@ -262,8 +287,13 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             emit(e);
             const auto* p = words.get('P');
             if (frames_.size() == 1) {
-                // M99 in a main program: back to its start, forever (the step limit bounds it).
+                // M99 in a main program: back to its start, or to N p, forever (the step limit
+                // bounds it; dialects.md §3.6).
                 frame.block = program_of(frame).first_block;
+                if (p) {
+                    if (const auto label = find_label(frame, p->value)) frame.block = *label;
+                    else alarm(frame, view, 78, fmt::format("M99 P{}: no N{} in this program (alarm 078)", p->value, p->value));
+                }
                 return;
             }
             if (--frame.repeats_left > 0) {
@@ -275,7 +305,7 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
                 // M99 P n: back to sequence number n of the caller (dialects.md §3.6).
                 Frame& caller = frames_.back();
                 if (const auto label = find_label(caller, p->value)) caller.block = *label;
-                else alarm(caller, view, 0, fmt::format("M99 P{}: no N{} in the calling program", p->value, p->value));
+                else alarm(caller, view, 78, fmt::format("M99 P{}: no N{} in the calling program (alarm 078)", p->value, p->value));
             }
             return;
         }

@@ -41,7 +41,9 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
                 const std::size_t a = static_cast<std::size_t>(*axis);
                 target[a] = (axis_value(w, letter) - offset[a]) / (a < 3 ? unit_scale() : 1.0);
             }
-        move(EventKind::rapid, target, f, view);
+        // pcnc-mill G53 follows the active G00/G01 and its feed (§2.2); FANUC G53 is a rapid.
+        const bool feed = has_function(view, fn::machine_coordinate_select_g0_g1) && flags_.motion == fn::linear;
+        move(feed ? EventKind::linear : EventKind::rapid, target, f, view);
         return !stopped_;
     }
     if (g29) {
@@ -60,8 +62,9 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
     if (g30) {
         const auto* p = words.get('P');
         point = p ? static_cast<int>(std::lround(p->value)) : setup_.g30_default_p;
-        if (point < 2 || point > 4) {
-            alarm(f, view, 46, fmt::format("G30 P{}: P must be 2, 3 or 4 (alarm 046)", point));
+        // P1 is the G28 point (pcnc-mill, dialects.md §8); P2..P4 the others.
+        if (point < 1 || point > 4) {
+            alarm(f, view, 46, fmt::format("G30 P{}: P must be 1 to 4 (alarm 046)", point));
             return false;
         }
     }

@@ -11,9 +11,32 @@ namespace kerf::interpreter {
 
 namespace fn = dialects::functions;
 
+macro::Options Executor::macro_options(bool address) const {
+    macro::Options o;
+    o.angle_range = setup_.atan_minus_180 ? macro::AngleRange::minus_180_to_180 : macro::AngleRange::zero_to_360;
+    // ROUND in an address rounds to the least input increment; ADP undoes the increment scaling
+    // of G65 arguments written without a point ([FANUC], macro/evaluate.hpp).
+    if (address) o.round_increment = setup_.increment_mm;
+    if (!setup_.calculator_decimal) o.adp_factor = 1.0 / setup_.increment_mm;
+    return o;
+}
+
+// Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words):
+// they do not move the tool and do not set the modal F, S or T (the code's parameter_words).
+std::uint32_t Executor::data_letters(const ast::BlockView& view) const {
+    std::uint32_t mask = 0;
+    for (const ast::CodeRef& c : view.g_codes())
+        if (c.info) mask |= c.info->parameter_mask;
+    for (const ast::CodeRef& c : view.m_codes())
+        if (c.info) mask |= c.info->parameter_mask;
+    return mask;
+}
+
 bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
     const LoadedFile& file = file_of(*frame_);
     const dialects::LexicalRules& rules = dialect_.lexical;
+    const std::uint32_t data = data_letters(view);
+    const macro::Options options = macro_options(true);
     const auto tokens = view.tokens();
     for (std::uint32_t i = 0; i < tokens.size(); ++i) {
         const ast::Token& t = tokens[i];
@@ -24,8 +47,10 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
         BlockWords::Word w;
         w.token = view.first_token() + i;
         w.has_point = t.has(ast::token_flags::has_point);
+        const bool letter = t.letter >= 'A' && t.letter <= 'Z';
+        w.data = (letter && (data >> (t.letter - 'A')) & 1u) || (t.role() == ast::Role::parameter && rules.is_axis(t.letter));
         if (t.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(file.tree, t.payload, variables_);
+            const macro::Result r = macro::evaluate(file.tree, t.payload, variables_, options);
             if (r.error) {
                 alarm(*frame_, view, r.error->alarm, r.error->message);
                 return false;
@@ -36,7 +61,7 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
         } else {
             w.value = file.tree.number_value(t);
         }
-        if (t.role() == ast::Role::axis_incremental) out.incremental[rules.incremental_axis_of(t.letter)] = w;
+        if (t.role() == ast::Role::axis_incremental && !w.data) out.incremental[rules.incremental_axis_of(t.letter)] = w;
         else out.words[t.letter] = w;
     }
     return true;
@@ -60,8 +85,8 @@ double Executor::current_rpm(double x_diameter) const {
 }
 
 void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words) {
-    if (const auto* f = words.get('F')) feed_ = f->value;
-    if (const auto* s = words.get('S')) {
+    if (const auto* f = words.get('F'); f && !f->data) feed_ = f->value;
+    if (const auto* s = words.get('S'); s && !s->data) {
         if (has_function(view, fn::coordinate_system_setting)) {
             max_rpm_ = s->value;   // G50 S / G92 S: the clamp for G96 (semantics.md §4.1)
         } else if (has_function(view, fn::css_on) || (flags_.css && !has_function(view, fn::css_off))) {
@@ -70,7 +95,7 @@ void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWord
             spindle_rpm_ = s->value;
         }
     }
-    if (const auto* t = words.get('T')) apply_tool_word(view, static_cast<int>(std::lround(t->value)));
+    if (const auto* t = words.get('T'); t && !t->data) apply_tool_word(view, static_cast<int>(std::lround(t->value)));
 }
 
 // T per the dialect's tool word (dialects.md §3.5): `mmnn` = tool mm, offset nn (`T0` / `Tmm00`
@@ -145,7 +170,7 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             if (n >= 0 && n < 6) {
                 change_offsets([&] {
                     work_system_ = n;
-                    if (setup_.g52_current_point) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)
+                    if (setup_.g54_cancels_g52) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)
                 });
             }
         } else if (f == fn::programmable_data_input) {
@@ -161,7 +186,9 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
         } else if (f == fn::stroke_check_on || f == fn::stroke_check_off) {
             soft_limits_on_ = f == fn::stroke_check_on;
         } else if (f == fn::coordinate_system_setting && (words.get('X') || words.get('Z') || words.get('Y'))) {
-            // G50/G92 X Z: the current point gets the programmed values (semantics.md §2.5).
+            // G50/G92 X Z: the current point gets the programmed values (semantics.md §2.5); on
+            // FANUC it also cancels G52 (§2.4).
+            if (!setup_.g52_current_point) change_offsets([&] { local_shift_ = {}; });
             for (const auto& [letter, w] : words.words) {
                 const auto axis = axis_of_letter(letter);
                 if (!axis) continue;
@@ -177,8 +204,16 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
         } else if (f == fn::local_system_cancel) {
             change_offsets([&] { local_shift_ = {}; });   // G152 (pcnc-mill)
         } else if (f == fn::cancel_coordinate_setting) {
-            for (std::size_t a = 0; a < kAxisCount; ++a) position_[a] += setting_shift_[a];
-            setting_shift_ = {};
+            // G50.3 / G92.1: the named axes (all when none is named) lose the G50/G92 correction;
+            // no motion in the block ([FANUC] workpiece coordinate system preset).
+            bool named = false;
+            for (std::size_t a = 0; a < kAxisCount; ++a) named = named || words.get(kAxisLetters[a]);
+            for (std::size_t a = 0; a < kAxisCount; ++a) {
+                if (named && !words.get(kAxisLetters[a])) continue;
+                position_[a] += setting_shift_[a];
+                setting_shift_[a] = 0;
+            }
+            return false;
         }
     }
     return true;
@@ -193,7 +228,7 @@ void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& 
     for (const auto& [letter, w] : words.words)
         if (axis_of_letter(letter) && dialect_.lexical.is_axis(letter) && w.value != 0) all_zero = false;
     change_offsets([&] {
-        if (current_point && all_zero) {
+        if (current_point && all_zero && setup_.g52_zeros_cancel) {
             local_shift_ = {};
             return;
         }

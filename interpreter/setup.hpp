@@ -39,18 +39,23 @@ struct Setup {
     Position work_shift{};             // G10 P0 register at power-on (semantics.md §2.6)
     std::array<Position, 4> reference_points{};   // G28 (1), G30 P2..P4
     Position rapid_mm_min{};           // per axis; 0 = axis absent
-    Position accel_mm_s2{};            // per axis; 0 = acceleration not modelled (motion/time.hpp)
+    Position accel_mm_s2{};
+    std::array<bool, kAxisCount> rotary{false, false, false, true, true, true};   // degrees, not mm: no path length, F in deg/min            // per axis; 0 = acceleration not modelled (motion/time.hpp)
     std::array<SoftLimit, kAxisCount> soft_limits{};   // stored stroke check 1 (alarm 500/501)
     double max_rpm = 0;                // 0 = no limit
     bool rapid_dogleg = true;          // G00 axes move independently (gcode-tables.md §5)
     bool dwell_p_in_seconds = false;   // ADV400: G04 P in seconds (semantics.md §8.2)
     bool g52_current_point = false;    // pcnc/ADV400: G52 makes the current point take the values
+    bool g52_zeros_cancel = true;      // current-point G52 with all zeros cancels (ADV400; pcnc: only G152)
+    bool g54_cancels_g52 = false;      // pcnc: selecting G54–G59 cancels G52 (semantics.md §2.4)
     bool g28_point_in_machine = false; // G28/G30 intermediate point in machine coordinates (semantics.md §2.8)
     int g30_default_p = 2;             // G30 without P (semantics.md §2.8)
     bool g68_positive_cw = false;      // ADV400: positive G68 R turns clockwise (semantics.md §2.9, §12.4)
     double arc_tolerance = 0.01;       // mm, end-point radius mismatch allowed (semantics.md §3)
     bool arc_negative_r = true;        // R < 0 = arc over 180° (semantics.md §3, §12.5)
     bool arc_enlarge_small_r = false;  // a too small R becomes chord/2 instead of alarm 020
+    bool atan_minus_180 = false;       // Macro B ATAN result in -180..180 instead of 0..360 ([FANUC] NAT)
+    bool dwell_f_seconds = true;       // `G4 F1` dwells F seconds (semantics.md §8.2, §12.15); false: ignored
     int tool_offset_count = 64;        // offset numbers 1..count exist
     std::map<int, ToolOffset> tools;   // by offset number
     std::uint64_t step_limit = 10'000'000;

@@ -579,8 +579,9 @@ Value Evaluator::function_of(const Expr& e, Value va, Value vb) {
             return checked(e, std::pow(x, y));
         }
         case Function::adp:
-            // [M-30i] "ADP: add a decimal point": see Options::adp_factor.
-            return checked(e, x * options_.adp_factor);
+            // [M-30i] "ADP: add a decimal point": an argument passed without a point (in least
+            // increments) is scaled back by Options::adp_factor; any other value is returned as is.
+            return checked(e, va.increments ? x * options_.adp_factor : x);
     }
     return fail_value(e.range(), codes::bad_tree, 0, "unknown function");
 }

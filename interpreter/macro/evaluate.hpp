@@ -50,7 +50,8 @@ struct Options {
     // ROUND function is used in NC statement addresses ..."): the interpreter sets the increment
     // (e.g. 0.001) when it evaluates an address; 0 = macro statements: round to an integer.
     double round_increment = 0.0;
-    // ADP[x] = x * adp_factor. FANUC passes G65 arguments written without a decimal point in
+    // ADP[x] = x * adp_factor when x is an argument written without a point (Value::increments),
+    // else x. FANUC passes G65 arguments written without a decimal point in
     // least-input-increment units (X10 -> #24 = 0.010 on IS-B mm) and ADP gives back the value
     // "as if written with a point" (10.). Only the interpreter knows the increment; with the
     // default 1 ADP returns its argument unchanged.

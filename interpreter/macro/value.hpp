@@ -19,9 +19,13 @@ namespace kerf::interpreter::macro {
 struct Value {
     bool vacant = true;
     double number = 0.0;   // meaningless (kept 0) when vacant
+    // A G65/G66 argument written without a decimal point, stored in least input increments
+    // (X10 → 0.010): ADP gives it back as 10. Any operation makes a plain value again.
+    bool increments = false;
 
-    static constexpr Value vacant_value() { return Value{true, 0.0}; }
-    static constexpr Value of(double x) { return Value{false, x}; }
+    static constexpr Value vacant_value() { return Value{true, 0.0, false}; }
+    static constexpr Value of(double x) { return Value{false, x, false}; }
+    static constexpr Value of_increments(double x) { return Value{false, x, true}; }
 
     constexpr bool is_vacant() const { return vacant; }
     // The operand value under FANUC's arithmetic rule: vacant counts as 0.

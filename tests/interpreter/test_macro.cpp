@@ -641,14 +641,17 @@ TEST_CASE("BIN and BCD conversions") {
     CHECK(alarm("BCD[100000000]") == 119);
 }
 
-TEST_CASE("ADP: the value itself unless the interpreter gives the increment factor") {
+TEST_CASE("ADP: an argument passed without a point is scaled back; any other value is itself") {
     CHECK(number("ADP[10]") == 10);
     CHECK(number("ADP[1.5]") == 1.5);
     Options isb;
     isb.adp_factor = 1000;   // G65 X10 on IS-B metric: #24 = 0.010
     Variables vars;
-    vars.write(24, Value::of(0.010));
+    vars.write(24, Value::of_increments(0.010));
     CHECK(number("ADP[#24]", vars, isb) == Approx(10));
+    vars.write(25, Value::of(0.010));   // G65 Y0.01: written with a point, ADP keeps it
+    CHECK(number("ADP[#25]", vars, isb) == Approx(0.010));
+    CHECK(number("ADP[1.5]", vars, isb) == 1.5);
 }
 
 TEST_CASE("functions: wrong number of arguments is alarm 114") {

@@ -1,0 +1,90 @@
+// Codes whose motion the next issue expands (canned cycles, compensation, polar and cylindrical
+// interpolation, position offsets, direct drawing: reference/cycles.md, semantics.md §5–§10).
+// Until an expander exists for a code, the interpreter must not pretend: a cycle block does not
+// run its words as a plain move (the tool would cut through the part), it says so in a message
+// and keeps the tool where it is; G71–G73 skip their profile blocks as the control does and check
+// that P and Q exist (alarm 060); codes that change the path (G41/G42, G112, G45–G48, ,C ,R) let
+// the programmed path run and say that it is not the compensated one.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <iterator>
+
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace {
+
+bool ends_with(std::string_view s, std::string_view suffix) {
+    return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
+}
+
+// Function ids (docs/functions.md) whose path the trace does not model yet.
+constexpr std::string_view kPathChangers[] = {
+    "radius-comp-left", "radius-comp-right", "polar-interpolation-on", "cylindrical-interpolation",
+    "position-offset-increase", "position-offset-decrease", "position-offset-double-increase",
+    "position-offset-double-decrease", "corner-slowdown", "arc-approach", "arc-exit",
+    "tool-length-comp-plus", "tool-length-comp-minus", "polar-coordinate-command", "scaling", "mirror",
+};
+
+// G71/G72/G73 run the profile N P..N Q and go on after N Q (cycles.md §2–§4); G70 runs it and
+// goes on after its own block (§1).
+constexpr std::string_view kProfileCycles[] = {"rough-turning-cycle", "rough-facing-cycle", "pattern-repeating-cycle"};
+constexpr std::string_view kFinishingCycle = "finishing-cycle";
+
+}  // namespace
+
+bool Executor::is_cycle(const dialects::CodeInfo& code) { return ends_with(code.function, "-cycle"); }
+
+// True when the block belongs to a cycle (then it does not move here).
+bool Executor::apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words) {
+    const dialects::CodeInfo* cycle = nullptr;
+    for (const ast::CodeRef& c : view.g_codes())
+        if (c.info && is_cycle(*c.info)) cycle = c.info;
+    for (const ast::CodeRef& c : view.m_codes())
+        if (c.info && is_cycle(*c.info)) cycle = c.info;
+    if (!cycle && flags_.modal_cycle && has_axis_words) cycle = flags_.modal_cycle;   // G81 ... X Y: a new hole
+    if (!cycle) return false;
+    const auto* p = words.get('P');
+    const auto* q = words.get('Q');
+    const bool profile = std::find(std::begin(kProfileCycles), std::end(kProfileCycles), cycle->function) !=
+                         std::end(kProfileCycles);
+    if ((profile || cycle->function == kFinishingCycle) && p && q) {
+        const auto first = find_label(*frame_, p->value);
+        const auto last = find_label(*frame_, q->value);
+        if (!first || !last) {
+            const double missing = first ? q->value : p->value;
+            alarm(*frame_, view, 60, fmt::format("{} P{} Q{}: sequence number N{} not found in this program (alarm 060)",
+                                                 cycle->spelling, p->value, q->value, missing));
+            return true;
+        }
+        // The control goes on after the profile (G71–G73), which the cycle has used.
+        if (profile) current_frame()->block = *last + 1;
+    }
+    Event e = event_at(EventKind::message, *frame_, view);
+    e.text = fmt::format("{} ({}) is not expanded yet (cycles: next issue): the tool stays at its start point",
+                         cycle->spelling, cycle->function);
+    emit(e);
+    return true;
+}
+
+void Executor::note_path_changers(const ast::BlockView& view) {
+    for (const ast::CodeRef& c : view.g_codes()) {
+        if (!c.info) continue;
+        for (const std::string_view f : kPathChangers) {
+            if (c.info->function != f) continue;
+            Event e = event_at(EventKind::message, *frame_, view);
+            e.text = fmt::format("{} ({}) is not applied yet (next issue): the trace follows the programmed path",
+                                 c.info->spelling, c.info->function);
+            emit(e);
+        }
+    }
+    if (!view.comma_words().empty()) {
+        Event e = event_at(EventKind::message, *frame_, view);
+        e.text = "direct drawing (,A ,C ,R) is not expanded yet (next issue): the block runs to its programmed end point";
+        emit(e);
+    }
+}
+
+}  // namespace kerf::interpreter
