@@ -59,6 +59,7 @@ ProjectConfig find_config(const fs::path& start, std::vector<std::string>& error
     try {
         const toml::table t = toml::parse(*text, config.path->string());
         if (const auto d = t["dialect"].value<std::string>()) config.dialect = *d;
+        if (const auto m = t["machine"].value<std::string>()) config.machine_file = config.path->parent_path() / *m;
         if (const toml::array* files = t["dialect_files"].as_array()) {
             for (const toml::node& f : *files)
                 if (const auto s = f.value<std::string>()) config.dialect_files.push_back(config.path->parent_path() / *s);

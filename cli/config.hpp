@@ -14,6 +14,7 @@ struct ProjectConfig {
     std::optional<std::filesystem::path> path;   // the .kerf.toml found, if any
     std::string dialect;                         // "" or "auto": detect
     std::vector<std::filesystem::path> dialect_files;
+    std::optional<std::filesystem::path> machine_file;   // `machine = "..."`, relative to the .kerf.toml
 };
 
 // Walks up from `start` (a file or folder) to the first .kerf.toml. Errors go to `errors`.
