@@ -55,6 +55,7 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
 }
 
 void Executor::update_flags() {
+    const bool was_inch = flags_.inch;
     ModalFlags f;
     f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
     for (const auto& [group, code] : modal_) {
@@ -71,6 +72,14 @@ void Executor::update_flags() {
         else if (fn_id == fn::plane_yz) f.plane = motion::Plane::yz;
     }
     flags_ = f;
+    if (was_inch != flags_.inch) {
+        // G20/G21 switch: the same place in the other unit (positions are kept as programmed).
+        const double factor = flags_.inch ? 1.0 / 25.4 : 25.4;
+        for (std::size_t a = 0; a < 3; ++a) {
+            position_[a] *= factor;
+            if (intermediate_[a]) *intermediate_[a] *= factor;
+        }
+    }
 }
 
 bool Executor::modal_active(std::string_view function) const {
@@ -118,7 +127,7 @@ Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& v
 void Executor::emit(Event e) {
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
     const Position offset = machine_offset();
-    for (std::size_t a = 0; a < kAxisCount; ++a) e.machine_end[a] = e.end[a] + offset[a];
+    for (std::size_t a = 0; a < kAxisCount; ++a) e.machine_end[a] = e.end[a] * axis_scale(a) + offset[a];
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;
     if (e.time_s > 0) result_.time_per_tool_s[tool_] += e.time_s;
@@ -143,7 +152,7 @@ void Executor::change_offsets(const std::function<void()>& change) {
     const Position before = machine_offset();
     change();
     const Position after = machine_offset();
-    for (std::size_t a = 0; a < kAxisCount; ++a) position_[a] += before[a] - after[a];
+    for (std::size_t a = 0; a < kAxisCount; ++a) position_[a] += (before[a] - after[a]) / axis_scale(a);
 }
 
 // --- the loop ------------------------------------------------------------------------------------
@@ -153,6 +162,10 @@ RunResult Executor::run(ProgramRef main) {
     first.program = main;
     first.block = program_of(first).first_block;
     frames_.push_back(first);
+    // The machine has been homed: the program starts at reference point 1 (semantics.md §2.8).
+    const Position offset = machine_offset();
+    for (std::size_t a = 0; a < kAxisCount; ++a)
+        position_[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
     while (!frames_.empty() && !stopped_) {
         Frame& f = frames_.back();
         const ast::Program& p = program_of(f);

@@ -188,6 +188,7 @@ private:
     Position machine_offset() const;
     Position tool_offset() const;
     double unit_scale() const { return flags_.inch ? 25.4 : 1.0; }
+    double axis_scale(std::size_t a) const { return a < 3 ? unit_scale() : 1.0; }   // rotary: degrees
     double current_rpm(double x_diameter) const;
     // An event of this block at the current position (start = end), before its details are set.
     Event event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const;

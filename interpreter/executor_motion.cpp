@@ -70,7 +70,7 @@ bool Executor::within_soft_limits(const Position& low, const Position& high, con
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         const SoftLimit& limit = setup_.soft_limits[a];
-        const double scale = a < 3 ? unit_scale() : 1.0;
+        const double scale = axis_scale(a);
         const double machine_low = low[a] * scale + offset[a], machine_high = high[a] * scale + offset[a];
         const bool over = limit.max && machine_high > *limit.max + 1e-9;
         const bool under = limit.min && machine_low < *limit.min - 1e-9;
@@ -127,7 +127,7 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
     std::array<double, kAxisCount> travel{};
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         limits[a] = {setup_.rapid_mm_min[a], setup_.accel_mm_s2[a]};
-        const double scale = a < 3 ? unit_scale() : 1.0;
+        const double scale = axis_scale(a);
         travel[a] = std::fabs(to[a] - position_[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0) * scale;
     }
     if (kind == EventKind::rapid) {
@@ -160,8 +160,12 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     note_path_changers(view);
     const std::string_view motion = flags_.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
+    const auto centre_word = [&](char letter) {
+        const auto* w = words.get(letter);
+        return w && !w->data;
+    };
     const bool full_circle = (motion == fn::circular_cw || motion == fn::circular_ccw) &&
-                             (words.get('I') || words.get('J') || words.get('K'));
+                             (centre_word('I') || centre_word('J') || centre_word('K'));
     if (!moves && !full_circle) return false;
     const Frame& f = *frame_;
     if (motion == fn::rapid) move(EventKind::rapid, to, f, view);

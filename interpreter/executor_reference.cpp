@@ -39,7 +39,7 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
         for (const auto& [letter, w] : words.words)
             if (const auto axis = axis_of_letter(letter); axis && dialect_.lexical.is_axis(letter)) {
                 const std::size_t a = static_cast<std::size_t>(*axis);
-                target[a] = (axis_value(w, letter) - offset[a]) / (a < 3 ? unit_scale() : 1.0);
+                target[a] = (axis_value(w, letter) * axis_scale(a) - offset[a]) / axis_scale(a);
             }
         // pcnc-mill G53 follows the active G00/G01 and its feed (§2.2); FANUC G53 is a rapid.
         const bool feed = has_function(view, fn::machine_coordinate_select_g0_g1) && flags_.motion == fn::linear;
@@ -74,7 +74,7 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
     if (setup_.g28_point_in_machine) {
         const Position offset = machine_offset();
         for (std::size_t a = 0; a < kAxisCount; ++a)
-            if (const auto* w = words.get(kAxisLetters[a]); w && programmed(words, a)) via[a] = axis_value(*w, kAxisLetters[a]) - offset[a];
+            if (const auto* w = words.get(kAxisLetters[a]); w && programmed(words, a)) via[a] = (axis_value(*w, kAxisLetters[a]) * axis_scale(a) - offset[a]) / axis_scale(a);
     }
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a)) intermediate_[a] = via[a];
@@ -84,7 +84,7 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
     Position home = position_;
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a))
-            home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / (a < 3 ? unit_scale() : 1.0);
+            home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / axis_scale(a);
     move(EventKind::rapid, home, f, view);
     return !stopped_;
 }

@@ -137,7 +137,7 @@ std::optional<macro::Value> Executor::read_system(int number) {
     };
     if (const auto a = axis_at(kEndPoint)) return Value::of(position_[*a]);
     if (const auto a = axis_at(kWorkPosition)) return Value::of(position_[*a]);
-    if (const auto a = axis_at(kMachinePosition)) return Value::of(position_[*a] * (*a < 3 ? unit_scale() : 1.0) + machine_offset()[*a]);
+    if (const auto a = axis_at(kMachinePosition)) return Value::of(position_[*a] * axis_scale(*a) + machine_offset()[*a]);
     if (const auto a = axis_at(kSkipPosition)) return Value::of(0);
     if (const auto a = axis_at(kToolOffsetValue)) return Value::of(tool_offset()[*a]);
     if (const auto a = axis_at(kServoDeviation)) return Value::of(0);

@@ -38,6 +38,7 @@ struct Setup {
     Position external_offset{};
     Position work_shift{};             // G10 P0 register at power-on (semantics.md §2.6)
     std::array<Position, 4> reference_points{};   // G28 (1), G30 P2..P4
+    bool start_at_reference = true;    // the run starts at reference point 1 (homed), else at machine zero
     Position rapid_mm_min{};           // per axis; 0 = axis absent
     Position accel_mm_s2{};
     std::array<bool, kAxisCount> rotary{false, false, false, true, true, true};   // degrees, not mm: no path length, F in deg/min            // per axis; 0 = acceleration not modelled (motion/time.hpp)
