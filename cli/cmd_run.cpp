@@ -16,22 +16,36 @@ namespace {
 struct RunCliOptions {
     DryRunOptions run;
     bool json = false;
+    bool state = false;
     std::string trace;
 };
 
-// Streams the trace as JSON lines while the interpreter runs.
+// Streams the trace as JSON lines while the interpreter runs, through a buffer written in large
+// pieces: memory stays flat however long the trace (docs/trace.md).
 class JsonLinesSink : public interpreter::EventSink {
 public:
     JsonLinesSink(std::ostream* out, const interpreter::ProgramSet& programs, std::string axes)
         : out_(out), programs_(programs), axes_(std::move(axes)) {}
+    ~JsonLinesSink() override { flush(); }
+    JsonLinesSink(const JsonLinesSink&) = delete;
+    JsonLinesSink& operator=(const JsonLinesSink&) = delete;
     void on_event(const interpreter::Event& e) override {
-        if (out_) *out_ << boost::json::serialize(interpreter::event_to_json(e, programs_, axes_)) << '\n';
+        if (!out_) return;
+        interpreter::append_event_json(buffer_, e, programs_, axes_);
+        buffer_ += '\n';
+        if (buffer_.size() >= kFlushBytes) flush();
+    }
+    void flush() {
+        if (out_ && !buffer_.empty()) out_->write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+        buffer_.clear();
     }
 
 private:
+    static constexpr std::size_t kFlushBytes = 1 << 20;
     std::ostream* out_;
     const interpreter::ProgramSet& programs_;
     std::string axes_;
+    std::string buffer_;
 };
 
 void print_summary(const DryRun& run, const interpreter::RunResult& result, const std::string& axes) {
@@ -61,7 +75,8 @@ int run_run(const RunCliOptions& o) {
     }
     const std::string axes = run.dialect->lexical.axes;
     JsonLinesSink sink(o.trace.empty() ? nullptr : &trace_file, run.programs, axes);
-    const interpreter::RunResult result = execute(run, sink);
+    const interpreter::RunResult result = execute(run, sink, o.state);
+    sink.flush();
     if (o.json)
         std::cout << boost::json::serialize(interpreter::summary_to_json(result, axes)) << "\n";
     else
@@ -77,6 +92,7 @@ Command add_run_command(CLI::App& app) {
     add_dry_run_options(*cmd, o->run);
     cmd->add_flag("--json", o->json, "the summary as JSON");
     cmd->add_option("--trace", o->trace, "write the trace as JSON lines to this file");
+    cmd->add_flag("--state", o->state, "with --trace: a `state` line (active modal codes, F S T) after every block");
     return [o] { return run_run(*o); };
 }
 

@@ -140,9 +140,10 @@ std::variant<std::unique_ptr<DryRun>, int> prepare_dry_run(const DryRunOptions& 
     return run;
 }
 
-interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink) {
+interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink, bool emit_state) {
     interpreter::RunOptions options;
     options.lenient = run.lenient;
+    options.emit_state = emit_state;
     return interpreter::run(run.programs, run.main, *run.dialect, run.setup, sink, options);
 }
 

@@ -41,7 +41,8 @@ struct DryRun {
 // that cannot be read, an unknown dialect or a bad machine file; 1 for a file without a program.
 std::variant<std::unique_ptr<DryRun>, int> prepare_dry_run(const DryRunOptions& options);
 
-interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink);
+// emit_state: a `state` event after every block (RunOptions::emit_state).
+interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink, bool emit_state = false);
 
 // Alarms on stderr as `file:line: error: alarm N: text`; the exit code: 0 without alarms, 1 with.
 int report_alarms(const DryRun& run, const interpreter::RunResult& result);

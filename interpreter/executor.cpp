@@ -220,22 +220,32 @@ void Executor::execute_block(Frame& frame) {
     }
     BlockWords words;
     if (!evaluate_words(view, words)) return;
-    remember_words(view, words);
-    apply_feed_speed_tool(view, words);
-    apply_modal_codes(view);
-    if (!apply_coordinate_operations(view, words) || stopped_) return;
-    const bool moved = apply_motion(view, words);
-    if (stopped_) return;
-    apply_dwell(view, words);
-    apply_m_codes(frame, view, words);
-    if (options_.emit_state && !frames_.empty()) emit_state(frame, view);
+    const SourceRef where = source(frame, view);
+    const bool moved = apply_block_words(frame, view, words);
+    if (options_.emit_state && !stopped_) emit_state(where);
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
     if (moved && modal_call_ && !stopped_ && frames_.size() == depth && !frame.modal_macro)
         push_macro_frame(frame, view, modal_call_->program, modal_call_->repeats, modal_call_->arguments, true);
 }
 
-void Executor::emit_state(const Frame& frame, const ast::BlockView& view) {
-    Event e = event_at(EventKind::state, frame, view);
+// Steps 2-9 of semantics.md §1.2 for the evaluated words; true when the tool moved.
+bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
+    remember_words(view, words);
+    apply_feed_speed_tool(view, words);
+    apply_modal_codes(view);
+    if (!apply_coordinate_operations(view, words) || stopped_) return false;
+    const bool moved = apply_motion(view, words);
+    if (stopped_) return moved;
+    apply_dwell(view, words);
+    apply_m_codes(frame, view, words);   // may end the program: `frame` is gone after M30
+    return moved;
+}
+
+void Executor::emit_state(const SourceRef& where) {
+    Event e;
+    e.kind = EventKind::state;
+    e.source = where;
+    e.start = e.end = position_;
     std::string text;
     for (const auto& [group, code] : modal_)
         if (code) text += (text.empty() ? "" : " ") + code->spelling;

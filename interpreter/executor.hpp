@@ -173,7 +173,8 @@ private:
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     void call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
-    void emit_state(const Frame& frame, const ast::BlockView& view);
+    bool apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    void emit_state(const SourceRef& where);
 
     // Helpers.
     const LoadedFile& file_of(const Frame& f) const { return programs_.file(f.program.file); }
