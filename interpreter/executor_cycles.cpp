@@ -16,12 +16,13 @@ namespace kerf::interpreter {
 
 namespace {
 
-bool ends_with(std::string_view s, std::string_view suffix) {
-    return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
-}
+// Cycles whose function id does not say "-cycle" (SPINNER, cycles.md §15, §17).
+constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "tailstock-coupling-carry",
+                                             "tailstock-coupling-position"};
 
 // Function ids (docs/functions.md) whose path the trace does not model yet.
 constexpr std::string_view kPathChangers[] = {
+    "axial-offset-direction-plus", "axial-offset-direction-minus",
     "radius-comp-left", "radius-comp-right", "polar-interpolation-on", "cylindrical-interpolation",
     "position-offset-increase", "position-offset-decrease", "position-offset-double-increase",
     "position-offset-double-decrease", "corner-slowdown", "arc-approach", "arc-exit",
@@ -35,7 +36,12 @@ constexpr std::string_view kFinishingCycle = "finishing-cycle";
 
 }  // namespace
 
-bool Executor::is_cycle(const dialects::CodeInfo& code) { return ends_with(code.function, "-cycle"); }
+bool Executor::is_cycle(const dialects::CodeInfo& code) {
+    const std::string_view f = code.function;
+    const bool cancel = f.size() >= 7 && f.substr(f.size() - 7) == "-cancel";   // G80 canned-cycle-cancel
+    return (f.find("-cycle") != std::string_view::npos && !cancel) ||
+           std::find(std::begin(kOtherCycles), std::end(kOtherCycles), f) != std::end(kOtherCycles);
+}
 
 // True when the block belongs to a cycle (then it does not move here).
 bool Executor::apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words) {
@@ -80,9 +86,11 @@ void Executor::note_path_changers(const ast::BlockView& view) {
             emit(e);
         }
     }
-    if (!view.comma_words().empty()) {
+    bool plain_direct_drawing = false;
+    for (const ast::Token& t : view.tokens()) plain_direct_drawing = plain_direct_drawing || t.role() == ast::Role::direct_drawing;
+    if (!view.comma_words().empty() || plain_direct_drawing) {
         Event e = event_at(EventKind::message, *frame_, view);
-        e.text = "direct drawing (,A ,C ,R) is not expanded yet (next issue): the block runs to its programmed end point";
+        e.text = "direct drawing (,A ,C ,R or plain A R) is not expanded yet (next issue): the block runs to its programmed end point";
         emit(e);
     }
 }

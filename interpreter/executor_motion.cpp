@@ -197,7 +197,12 @@ void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) 
     if (const auto* x = words.get('X')) seconds = x->value;
     else if (u) seconds = u->value;
     else if (const auto* p = words.get('P')) seconds = setup_.dwell_p_in_seconds ? p->value : p->value / 1000.0;
-    else if (const auto* f = words.get('F'); f && setup_.dwell_f_seconds) seconds = f->value;
+    else if (const auto* f = words.get('F'); f && setup_.dwell_f_seconds) {
+        seconds = f->value;
+        Event warn = event_at(EventKind::message, *frame_, view);
+        warn.text = "G04 F is not a FANUC dwell address: read as seconds (semantics.md §8.2; use X, U or P)";
+        emit(warn);
+    }
     Event e = event_at(EventKind::dwell, *frame_, view);
     e.time_s = std::max(0.0, seconds);
     emit(e);
