@@ -266,6 +266,22 @@ std::vector<CodeRef> codes(const TypedFile& file, const BlockView& view, Role ro
 }  // namespace
 
 std::vector<CodeRef> BlockView::g_codes() const { return codes(*file_, *this, Role::g_code); }
+
+void BlockView::collect_codes(std::vector<CodeRef>& g, std::vector<CodeRef>& m) const {
+    g.clear();
+    m.clear();
+    const std::uint32_t first = first_token();
+    const auto toks = tokens();
+    for (std::uint32_t i = 0; i < toks.size(); ++i) {
+        const Token& t = toks[i];
+        if (t.kind != TokenKind::word || (t.role() != Role::g_code && t.role() != Role::m_code)) continue;
+        CodeRef ref;
+        ref.token = first + i;
+        ref.key = code_key_of(file_->tree(), t);
+        if (ref.key) ref.info = file_->dialect().fast_code(t.letter, *ref.key);
+        (t.role() == Role::g_code ? g : m).push_back(ref);
+    }
+}
 std::vector<CodeRef> BlockView::m_codes() const { return codes(*file_, *this, Role::m_code); }
 
 std::vector<AxisWord> BlockView::axis_words() const {

@@ -66,6 +66,9 @@ public:
     std::vector<std::uint32_t> parameters() const { return words_with_role(Role::parameter); }
     std::vector<std::uint32_t> comma_words() const;
     std::vector<std::uint32_t> comments() const;
+    // g_codes() and m_codes() in one pass into vectors the caller reuses (cleared first): no
+    // allocation once they have grown, for the interpreter's per-block loop.
+    void collect_codes(std::vector<CodeRef>& g, std::vector<CodeRef>& m) const;
     std::vector<std::uint32_t> statements() const;   // statement tokens
     std::optional<std::uint32_t> word(char letter) const;   // first word with this letter
     bool has_code(char letter, std::string_view function) const;

@@ -104,14 +104,15 @@ const ast::Program& Executor::program_of(const Frame& f) const {
 }
 
 SourceRef Executor::source(const Frame& f, const ast::BlockView& view) const {
+    if (&view == view_) return scan_.source;   // the block being executed: computed once
     const ast::Range r = view.range();
     return {f.program.file, r, file_of(f).lines->utf8(r.begin).line + 1};
 }
 
 bool Executor::has_function(const ast::BlockView& view, std::string_view function) const {
-    for (const ast::CodeRef& c : view.g_codes())
+    for (const ast::CodeRef& c : scan_.g)
         if (c.info && c.info->function == function) return true;
-    for (const ast::CodeRef& c : view.m_codes())
+    for (const ast::CodeRef& c : scan_.m)
         if (c.info && c.info->function == function) return true;
     return false;
 }
@@ -180,6 +181,7 @@ RunResult Executor::run(ProgramRef main) {
         }
         if (++result_.blocks > setup_.step_limit) {
             const ast::BlockView view = file_of(f).typed->block(f.block);
+            view_ = nullptr;
             alarm(f, view, 0, fmt::format("step limit of {} blocks reached: endless loop?", setup_.step_limit));
             break;
         }
@@ -196,6 +198,9 @@ void Executor::execute_block(Frame& frame) {
     const ast::Block& block = view.block();
     if (block.kind != ast::BlockKind::code) return;
     if (block.has(ast::block_flags::deleted) && options_.block_delete) return;
+    view_ = nullptr;   // scan_block computes the source of this block, not the last one's
+    scan_block(frame, view);
+    view_ = &view;
     if (block.has(ast::block_flags::has_error)) {
         if (!options_.lenient) {
             alarm(frame, view, 0, "the block has syntax errors (see the diagnostics of kerf parse)");
@@ -210,7 +215,7 @@ void Executor::execute_block(Frame& frame) {
     const std::size_t depth = frames_.size();
     if (!execute_statements(frame, view)) return;
     if (frames_.size() != depth || stopped_) return;   // a call or an alarm
-    if (const auto call = view.macro_call(); call && call->modal) {
+    if (const auto call = scan_.macro_call ? view.macro_call() : std::nullopt; call && call->modal) {
         // G66 P L args: remembers the call; its words are arguments, not moves (dialects.md §3.7).
         if (const auto arguments = macro_arguments(frame, view, *call)) {
             if (!call->program) alarm(frame, view, 76, "G66 without a program number P (alarm 076)");
@@ -239,6 +244,25 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     apply_dwell(view, words);
     apply_m_codes(frame, view, words);   // may end the program: `frame` is gone after M30
     return moved;
+}
+
+void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {
+    view.collect_codes(scan_.g, scan_.m);
+    scan_.data_letters = 0;
+    scan_.macro_call = false;
+    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+        for (const ast::CodeRef& c : *codes) {
+            if (!c.info) continue;
+            scan_.data_letters |= c.info->parameter_mask;
+            scan_.macro_call |= (c.info->binder_traits & dialects::CodeInfo::kTakesArguments) != 0;
+        }
+    scan_.statements = scan_.comma_words = scan_.direct_drawing = false;
+    for (const ast::Token& t : view.tokens()) {
+        scan_.statements |= t.kind == ast::TokenKind::statement;
+        scan_.comma_words |= t.kind == ast::TokenKind::comma_word;
+        scan_.direct_drawing |= t.kind == ast::TokenKind::word && t.role() == ast::Role::direct_drawing;
+    }
+    scan_.source = source(frame, view);
 }
 
 void Executor::emit_state(const SourceRef& where) {

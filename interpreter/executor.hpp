@@ -2,6 +2,7 @@
 // interpreter library (the public contract is interpreter.hpp).
 #pragma once
 
+#include <array>
 #include <deque>
 #include <functional>
 #include <map>
@@ -18,19 +19,72 @@
 namespace kerf::interpreter {
 
 // The values of one block's words after evaluation: letter → value (vacant macro values omitted).
-struct BlockWords {
-    struct Word {
-        double value = 0;
-        bool has_point = false;
-        bool data = false;          // data of a code in the block (G04 X): not a move, not modal F/S/T
-        std::uint32_t token = 0;
+struct Word {
+    double value = 0;
+    bool has_point = false;
+    bool data = false;          // data of a code in the block (G04 X): not a move, not modal F/S/T
+    std::uint32_t token = 0;
+};
+
+// A map from the letters A–Z to words, in a fixed array (no allocation per block), iterated in
+// letter order like the std::map it replaces.
+class LetterMap {
+public:
+    using value_type = std::pair<char, Word>;
+    class iterator {
+    public:
+        iterator(const LetterMap* map, int i) : map_(map), i_(i) { skip(); }
+        const value_type& operator*() const { return current_; }
+        const value_type* operator->() const { return &current_; }
+        iterator& operator++() {
+            ++i_;
+            skip();
+            return *this;
+        }
+        bool operator==(const iterator& o) const { return i_ == o.i_; }
+        bool operator!=(const iterator& o) const { return i_ != o.i_; }
+
+    private:
+        void skip() {
+            while (i_ < 26 && !(map_->mask_ >> i_ & 1u)) ++i_;
+            if (i_ < 26) current_ = {static_cast<char>('A' + i_), map_->words_[static_cast<std::size_t>(i_)]};
+        }
+        const LetterMap* map_;
+        int i_;
+        value_type current_{};
     };
-    std::map<char, Word> words;   // the last word of each letter (the analyzer reports duplicates)
-    std::map<char, Word> incremental;   // U/W/H written for X/Z/C (system A), keyed by the axis
-    const Word* get(char letter) const {
-        const auto it = words.find(letter);
-        return it == words.end() ? nullptr : &it->second;
+    iterator begin() const { return {this, 0}; }
+    iterator end() const { return {this, 26}; }
+    iterator find(char c) const { return count(c) ? iterator(this, c - 'A') : end(); }
+    std::size_t count(char c) const { return c >= 'A' && c <= 'Z' && (mask_ >> (c - 'A') & 1u) ? 1 : 0; }
+    const Word& at(char c) const { return words_[static_cast<std::size_t>(c - 'A')]; }
+    void set(char c, const Word& w) {
+        words_[static_cast<std::size_t>(c - 'A')] = w;
+        mask_ |= 1u << (c - 'A');
     }
+
+private:
+    std::array<Word, 26> words_{};
+    std::uint32_t mask_ = 0;
+};
+
+struct BlockWords {
+    using Word = interpreter::Word;
+    LetterMap words;         // the last word of each letter (the analyzer reports duplicates)
+    LetterMap incremental;   // U/W/H written for X/Z/C (system A), keyed by the axis
+    const Word* get(char letter) const { return words.count(letter) ? &words.at(letter) : nullptr; }
+};
+
+// What the executor reads of a block's tokens, collected once per block (executor.cpp scan_block).
+struct BlockScan {
+    std::vector<ast::CodeRef> g;   // reused from block to block
+    std::vector<ast::CodeRef> m;
+    std::uint32_t data_letters = 0;   // union of the codes' parameter letters
+    bool statements = false;
+    bool comma_words = false;
+    bool direct_drawing = false;
+    bool macro_call = false;          // G65/G66
+    SourceRef source;
 };
 
 // The modal state that motion reads on every block, derived from the active codes when a modal
@@ -109,6 +163,7 @@ private:
     RunOptions options_;
     RunResult result_;
 
+    BlockScan scan_;             // the block being executed
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
     ExecutorSystemVariables system_variables_{*this};
     macro::Variables variables_{system_variables_};
@@ -145,6 +200,7 @@ private:
 
     // Block execution.
     void execute_block(Frame& frame);
+    void scan_block(const Frame& frame, const ast::BlockView& view);
     bool execute_statements(Frame& frame, const ast::BlockView& view);
     bool execute_statement(Frame& frame, const ast::BlockView& view, const ast::Statement& s);
     bool start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call);

@@ -46,9 +46,9 @@ bool Executor::is_cycle(const dialects::CodeInfo& code) {
 // True when the block belongs to a cycle (then it does not move here).
 bool Executor::apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words) {
     const dialects::CodeInfo* cycle = nullptr;
-    for (const ast::CodeRef& c : view.g_codes())
+    for (const ast::CodeRef& c : scan_.g)
         if (c.info && is_cycle(*c.info)) cycle = c.info;
-    for (const ast::CodeRef& c : view.m_codes())
+    for (const ast::CodeRef& c : scan_.m)
         if (c.info && is_cycle(*c.info)) cycle = c.info;
     if (!cycle && flags_.modal_cycle && has_axis_words) cycle = flags_.modal_cycle;   // G81 ... X Y: a new hole
     if (!cycle) return false;
@@ -76,7 +76,7 @@ bool Executor::apply_cycle_placeholder(const ast::BlockView& view, const BlockWo
 }
 
 void Executor::note_path_changers(const ast::BlockView& view) {
-    for (const ast::CodeRef& c : view.g_codes()) {
+    for (const ast::CodeRef& c : scan_.g) {
         if (!c.info) continue;
         for (const std::string_view f : kPathChangers) {
             if (c.info->function != f) continue;
@@ -86,9 +86,7 @@ void Executor::note_path_changers(const ast::BlockView& view) {
             emit(e);
         }
     }
-    bool plain_direct_drawing = false;
-    for (const ast::Token& t : view.tokens()) plain_direct_drawing = plain_direct_drawing || t.role() == ast::Role::direct_drawing;
-    if (!view.comma_words().empty() || plain_direct_drawing) {
+    if (scan_.comma_words || scan_.direct_drawing) {
         Event e = event_at(EventKind::message, *frame_, view);
         e.text = "direct drawing (,A ,C ,R or plain A R) is not expanded yet (next issue): the block runs to its programmed end point";
         emit(e);

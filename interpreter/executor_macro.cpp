@@ -82,10 +82,13 @@ std::string format_print(std::string_view text, const macro::Variables& variable
 // Returns false when the block must not go on (a jump, an alarm, a call).
 bool Executor::execute_statements(Frame& frame, const ast::BlockView& view) {
     const ast::SyntaxTree& tree = file_of(frame).tree;
-    for (const std::uint32_t ti : view.statements()) {
-        const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
-        if (!execute_statement(frame, view, s) || stopped_) return false;
+    if (scan_.statements) {
+        for (const std::uint32_t ti : view.statements()) {
+            const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
+            if (!execute_statement(frame, view, s) || stopped_) return false;
+        }
     }
+    if (!scan_.macro_call) return true;
     if (const auto call = view.macro_call()) return !start_macro_call(frame, view, *call);
     return true;
 }

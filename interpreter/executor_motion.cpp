@@ -258,7 +258,7 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
 }
 
 void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
-    for (const ast::CodeRef& c : view.m_codes()) {
+    for (const ast::CodeRef& c : scan_.m) {
         if (!c.info) continue;
         const std::string& f = c.info->function;
         Event e = event_at(EventKind::message, frame, view);   // the kind is set per code below

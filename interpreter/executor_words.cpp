@@ -23,14 +23,7 @@ macro::Options Executor::macro_options(bool address) const {
 
 // Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words):
 // they do not move the tool and do not set the modal F, S or T (the code's parameter_words).
-std::uint32_t Executor::data_letters(const ast::BlockView& view) const {
-    std::uint32_t mask = 0;
-    for (const ast::CodeRef& c : view.g_codes())
-        if (c.info) mask |= c.info->parameter_mask;
-    for (const ast::CodeRef& c : view.m_codes())
-        if (c.info) mask |= c.info->parameter_mask;
-    return mask;
-}
+std::uint32_t Executor::data_letters(const ast::BlockView&) const { return scan_.data_letters; }
 
 bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
     const LoadedFile& file = file_of(*frame_);
@@ -61,8 +54,8 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
         } else {
             w.value = file.tree.number_value(t);
         }
-        if (t.role() == ast::Role::axis_incremental && !w.data) out.incremental[rules.incremental_axis_of(t.letter)] = w;
-        else out.words[t.letter] = w;
+        if (t.role() == ast::Role::axis_incremental && !w.data) out.incremental.set(rules.incremental_axis_of(t.letter), w);
+        else if (letter) out.words.set(t.letter, w);
     }
     return true;
 }
@@ -122,7 +115,7 @@ void Executor::apply_tool_word(const ast::BlockView& view, int value) {
 void Executor::apply_modal_codes(const ast::BlockView& view) {
     // Several codes of one group in a block: the last one wins (semantics.md §1.1).
     bool changed = false;
-    for (const ast::CodeRef& c : view.g_codes()) {
+    for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || c.info->group == "00" || c.info->group.empty()) continue;
         const dialects::CodeInfo*& slot = modal_[c.info->group];
         changed = changed || slot != c.info;
@@ -135,7 +128,7 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
 void Executor::remember_words(const ast::BlockView& view, const BlockWords& words) {
     for (const auto& [letter, w] : words.words)
         if (std::string_view("BDEFHST").find(letter) != std::string_view::npos) last_words_[letter] = w.value;
-    for (const ast::CodeRef& c : view.m_codes())
+    for (const ast::CodeRef& c : scan_.m)
         if (c.key) last_words_['M'] = static_cast<double>(*c.key) / 10.0;
     if (const auto n = view.sequence_number()) last_words_['N'] = *n;
 }
@@ -162,7 +155,7 @@ Position Executor::tool_offset() const {
 }
 
 bool Executor::apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words) {
-    for (const ast::CodeRef& c : view.g_codes()) {
+    for (const ast::CodeRef& c : scan_.g) {
         if (!c.info) continue;
         const std::string& f = c.info->function;
         if (f.rfind(fn::work_coordinate_prefix, 0) == 0) {
