@@ -33,6 +33,15 @@ std::uint32_t LineIndex::line_of(std::uint32_t offset) const {
     return static_cast<std::uint32_t>(it - starts_.begin() - 1);
 }
 
+std::uint32_t LineIndex::line_near(std::uint32_t offset, std::uint32_t hint) const {
+    const std::uint32_t count = line_count();
+    for (std::uint32_t line = hint; line < count && line < hint + 4; ++line) {
+        if (offset < starts_[line]) break;
+        if (line + 1 == count || offset < starts_[line + 1]) return line;
+    }
+    return line_of(std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size())));
+}
+
 Position LineIndex::utf8(std::uint32_t offset) const {
     offset = std::min<std::uint32_t>(offset, static_cast<std::uint32_t>(text_.size()));
     const std::uint32_t line = line_of(offset);

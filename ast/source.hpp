@@ -31,6 +31,9 @@ public:
     std::uint32_t offset_of_utf16(Position p) const;
     std::uint32_t line_count() const { return static_cast<std::uint32_t>(starts_.size()); }
     std::uint32_t line_start(std::uint32_t line) const { return starts_[line]; }
+    // The 0-based line of `offset`, trying `hint` and the lines just after it first: O(1) for a
+    // reader that moves forward through the text (the interpreter), a binary search otherwise.
+    std::uint32_t line_near(std::uint32_t offset, std::uint32_t hint) const;
 
 private:
     std::string_view text_;

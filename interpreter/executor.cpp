@@ -51,6 +51,7 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
     // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
     for (const dialects::CodeInfo& c : dialect_.codes())
         if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group] = &c;
+    classify_codes();
     update_flags();
 }
 
@@ -60,16 +61,19 @@ void Executor::update_flags() {
     f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
     for (const auto& [group, code] : modal_) {
         if (!code) continue;
-        const std::string& fn_id = code->function;
-        if (code->binder_traits & dialects::CodeInfo::kMotionGroup) f.motion = fn_id;
-        if (code->modal && is_cycle(*code)) f.modal_cycle = code;
-        else if (fn_id == fn::incremental_programming) f.incremental = true;
-        else if (fn_id == fn::feed_per_revolution) f.per_revolution = true;
-        else if (fn_id == fn::css_on) f.css = true;
-        else if (fn_id == fn::inch_input) f.inch = true;
-        else if (fn_id == fn::plane_xy) f.plane = motion::Plane::xy;
-        else if (fn_id == fn::plane_zx) f.plane = motion::Plane::zx;
-        else if (fn_id == fn::plane_yz) f.plane = motion::Plane::yz;
+        const std::uint8_t c = code_class_of(*code);
+        if (code->binder_traits & dialects::CodeInfo::kMotionGroup) f.motion = code->function;
+        if (code->modal && (c & kCycleCode)) f.modal_cycle = code;
+        f.incremental |= (c & kIncrementalCode) != 0;
+        f.per_revolution |= (c & kPerRevolutionCode) != 0;
+        f.css |= (c & kCssCode) != 0;
+        f.inch |= (c & kInchCode) != 0;
+        switch (c & kPlaneYZCode) {
+            case kPlaneXYCode: f.plane = motion::Plane::xy; break;
+            case kPlaneZXCode: f.plane = motion::Plane::zx; break;
+            case kPlaneYZCode: f.plane = motion::Plane::yz; break;
+            default: break;
+        }
     }
     flags_ = f;
     if (was_inch != flags_.inch) {
@@ -106,7 +110,12 @@ const ast::Program& Executor::program_of(const Frame& f) const {
 SourceRef Executor::source(const Frame& f, const ast::BlockView& view) const {
     if (&view == view_) return scan_.source;   // the block being executed: computed once
     const ast::Range r = view.range();
-    return {f.program.file, r, file_of(f).lines->utf8(r.begin).line + 1};
+    const LoadedFile& file = file_of(f);
+    const bool same_file = line_hint_file_ == f.program.file;
+    const std::uint32_t line = file.lines->line_near(r.begin, same_file ? line_hint_ : 0);
+    line_hint_file_ = f.program.file;
+    line_hint_ = line;
+    return {f.program.file, r, line + 1};
 }
 
 bool Executor::has_function(const ast::BlockView& view, std::string_view function) const {
@@ -257,7 +266,11 @@ void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {
             scan_.macro_call |= (c.info->binder_traits & dialects::CodeInfo::kTakesArguments) != 0;
         }
     scan_.statements = scan_.comma_words = scan_.direct_drawing = false;
+    scan_.sequence.reset();
+    const ast::SyntaxTree& tree = file_of(frame).tree;
     for (const ast::Token& t : view.tokens()) {
+        if (t.kind == ast::TokenKind::word && t.letter == 'N' && t.is_number() && !scan_.sequence)
+            scan_.sequence = tree.number_value(t);
         scan_.statements |= t.kind == ast::TokenKind::statement;
         scan_.comma_words |= t.kind == ast::TokenKind::comma_word;
         scan_.direct_drawing |= t.kind == ast::TokenKind::word && t.role() == ast::Role::direct_drawing;

@@ -84,6 +84,7 @@ struct BlockScan {
     bool comma_words = false;
     bool direct_drawing = false;
     bool macro_call = false;          // G65/G66
+    std::optional<double> sequence;   // N
     SourceRef source;
 };
 
@@ -164,6 +165,8 @@ private:
     RunResult result_;
 
     BlockScan scan_;             // the block being executed
+    mutable std::uint32_t line_hint_ = 0;        // source(): the last line found, per file
+    mutable std::uint32_t line_hint_file_ = ~0u;
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
     ExecutorSystemVariables system_variables_{*this};
     macro::Variables variables_{system_variables_};
@@ -193,7 +196,7 @@ private:
     int tool_offset_ = 0;
     int pending_tool_ = 0;           // mills: T selects, M06 changes
     bool stopped_ = false;
-    std::map<char, double> last_words_;   // B D E F H M N O S T of the last block (#4102..#4120)
+    std::array<std::optional<double>, 26> last_words_{};   // B D E F H M N S T of the last blocks (#4102..#4120)
     double clock_ms_offset_ = 0;          // #3001 preset
     double clock_h_offset_ = 0;           // #3002 preset
     std::map<int, double> stored_system_;   // #3003 #3004 #3901 #3902 ...: written, read back
@@ -222,7 +225,14 @@ private:
     void apply_data_input(const ast::BlockView& view, const BlockWords& words);
     void apply_rotation(const ast::BlockView& view, const BlockWords& words, bool cw);
     bool apply_motion(const ast::BlockView& view, const BlockWords& words);
-    static bool is_cycle(const dialects::CodeInfo& code);
+    static bool is_cycle_function(std::string_view function);
+    void classify_codes();
+    bool is_cycle(const dialects::CodeInfo& code) const;
+    std::uint8_t code_class_of(const dialects::CodeInfo& code) const;
+    static constexpr std::uint8_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
+                                  kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
+                                  kPlaneYZCode = 192;   // the plane: two bits
+    std::vector<std::uint8_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     bool apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words);
     void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);

@@ -10,9 +10,12 @@
 #include <algorithm>
 #include <iterator>
 
+#include "dialects/functions.hpp"
 #include "interpreter/executor.hpp"
 
 namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
 
 namespace {
 
@@ -36,14 +39,41 @@ constexpr std::string_view kFinishingCycle = "finishing-cycle";
 
 }  // namespace
 
-bool Executor::is_cycle(const dialects::CodeInfo& code) {
-    const std::string_view f = code.function;
+bool Executor::is_cycle_function(std::string_view f) {
     const bool cancel = f.size() >= 7 && f.substr(f.size() - 7) == "-cancel";   // G80 canned-cycle-cancel
     return (f.find("-cycle") != std::string_view::npos && !cancel) ||
            std::find(std::begin(kOtherCycles), std::end(kOtherCycles), f) != std::end(kOtherCycles);
 }
 
 // True when the block belongs to a cycle (then it does not move here).
+// Per code of the dialect, computed once: the per-block checks compare bits, not strings.
+void Executor::classify_codes() {
+    const auto codes = dialect_.codes();
+    code_class_.assign(codes.size(), 0);
+    for (std::size_t i = 0; i < codes.size(); ++i) {
+        const std::string_view f = codes[i].function;
+        if (is_cycle_function(f)) code_class_[i] |= kCycleCode;
+        if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
+            code_class_[i] |= kPathChangerCode;
+        // The modal flags update_flags() derives (executor.cpp).
+        if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;
+        if (f == fn::feed_per_revolution) code_class_[i] |= kPerRevolutionCode;
+        if (f == fn::css_on) code_class_[i] |= kCssCode;
+        if (f == fn::inch_input) code_class_[i] |= kInchCode;
+        if (f == fn::plane_xy) code_class_[i] |= kPlaneXYCode;
+        if (f == fn::plane_zx) code_class_[i] |= kPlaneZXCode;
+        if (f == fn::plane_yz) code_class_[i] |= kPlaneYZCode;
+    }
+}
+
+bool Executor::is_cycle(const dialects::CodeInfo& code) const { return code_class_of(code) & kCycleCode; }
+
+std::uint8_t Executor::code_class_of(const dialects::CodeInfo& code) const {
+    const auto codes = dialect_.codes();
+    const std::size_t i = static_cast<std::size_t>(&code - codes.data());
+    return i < code_class_.size() ? code_class_[i] : (is_cycle_function(code.function) ? kCycleCode : 0);
+}
+
 bool Executor::apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words) {
     const dialects::CodeInfo* cycle = nullptr;
     for (const ast::CodeRef& c : scan_.g)
@@ -77,9 +107,7 @@ bool Executor::apply_cycle_placeholder(const ast::BlockView& view, const BlockWo
 
 void Executor::note_path_changers(const ast::BlockView& view) {
     for (const ast::CodeRef& c : scan_.g) {
-        if (!c.info) continue;
-        for (const std::string_view f : kPathChangers) {
-            if (c.info->function != f) continue;
+        if (c.info && (code_class_of(*c.info) & kPathChangerCode)) {
             Event e = event_at(EventKind::message, *frame_, view);
             e.text = fmt::format("{} ({}) is not applied yet (next issue): the trace follows the programmed path",
                                  c.info->spelling, c.info->function);

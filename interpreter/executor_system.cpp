@@ -125,8 +125,8 @@ std::optional<macro::Value> Executor::read_system(int number) {
         if (!letter) return Value::vacant_value();
         if (letter == 'O') return Value::of(static_cast<double>(program_of(frames_.back()).number.value_or(0)));
         if (letter == 'T' && dialect_.machine == dialects::MachineKind::lathe) return Value::of(tool_ * 100 + tool_offset_);
-        const auto it = last_words_.find(letter);
-        return it == last_words_.end() ? Value::vacant_value() : Value::of(it->second);
+        const auto& last = last_words_[static_cast<std::size_t>(letter - 'A')];
+        return last ? Value::of(*last) : Value::vacant_value();
     }
     // Positions: per axis in the machine's order.
     const auto axis_at = [&](int base) -> std::optional<std::size_t> {

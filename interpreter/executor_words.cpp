@@ -125,12 +125,12 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
 }
 
 // What #4102..#4120 read: the last B D E F H M N O S T (FANUC "modal information").
-void Executor::remember_words(const ast::BlockView& view, const BlockWords& words) {
-    for (const auto& [letter, w] : words.words)
-        if (std::string_view("BDEFHST").find(letter) != std::string_view::npos) last_words_[letter] = w.value;
+void Executor::remember_words(const ast::BlockView&, const BlockWords& words) {
+    for (const char letter : {'B', 'D', 'E', 'F', 'H', 'S', 'T'})
+        if (const auto* w = words.get(letter)) last_words_[static_cast<std::size_t>(letter - 'A')] = w->value;
     for (const ast::CodeRef& c : scan_.m)
-        if (c.key) last_words_['M'] = static_cast<double>(*c.key) / 10.0;
-    if (const auto n = view.sequence_number()) last_words_['N'] = *n;
+        if (c.key) last_words_['M' - 'A'] = static_cast<double>(*c.key) / 10.0;
+    if (scan_.sequence) last_words_['N' - 'A'] = *scan_.sequence;
 }
 
 Position Executor::machine_offset() const {
