@@ -114,12 +114,14 @@ void Executor::apply_tool_word(const ast::BlockView& view, int value) {
 
 void Executor::apply_modal_codes(const ast::BlockView& view) {
     // Several codes of one group in a block: the last one wins (semantics.md §1.1).
-    bool changed = false;
+    bool changed = false;          // a group other than motion changed: derive every flag again
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || c.info->group == "00" || c.info->group.empty()) continue;
         const dialects::CodeInfo*& slot = modal_[c.info->group];
-        changed = changed || slot != c.info;
+        if (slot == c.info) continue;
         slot = c.info;
+        if (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) flags_.motion = c.info->function;
+        else changed = true;
     }
     if (changed) update_flags();
 }
