@@ -1,4 +1,5 @@
-// Runs the kerf binary from a CLI test: stdout, stderr and the exit code, plus temp-file helpers.
+// Runs the kerf binary from a CLI test: stdout, stderr and the exit code, plus temp-file helpers
+// (read_text and write_text come from tests/shared_files.hpp).
 #pragma once
 
 #include <catch2/catch.hpp>
@@ -6,8 +7,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <sys/wait.h>
+
+#include "tests/shared_files.hpp"
 
 namespace kerf::test {
 
@@ -17,38 +21,48 @@ struct CliRun {
     std::string err;
 };
 
-inline std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-inline std::filesystem::path write_text(const std::filesystem::path& path, const std::string& text) {
-    std::filesystem::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
-// Quoted for the shell.
+// Quoted for the shell (a ' inside becomes '\''). Appended piecewise: GCC 12 warns falsely on
+// "'" + string + "'".
 inline std::string shell_quote(const std::filesystem::path& p) {
     std::string quoted = "'";
-    quoted += p.string();
+    for (const char c : p.string()) {
+        if (c == '\'') quoted += "'\\''";
+        else quoted += c;
+    }
     quoted += '\'';
     return quoted;
 }
 
-// `kerf <args>` with stdin from /dev/null; `work` holds the captured stderr.
-inline CliRun run_kerf(const std::string& args, const std::filesystem::path& work) {
-    std::filesystem::create_directories(work);
-    const std::filesystem::path err = work / "stderr.txt";
-    const std::string cmd = std::string(KERF_BINARY) + " " + args + " </dev/null 2>" + shell_quote(err);
-    FILE* pipe = popen(cmd.c_str(), "r");
+// What a shell command wrote to stdout, and its status as pclose gives it. REQUIREs the pipe.
+struct Captured {
+    std::string out;
+    int status = -1;
+};
+
+inline Captured capture(const std::string& command) {
+    FILE* pipe = popen(command.c_str(), "r");
     REQUIRE(pipe);
-    CliRun r;
+    Captured c;
     char buf[4096];
     std::size_t n;
-    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
-    const int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) c.out.append(buf, n);
+    c.status = pclose(pipe);
+    return c;
+}
+
+// `kerf <args>`; `work` holds the captured stderr. stdin is /dev/null, or a file `work`/stdin.txt
+// holding `stdin_text` when one is given.
+inline CliRun run_kerf(const std::string& args, const std::filesystem::path& work,
+                       const std::optional<std::string>& stdin_text = std::nullopt) {
+    std::filesystem::create_directories(work);
+    const std::filesystem::path err = work / "stderr.txt";
+    std::string input = "/dev/null";
+    if (stdin_text) input = shell_quote(write_text(work / "stdin.txt", *stdin_text));
+    const std::string cmd = std::string(KERF_BINARY) + " " + args + " <" + input + " 2>" + shell_quote(err);
+    const Captured c = capture(cmd);
+    CliRun r;
+    r.out = c.out;
+    r.code = WIFEXITED(c.status) ? WEXITSTATUS(c.status) : -1;
     r.err = read_text(err);
     return r;
 }

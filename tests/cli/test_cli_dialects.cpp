@@ -1,16 +1,15 @@
 // Runs the built kerf binary: `kerf dialects` and `kerf explain`.
-#include <catch2/catch.hpp>
+#include "tests/cli/cli_runner.hpp"
 
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 namespace fs = std::filesystem;
+using kerf::test::shell_quote;
 
 namespace {
 
@@ -19,28 +18,12 @@ struct Run {
     std::string out;   // stdout and stderr together
 };
 
-std::string quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) {
-        if (c == '\'') out += "'\\''";
-        else out += c;
-    }
-    return out + "'";
-}
-
-Run kerf(const std::string& args) {
-    const std::string command = quote(KERF_BINARY) + " " + args + " 2>&1";
-    Run run;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::array<char, 4096> buffer{};
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) run.out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    REQUIRE(status != -1);
-    REQUIRE(WIFEXITED(status));
-    run.exit_code = WEXITSTATUS(status);
-    return run;
+// stdin is the test's own (not /dev/null as kerf::test::run_kerf has it).
+Run kerf_cli(const std::string& args) {
+    const kerf::test::Captured c = kerf::test::capture(shell_quote(KERF_BINARY) + " " + args + " 2>&1");
+    REQUIRE(c.status != -1);
+    REQUIRE(WIFEXITED(c.status));
+    return {WEXITSTATUS(c.status), c.out};
 }
 
 bool has_cyrillic(const std::string& s) {
@@ -63,7 +46,7 @@ TEST_CASE("the kerf binary exists") {
 }
 
 TEST_CASE("kerf dialects lists the 11 built-in dialects") {
-    const Run r = kerf("dialects");
+    const Run r = kerf_cli("dialects");
     INFO(r.out);
     CHECK(r.exit_code == 0);
     for (const char* id : {"fanuc-lathe-a", "fanuc-lathe-b", "fanuc-lathe-c", "spinner-lathe-a", "spinner-lathe-b",
@@ -76,7 +59,7 @@ TEST_CASE("kerf dialects lists the 11 built-in dialects") {
 
 TEST_CASE("kerf explain") {
     SECTION("G71 in system A, in Russian, shows the group") {
-        const Run r = kerf("explain G71 --dialect fanuc-lathe-a --lang ru");
+        const Run r = kerf_cli("explain G71 --dialect fanuc-lathe-a --lang ru");
         INFO(r.out);
         CHECK(r.exit_code == 0);
         CHECK(contains(r.out, "G71"));
@@ -85,7 +68,7 @@ TEST_CASE("kerf explain") {
         CHECK(contains(r.out, "rough-turning-cycle"));
     }
     SECTION("G71 in system C is metric input") {
-        const Run r = kerf("explain G71 --dialect fanuc-lathe-c");
+        const Run r = kerf_cli("explain G71 --dialect fanuc-lathe-c");
         INFO(r.out);
         CHECK(r.exit_code == 0);
         CHECK(contains(r.out, "Metric input"));
@@ -93,13 +76,13 @@ TEST_CASE("kerf explain") {
         CHECK_FALSE(contains(r.out, "rough"));
     }
     SECTION("an unknown code exits 1") {
-        const Run r = kerf("explain G999 --dialect fanuc-mill");
+        const Run r = kerf_cli("explain G999 --dialect fanuc-mill");
         INFO(r.out);
         CHECK(r.exit_code == 1);
         CHECK(contains(r.out, "G999"));
     }
     SECTION("an unknown dialect exits 2") {
-        const Run r = kerf("explain G71 --dialect nope");
+        const Run r = kerf_cli("explain G71 --dialect nope");
         INFO(r.out);
         CHECK(r.exit_code == 2);
         CHECK(contains(r.out, "nope"));
@@ -137,8 +120,8 @@ TEST_CASE("kerf dialects --dialect-file adds a user dialect") {
                "ru = \"Конец программы\"\n"
                "reference = \"test\"\n";
     }
-    const Run listed = kerf("dialects --dialect-file " + quote(file.string()));
-    const Run explained = kerf("explain G0 --dialect user-test-mill --dialect-file " + quote(file.string()));
+    const Run listed = kerf_cli("dialects --dialect-file " + shell_quote(file));
+    const Run explained = kerf_cli("explain G0 --dialect user-test-mill --dialect-file " + shell_quote(file));
     fs::remove(file);
     {
         INFO(listed.out);
@@ -160,7 +143,7 @@ TEST_CASE("kerf dialects --dialect-file with a broken file fails with the line")
         std::ofstream out(file);
         out << "id = \"broken\"\nname = \"Broken\"\nmachine = = \"mill\"\n";
     }
-    const Run r = kerf("dialects --dialect-file " + quote(file.string()));
+    const Run r = kerf_cli("dialects --dialect-file " + shell_quote(file));
     fs::remove(file);
     INFO(r.out);
     CHECK(r.exit_code == 2);

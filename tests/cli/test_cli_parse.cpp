@@ -1,47 +1,23 @@
 // `kerf parse`: output forms, exit codes, error format, dialect selection (flag > .kerf.toml > detection).
-#include <catch2/catch.hpp>
+#include "tests/cli/cli_runner.hpp"
 
 #include <boost/json.hpp>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
+#include <string>
 
 namespace fs = std::filesystem;
+using Run = kerf::test::CliRun;
 
 namespace {
 
-struct Run {
-    int code = -1;
-    std::string out;
-    std::string err;
-};
+const fs::path kDir = fs::temp_directory_path() / "kerf-cli-parse";
 
-Run run(const std::string& args, const std::string& stdin_text = "") {
-    const fs::path dir = fs::temp_directory_path() / "kerf-cli-parse";
-    fs::create_directories(dir);
-    const fs::path in = dir / "stdin.txt", err = dir / "stderr.txt";
-    std::ofstream(in, std::ios::binary) << stdin_text;
-    const std::string cmd = std::string(KERF_BINARY) + " " + args + " <'" + in.string() + "' 2>'" + err.string() + "'";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe);
-    Run r;
-    char buf[4096];
-    std::size_t n;
-    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
-    const int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream e(err, std::ios::binary);
-    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
-    return r;
-}
+// stdin is a file holding `stdin_text` (empty unless given).
+Run run(const std::string& args, const std::string& stdin_text = "") { return kerf::test::run_kerf(args, kDir, stdin_text); }
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-    const fs::path dir = fs::temp_directory_path() / "kerf-cli-parse" / "files";
-    fs::create_directories(dir);
-    const fs::path p = dir / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
+    return kerf::test::write_text(kDir / "files" / name, text);
 }
 
 }  // namespace
@@ -107,7 +83,7 @@ TEST_CASE("kerf parse: --dialect beats .kerf.toml, which beats detection; --expl
     fs::create_directories(dir);
     std::ofstream(dir.parent_path() / ".kerf.toml") << "dialect = \"pcnc-mill\"\n";
     std::ofstream(dir / "p.nc") << "G0 X1 Y2 ; comment in pcnc-mill\n";
-    const std::string file = "'" + (dir / "p.nc").string() + "'";
+    const std::string file = kerf::test::shell_quote(dir / "p.nc");
     const Run from_config = run("parse --explain-dialect " + file);
     CHECK(from_config.code == 0);
     CHECK(from_config.err.find("dialect pcnc-mill from") != std::string::npos);

@@ -1,61 +1,23 @@
 // `kerf plot` (and `kerf run --machine`): output to a file or stdout, exit codes as `kerf run`,
 // alarms on stderr with the picture still written, machine files from --machine and .kerf.toml.
-#include <catch2/catch.hpp>
+#include "tests/cli/cli_runner.hpp"
 
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sys/wait.h>
+#include <string>
 
 namespace fs = std::filesystem;
+using kerf::test::read_text;
+using kerf::test::shell_quote;
+using kerf::test::write_text;
+using Run = kerf::test::CliRun;
 
 namespace {
 
-struct Run {
-    int code = -1;
-    std::string out;
-    std::string err;
-};
-
 const fs::path kDir = fs::temp_directory_path() / "kerf-cli-plot";
 
-Run run(const std::string& args) {
-    fs::create_directories(kDir);
-    const fs::path err = kDir / "stderr.txt";
-    const std::string cmd = std::string(KERF_BINARY) + " " + args + " </dev/null 2>'" + err.string() + "'";
-    FILE* pipe = popen(cmd.c_str(), "r");
-    REQUIRE(pipe);
-    Run r;
-    char buf[4096];
-    std::size_t n;
-    while ((n = fread(buf, 1, sizeof buf, pipe)) > 0) r.out.append(buf, n);
-    const int status = pclose(pipe);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream e(err, std::ios::binary);
-    r.err.assign(std::istreambuf_iterator<char>(e), std::istreambuf_iterator<char>());
-    return r;
-}
+Run run(const std::string& args) { return kerf::test::run_kerf(args, kDir); }
 
-fs::path write_file(const fs::path& path, const std::string& text) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
-
-fs::path write_temp(const std::string& name, const std::string& text) { return write_file(kDir / "files" / name, text); }
-
-std::string read(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-// Quoted for the shell. (Appended piecewise: GCC 12 warns falsely on "'" + string + "'".)
-std::string q(const fs::path& p) {
-    std::string quoted = "'";
-    quoted += p.string();
-    quoted += '\'';
-    return quoted;
-}
+fs::path write_temp(const std::string& name, const std::string& text) { return write_text(kDir / "files" / name, text); }
 
 bool is_svg(const std::string& s) { return s.rfind("<svg", 0) == 0 && s.find("</svg>") != std::string::npos; }
 
@@ -68,16 +30,16 @@ TEST_CASE("kerf plot -o writes the SVG to the file, without -o to stdout") {
     const fs::path nc = write_temp("lathe.nc", kLathe);
     const fs::path svg = kDir / "files" / "lathe.svg";
     fs::remove(svg);
-    const Run r = run("plot --dialect fanuc-lathe-a " + q(nc) + " -o " + q(svg));
+    const Run r = run("plot --dialect fanuc-lathe-a " + shell_quote(nc) + " -o " + shell_quote(svg));
     CHECK(r.code == 0);
     CHECK(r.out.empty());
     CHECK(r.err.empty());
-    const std::string file = read(svg);
+    const std::string file = read_text(svg);
     CHECK(is_svg(file));
     CHECK(file.find("lathe.nc (fanuc-lathe-a)") != std::string::npos);   // the title
     CHECK(file.find(" A") != std::string::npos);                          // the G02 is an arc
     CHECK(file.find("X drawn at the radius") != std::string::npos);      // the built-in lathe
-    const Run s = run("plot --dialect fanuc-lathe-a " + q(nc));
+    const Run s = run("plot --dialect fanuc-lathe-a " + shell_quote(nc));
     CHECK(s.code == 0);
     CHECK(s.out == file);
 }
@@ -87,10 +49,10 @@ TEST_CASE("kerf plot: alarms on stderr, exit 1, the picture of what ran is still
     const fs::path nc = write_temp("alarm.nc", "O1\nG0 X10. Z0.\nG2 X100. Z-5. R1.\nM30\n");
     const fs::path svg = kDir / "files" / "alarm.svg";
     fs::remove(svg);
-    const Run r = run("plot --dialect fanuc-lathe-a " + q(nc) + " -o " + q(svg));
+    const Run r = run("plot --dialect fanuc-lathe-a " + shell_quote(nc) + " -o " + shell_quote(svg));
     CHECK(r.code == 1);
     CHECK(r.err.find(nc.string() + ":3: error: alarm 20:") != std::string::npos);
-    const std::string file = read(svg);
+    const std::string file = read_text(svg);
     CHECK(is_svg(file));
     CHECK(file.find("<path class=\"rapid\"") != std::string::npos);
     CHECK(file.find("<path class=\"alarm\"") != std::string::npos);
@@ -99,16 +61,16 @@ TEST_CASE("kerf plot: alarms on stderr, exit 1, the picture of what ran is still
 TEST_CASE("kerf plot: usage and I/O errors exit 2") {
     const fs::path nc = write_temp("ok.nc", kLathe);
     CHECK(run("plot /nonexistent/file.nc").code == 2);
-    CHECK(run("plot --dialect nope " + q(nc)).code == 2);
+    CHECK(run("plot --dialect nope " + shell_quote(nc)).code == 2);
     CHECK(run("plot").code == 2);
-    const Run r = run("plot --dialect fanuc-lathe-a " + q(nc) + " -o /nonexistent/dir/out.svg");
+    const Run r = run("plot --dialect fanuc-lathe-a " + shell_quote(nc) + " -o /nonexistent/dir/out.svg");
     CHECK(r.code == 2);
     CHECK(r.err.find("/nonexistent/dir/out.svg: cannot write the picture") != std::string::npos);
 }
 
 TEST_CASE("kerf plot: a program without motion is a clean run and a picture saying so") {
     const fs::path empty = write_temp("empty.nc", "");
-    const Run r = run("plot --dialect fanuc-lathe-a " + q(empty));
+    const Run r = run("plot --dialect fanuc-lathe-a " + shell_quote(empty));
     CHECK(r.code == 0);
     CHECK(is_svg(r.out));
     CHECK(r.out.find("no motion") != std::string::npos);
@@ -119,25 +81,25 @@ TEST_CASE("kerf plot: a program without motion is a clean run and a picture sayi
 TEST_CASE("kerf plot/run --machine: a good machine file changes the run, a bad one is reported with its position") {
     const fs::path nc = write_temp("machine.nc", kLathe);
     const fs::path good = write_temp("radius-lathe.toml", "id = \"radius-lathe\"\nbase = \"fanuc-lathe\"\ndiameter_x = false\n");
-    const Run p = run("plot --dialect fanuc-lathe-a --machine " + q(good) + " " + q(nc));
+    const Run p = run("plot --dialect fanuc-lathe-a --machine " + shell_quote(good) + " " + shell_quote(nc));
     CHECK(p.code == 1);
     CHECK(p.err.find("alarm 20") != std::string::npos);
     CHECK(is_svg(p.out));
     CHECK(p.out.find("X drawn at the radius") == std::string::npos);
-    CHECK(run("run --dialect fanuc-lathe-a " + q(nc)).code == 0);
-    CHECK(run("run --dialect fanuc-lathe-a --machine " + q(good) + " " + q(nc)).code == 1);
+    CHECK(run("run --dialect fanuc-lathe-a " + shell_quote(nc)).code == 0);
+    CHECK(run("run --dialect fanuc-lathe-a --machine " + shell_quote(good) + " " + shell_quote(nc)).code == 1);
 
     // Line 3 column 10 is the value of the unknown key; line 5 column 9 the string where a number belongs.
     const fs::path bad = write_temp("bad-machine.toml", "id = \"bad\"\nbase = \"fanuc-lathe\"\ncolour = 1\n[axes.X]\nrapid = \"fast\"\n");
     for (const char* command : {"plot", "run"}) {
         INFO(command);
-        const Run b = run(std::string(command) + " --dialect fanuc-lathe-a --machine " + q(bad) + " " + q(nc));
+        const Run b = run(std::string(command) + " --dialect fanuc-lathe-a --machine " + shell_quote(bad) + " " + shell_quote(nc));
         CHECK(b.code == 2);
         CHECK(b.out.empty());
         CHECK(b.err.find(bad.string() + ":3:10: error: top level: unknown key 'colour'") != std::string::npos);
         CHECK(b.err.find(bad.string() + ":5:9: error: axes.X.rapid: expected a number") != std::string::npos);
     }
-    const Run missing = run("plot --machine /nonexistent/m.toml " + q(nc));
+    const Run missing = run("plot --machine /nonexistent/m.toml " + shell_quote(nc));
     CHECK(missing.code == 2);
     CHECK(missing.err.find("/nonexistent/m.toml: cannot open file") != std::string::npos);
 }
@@ -146,8 +108,8 @@ TEST_CASE("kerf run --machine: the machine's rates change the cycle time") {
     const fs::path nc = write_temp("rates.nc", "O1\nG0 X100. Z100.\nG0 X0. Z0.\nM30\n");
     const fs::path slow = write_temp("slow.toml",
                                      "id = \"slow\"\nbase = \"fanuc-lathe\"\n[axes.X]\nrapid = 100.0\n[axes.Z]\nrapid = 100.0\n");
-    const Run fast_run = run("run --json --dialect fanuc-lathe-a " + q(nc));
-    const Run slow_run = run("run --json --dialect fanuc-lathe-a --machine " + q(slow) + " " + q(nc));
+    const Run fast_run = run("run --json --dialect fanuc-lathe-a " + shell_quote(nc));
+    const Run slow_run = run("run --json --dialect fanuc-lathe-a --machine " + shell_quote(slow) + " " + shell_quote(nc));
     REQUIRE(fast_run.code == 0);
     REQUIRE(slow_run.code == 0);
     const auto seconds = [](const std::string& json) {
@@ -162,15 +124,15 @@ TEST_CASE("kerf run --machine: the machine's rates change the cycle time") {
 
 TEST_CASE("kerf plot: .kerf.toml names the machine file, relative to itself; --machine wins") {
     const fs::path project = kDir / "project";
-    write_file(project / "machines" / "radius.toml", "id = \"radius\"\nbase = \"fanuc-lathe\"\ndiameter_x = false\n");
-    write_file(project / ".kerf.toml", "dialect = \"fanuc-lathe-a\"\nmachine = \"machines/radius.toml\"\n");
-    const fs::path nc = write_file(project / "parts" / "part.nc", "O1\nG0 X30. Z2.\nG1 Z-10. F.2\nM30\n");
-    const Run r = run("plot " + q(nc));
+    write_text(project / "machines" / "radius.toml", "id = \"radius\"\nbase = \"fanuc-lathe\"\ndiameter_x = false\n");
+    write_text(project / ".kerf.toml", "dialect = \"fanuc-lathe-a\"\nmachine = \"machines/radius.toml\"\n");
+    const fs::path nc = write_text(project / "parts" / "part.nc", "O1\nG0 X30. Z2.\nG1 Z-10. F.2\nM30\n");
+    const Run r = run("plot " + shell_quote(nc));
     CHECK(r.code == 0);
     CHECK(r.out.find("fanuc-lathe-a") != std::string::npos);
     CHECK(r.out.find("X drawn at the radius") == std::string::npos);
-    const fs::path diameter = write_file(project / "diameter.toml", "id = \"d\"\nbase = \"fanuc-lathe\"\ndiameter_x = true\n");
-    const Run flag = run("plot --machine " + q(diameter) + " " + q(nc));
+    const fs::path diameter = write_text(project / "diameter.toml", "id = \"d\"\nbase = \"fanuc-lathe\"\ndiameter_x = true\n");
+    const Run flag = run("plot --machine " + shell_quote(diameter) + " " + shell_quote(nc));
     CHECK(flag.code == 0);
     CHECK(flag.out.find("X drawn at the radius") != std::string::npos);
 }

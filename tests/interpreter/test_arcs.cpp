@@ -15,76 +15,24 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
 
-#include "dialects/dialect.hpp"
-#include "interpreter/interpreter.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
 
 using namespace kerf;
-using interpreter::Event;
-using interpreter::EventKind;
-using interpreter::Setup;
+using namespace kerf::test;
 
 namespace {
 
-constexpr std::size_t X = 0, Y = 1, Z = 2;
 constexpr double pi = std::numbers::pi;
 
-const dialects::Dialect& dialect(const char* id) {
-    const dialects::Dialect* d = dialects::builtin_registry().find(id);
-    INFO(id);
-    REQUIRE(d != nullptr);
-    return *d;
-}
-
-struct Run {
-    interpreter::RunResult result;
-    std::vector<Event> events;
-};
-
-Run run(const std::string& text, const char* id = "fanuc-mill", const std::function<void(Setup&)>& adjust = {}) {
-    const dialects::Dialect& d = dialect(id);
-    interpreter::ProgramSet programs;
-    const auto file = programs.add("test.nc", text, d);
-    Setup setup;
-    setup.diameter_x = d.machine == dialects::MachineKind::lathe;
-    setup.calculator_decimal = d.lexical.calculator_decimal;
-    setup.step_limit = 100'000;
-    if (adjust) adjust(setup);
-    interpreter::VectorSink sink;
-    Run r;
-    const auto main = programs.first_program(file);
-    REQUIRE(main);
-    r.result = interpreter::run(programs, *main, d, setup, sink);
-    r.events = std::move(sink.events);
-    return r;
-}
-
-std::vector<Event> arcs(const Run& r) {
-    std::vector<Event> out;
-    for (const Event& e : r.events)
-        if (e.kind == EventKind::arc_cw || e.kind == EventKind::arc_ccw) out.push_back(e);
-    return out;
-}
-
-std::string alarm_list(const Run& r) {
-    std::string s;
-    for (const Event& a : r.result.alarms) s += "alarm " + std::to_string(a.code) + ": " + a.text + "\n";
-    return s;
-}
-
-void require_clean(const Run& r) {
-    INFO(alarm_list(r));
-    CHECK(r.result.alarms.empty());
-    CHECK(r.result.completed);
-}
+// Runs use bare_setup (tests/interpreter/interpreter_fixture.hpp), fanuc-mill unless named.
 
 // The one arc of a program that starts with `prelude` (positioning) and ends with M30.
 Event one_arc(const std::string& prelude, const std::string& arc_block, const char* id = "fanuc-mill") {
-    const Run r = run("O1\n" + prelude + "\n" + arc_block + "\nM30\n", id);
+    const Run r = run_bare("O1\n" + prelude + "\n" + arc_block + "\nM30\n", id);
     INFO(arc_block);
     require_clean(r);
     const auto a = arcs(r);
@@ -238,7 +186,7 @@ TEST_CASE("helical arcs: the third axis moves", "[arcs]") {
 TEST_CASE("I/J radius mismatch: within the tolerance runs, beyond it is alarm 020", "[arcs]") {
     const Event ok = one_arc("G17 G90 G0 X0. Y0.", "G02 X10. Y0. I5.004 J0. F100.");
     CHECK(ok.end[X] == Approx(10));
-    const Run bad = run("O1\nG17 G90 G0 X0. Y0.\nG02 X10. Y0. I5.01 J0. F100.\nM30\n");
+    const Run bad = run_bare("O1\nG17 G90 G0 X0. Y0.\nG02 X10. Y0. I5.01 J0. F100.\nM30\n");
     INFO(alarm_list(bad));
     REQUIRE(bad.result.alarms.size() == 1);
     CHECK(bad.result.alarms[0].code == 20);
@@ -256,7 +204,7 @@ TEST_CASE("R arcs: semicircle, chord within tolerance, R too small", "[arcs]") {
     CHECK(semi.length_mm == Approx(31.4159265));
     const Event near = one_arc("G17 G90 G0 X0. Y0.", "G02 X20.005 Y0. R10. F100.");
     CHECK(near.end[X] == Approx(20.005));
-    const Run bad = run("O1\nG17 G90 G0 X0. Y0.\nG02 X30. Y0. R10. F100.\nM30\n");
+    const Run bad = run_bare("O1\nG17 G90 G0 X0. Y0.\nG02 X30. Y0. R10. F100.\nM30\n");
     CHECK_FALSE(bad.result.alarms.empty());
     CHECK(arcs(bad).empty());
     CHECK_FALSE(bad.result.completed);
@@ -270,7 +218,7 @@ TEST_CASE("R arcs: semicircle, chord within tolerance, R too small", "[arcs]") {
 // The centre is reported as a diameter like the end: X40 Z−22. Length π·5/2 = 7.85398 mm; under
 // G98 F100 (mm/min): 7.85398/100 min = 4.712389 s.
 TEST_CASE("lathe: the O0004 fillet, centre as a diameter", "[arcs]") {
-    const Run r = run("O0004\nG0 X30. Z0.\nG98 G1 Z-22. F100.\nG2 X40. Z-27. R5.\nM30\n", "fanuc-lathe-a");
+    const Run r = run_bare("O0004\nG0 X30. Z0.\nG98 G1 Z-22. F100.\nG2 X40. Z-27. R5.\nM30\n", "fanuc-lathe-a");
     require_clean(r);
     const auto a = arcs(r);
     REQUIRE(a.size() == 1);

@@ -11,92 +11,16 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <functional>
 #include <string>
 #include <vector>
 
-#include "dialects/dialect.hpp"
-#include "interpreter/default_setup.hpp"
-#include "interpreter/interpreter.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
 
 using namespace kerf;
-using interpreter::Event;
-using interpreter::EventKind;
-using interpreter::Setup;
+using namespace kerf::test;
 
-namespace {
-
-constexpr std::size_t X = 0, Y = 1, Z = 2;
-
-const dialects::Dialect& dialect(const char* id) {
-    const dialects::Dialect* d = dialects::builtin_registry().find(id);
-    INFO(id);
-    REQUIRE(d != nullptr);
-    return *d;
-}
-
-// No machine file: zero offsets, no limits; diameter X on lathes; the dialect's decimal-point rule.
-Setup plain_setup(const dialects::Dialect& d) {
-    Setup s;
-    s.diameter_x = d.machine == dialects::MachineKind::lathe;
-    s.calculator_decimal = d.lexical.calculator_decimal;
-    // The G52 reading is a machine switch resolved from the dialect (pcnc/ADV400: current point).
-    const Setup from_machine = interpreter::default_setup(d);
-    s.g52_current_point = from_machine.g52_current_point;
-    s.g52_zeros_cancel = from_machine.g52_zeros_cancel;
-    s.g54_cancels_g52 = from_machine.g54_cancels_g52;
-    return s;
-}
-
-struct Run {
-    interpreter::RunResult result;
-    std::vector<Event> events;
-};
-
-Run run(const std::string& text, const char* id, const std::function<void(Setup&)>& adjust = {}) {
-    const dialects::Dialect& d = dialect(id);
-    interpreter::ProgramSet programs;
-    const auto file = programs.add("test.nc", text, d);
-    Setup setup = plain_setup(d);
-    setup.step_limit = 100'000;
-    if (adjust) adjust(setup);
-    interpreter::VectorSink sink;
-    Run r;
-    const auto main = programs.first_program(file);
-    REQUIRE(main);
-    r.result = interpreter::run(programs, *main, d, setup, sink);
-    r.events = std::move(sink.events);
-    return r;
-}
-
-bool is_move(EventKind k) {
-    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw ||
-           k == EventKind::thread;
-}
-
-std::vector<Event> moves(const Run& r) {
-    std::vector<Event> out;
-    for (const Event& e : r.events)
-        if (is_move(e.kind)) out.push_back(e);
-    return out;
-}
-
-std::size_t count(const Run& r, EventKind kind) {
-    std::size_t n = 0;
-    for (const Event& e : r.events) n += e.kind == kind;
-    return n;
-}
-
-// A clean run: no alarm, reached its end.
-void require_clean(const Run& r) {
-    std::string alarms;
-    for (const Event& a : r.result.alarms) alarms += "alarm " + std::to_string(a.code) + ": " + a.text + "\n";
-    INFO(alarms);
-    CHECK(r.result.alarms.empty());
-    CHECK(r.result.completed);
-}
-
-}  // namespace
+// Every Setup is plain_setup (tests/interpreter/interpreter_fixture.hpp) plus what the test names.
+// The moves read back here have always included thread cuts (moves_with_threads).
 
 // --- G54–G59 ------------------------------------------------------------------------------------
 
@@ -114,7 +38,7 @@ TEST_CASE("G54-G59 select the work offsets of the Setup; events carry machine po
                               s.work_offsets[i] = {100.0 * (i + 1), 10.0 * (i + 1), -1.0 * (i + 1), 0, 0, 0};
                       });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 6);
     for (std::size_t i = 0; i < 6; ++i) {
         INFO("G5" << 4 + i);
@@ -140,20 +64,20 @@ TEST_CASE("G54 at power-on; the external offset adds to every system", "[coordin
     };
     const Run r = run("O1\nG90 G0 X0. Y0. Z0.\nM30\n", "fanuc-mill", offsets);
     require_clean(r);
-    REQUIRE(moves(r).size() == 1);
-    CHECK(moves(r)[0].machine_end[X] == Approx(100));
-    CHECK(moves(r)[0].machine_end[Y] == Approx(10));
-    CHECK(moves(r)[0].machine_end[Z] == Approx(-1));
+    REQUIRE(moves_with_threads(r).size() == 1);
+    CHECK(moves_with_threads(r)[0].machine_end[X] == Approx(100));
+    CHECK(moves_with_threads(r)[0].machine_end[Y] == Approx(10));
+    CHECK(moves_with_threads(r)[0].machine_end[Z] == Approx(-1));
 
     const Run e = run("O1\nG56 G90 G0 X0. Y0. Z0.\nM30\n", "fanuc-mill", [&](Setup& s) {
         offsets(s);
         s.external_offset = {0.5, -0.5, 1, 0, 0, 0};
     });
     require_clean(e);
-    REQUIRE(moves(e).size() == 1);
-    CHECK(moves(e)[0].machine_end[X] == Approx(300.5));
-    CHECK(moves(e)[0].machine_end[Y] == Approx(29.5));
-    CHECK(moves(e)[0].machine_end[Z] == Approx(-2));
+    REQUIRE(moves_with_threads(e).size() == 1);
+    CHECK(moves_with_threads(e)[0].machine_end[X] == Approx(300.5));
+    CHECK(moves_with_threads(e)[0].machine_end[Y] == Approx(29.5));
+    CHECK(moves_with_threads(e)[0].machine_end[Z] == Approx(-2));
 }
 
 // Lathe, X diameter: G55 zero at machine X−40 (diameter) Z250. G55 G0 X50. Z10. → machine
@@ -162,7 +86,7 @@ TEST_CASE("lathe G55: offsets and positions in diameter", "[coordinates]") {
     const Run r = run("O1\nG55 G0 X50. Z10.\nM30\n", "fanuc-lathe-a",
                       [](Setup& s) { s.work_offsets[1] = {-40, 0, 250, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 1);
     CHECK(m[0].end[X] == Approx(50));
     CHECK(m[0].end[Z] == Approx(10));
@@ -184,7 +108,7 @@ TEST_CASE("G10 P0: X/Z replace the shift, U/W add to it, at once and without mot
     const Run r = run("O1\nG0 X100. Z100.\nG10 P0 X-2. Z-100.\nG10 P0 U1. W10.\nG0 X10. Z0.\nG10 P0 X4.\nG0 X10.\nM30\n",
                       "fanuc-lathe-a");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(count(r, EventKind::coordinate_change) == 3);
     CHECK(m[0].machine_end[X] == Approx(100));
@@ -221,7 +145,7 @@ TEST_CASE("G10 P0: the worked example of semantics.md §2.6", "[coordinates]") {
         CHECK(c.end[Z] == Approx(-10));   // the program always says Z−10
         CHECK(c.machine_end[X] == Approx(-2));
     }
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE_FALSE(m.empty());
     CHECK(m.back().end[X] == Approx(150));
     CHECK(m.back().end[Z] == Approx(150));
@@ -240,7 +164,7 @@ TEST_CASE("G10 P0: the worked example of semantics.md §2.6", "[coordinates]") {
 TEST_CASE("G50 X Z (lathe A) sets the current point; G50.3 cancels it", "[coordinates]") {
     const Run r = run("O1\nG0 X100. Z50.\nG50 X0. Z0.\nG0 X20. Z-5.\nG50.3 X0. Z0.\nG0 X10.\nM30\n", "fanuc-lathe-a");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);   // G50 and G50.3 do not move
     CHECK(m[1].start[X] == Approx(0));
     CHECK(m[1].start[Z] == Approx(0));
@@ -260,7 +184,7 @@ TEST_CASE("G92 X Z (lathe B/C, mill) sets the current point; G92.1 cancels it", 
         INFO(id);
         const Run r = run("O1\nG90 G0 X100. Z50.\nG92 X0. Z0.\nG0 X20. Z-5.\nG92.1 X0. Z0.\nG0 X10.\nM30\n", id);
         require_clean(r);
-        const auto m = moves(r);
+        const auto m = moves_with_threads(r);
         REQUIRE(m.size() == 3);
         CHECK(m[1].start[X] == Approx(0));
         CHECK(m[1].machine_end[X] == Approx(120));
@@ -272,7 +196,7 @@ TEST_CASE("G92 X Z (lathe B/C, mill) sets the current point; G92.1 cancels it", 
     const Run mill = run("O1\nG90 G0 X100. Y30. Z50.\nG92 X0. Y0. Z0.\nG0 X20. Y5. Z-5.\nG92.1 X0. Y0. Z0.\nG0 X10.\nM30\n",
                          "fanuc-mill");
     require_clean(mill);
-    const auto m = moves(mill);
+    const auto m = moves_with_threads(mill);
     REQUIRE(m.size() == 3);
     CHECK(m[1].machine_end[X] == Approx(120));
     CHECK(m[1].machine_end[Y] == Approx(35));
@@ -289,7 +213,7 @@ TEST_CASE("G92 X Z (lathe B/C, mill) sets the current point; G92.1 cancels it", 
 TEST_CASE("G92.1 X0 presets only the named axis", "[coordinates]") {
     const Run r = run("O1\nG90 G0 X100. Y30.\nG92 X0. Y0.\nG92.1 X0.\nG0 Z1.\nM30\n", "fanuc-mill");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 2);
     CHECK(m[1].start[X] == Approx(100));
     CHECK(m[1].start[Y] == Approx(0));
@@ -301,14 +225,14 @@ TEST_CASE("G92.1 X0 presets only the named axis", "[coordinates]") {
 TEST_CASE("ADV400: G92/G92.1 (mill) and G50/G50.1 (lathe)", "[coordinates]") {
     const Run mill = run("G90 G0 X100 Y30\nG92 X0 Y0\nG0 X20\nG92.1\nG0 Z1\nM30\n", "adv400-mill");
     require_clean(mill);
-    const auto mm = moves(mill);
+    const auto mm = moves_with_threads(mill);
     REQUIRE(mm.size() == 3);
     CHECK(mm[1].machine_end[X] == Approx(120));
     CHECK(mm[2].start[X] == Approx(120));
     CHECK(mm[2].start[Y] == Approx(30));
     const Run lathe = run("G90 G0 X100 Z50\nG50 X0 Z0\nG0 X20\nG50.1\nG0 Z1\nM30\n", "adv400-lathe");
     require_clean(lathe);
-    const auto lm = moves(lathe);
+    const auto lm = moves_with_threads(lathe);
     REQUIRE(lm.size() == 3);
     CHECK(lm[1].machine_end[X] == Approx(120));
     CHECK(lm[2].start[X] == Approx(120));
@@ -324,7 +248,7 @@ TEST_CASE("ADV400: G92/G92.1 (mill) and G50/G50.1 (lathe)", "[coordinates]") {
 TEST_CASE("FANUC G92 cancels the G52 local system", "[coordinates]") {
     const Run r = run("O1\nG90 G0 X0. Y0.\nG52 X10. Y5.\nG92 X0. Y0.\nG52 X0. Y0.\nG0 X1.\nM30\n", "fanuc-mill");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 2);
     CHECK(m[1].start[X] == Approx(0));
     CHECK(m[1].start[Y] == Approx(0));
@@ -347,7 +271,7 @@ TEST_CASE("G52 FANUC: vector shift of every work system, no motion, X0 Z0 cancel
     const Run r = run("O1\nG0 X100. Z100.\nG52 X20. Z-10.\nG0 X0. Z0.\nG55\nG0 X0. Z0.\nG52 X0. Z0.\nG0 X0. Z0.\nM30\n",
                       "fanuc-lathe-a", [](Setup& s) { s.work_offsets[1] = {-40, 0, 250, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 4);   // G52 and G55 alone do not move
     CHECK(m[1].start[X] == Approx(80));
     CHECK(m[1].start[Z] == Approx(110));
@@ -373,7 +297,7 @@ TEST_CASE("G52 FANUC: vector shift of every work system, no motion, X0 Z0 cancel
 TEST_CASE("G52 pcnc-mill: current point takes the values, omitted axes keep theirs, G55 cancels", "[coordinates]") {
     const Run r = run("G90 G0 X20 Y20 Z20\nG52 X5 Y5 ; local system\nG0 Z30\nG55\nG0 X0\nM2\n", "pcnc-mill");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].start[X] == Approx(5));
     CHECK(m[1].start[Y] == Approx(5));
@@ -393,7 +317,7 @@ TEST_CASE("G52 pcnc-mill: current point takes the values, omitted axes keep thei
 TEST_CASE("G52 pcnc-mill: G52 X0 Y0 makes the tool read zero; G152 cancels", "[coordinates]") {
     const Run r = run("G90 G0 X20 Y20\nG52 X5 Y5\nG52 X0 Y0\nG0 Z1\nG152\nG0 Z2\nM2\n", "pcnc-mill");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].start[X] == Approx(0));
     CHECK(m[1].start[Y] == Approx(0));
@@ -410,7 +334,7 @@ TEST_CASE("G52 pcnc-mill: G52 X0 Y0 makes the tool read zero; G152 cancels", "[c
 TEST_CASE("G52 ADV400: current point takes the values; zeros cancel", "[coordinates]") {
     const Run r = run("G90 G0 X200 Y160\nG52 X100 Y100\nG0 X20\nG52 X0 Y0\nG0 Y0\nM30\n", "adv400-mill");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].start[X] == Approx(100));
     CHECK(m[1].start[Y] == Approx(100));
@@ -430,7 +354,7 @@ TEST_CASE("G53: one-shot rapid in machine coordinates", "[coordinates]") {
     const Run r = run("O1\nG90 G0 X10. Y10. Z10.\nG53 X-100. Y-50.\nX0.\nM30\n", "fanuc-mill",
                       [](Setup& s) { s.work_offsets[0] = {-500, -300, -500, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].kind == EventKind::rapid);
     CHECK(m[1].machine_end[X] == Approx(-100));
@@ -450,7 +374,7 @@ TEST_CASE("G53 ignores G52 and is a rapid under G01", "[coordinates]") {
     const Run r = run("O1\nG90 G1 X0. F1000.\nG52 X5.\nG53 X-100.\nX0.\nM30\n", "fanuc-mill",
                       [](Setup& s) { s.work_offsets[0] = {-500, 0, 0, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].kind == EventKind::rapid);
     CHECK(m[1].machine_end[X] == Approx(-100));
@@ -465,7 +389,7 @@ TEST_CASE("lathe G53 with diameter X", "[coordinates]") {
     const Run r = run("O1\nG53 X200. Z300.\nM30\n", "fanuc-lathe-a",
                       [](Setup& s) { s.work_offsets[0] = {10, 0, 20, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 1);
     CHECK(m[0].machine_end[X] == Approx(200));
     CHECK(m[0].machine_end[Z] == Approx(300));
@@ -482,7 +406,7 @@ TEST_CASE("G53 pcnc-mill follows the active G01 and its feed", "[coordinates]") 
     const Run r = run("G54 G90 G1 X0 Y0 F600\nG53 X60\nX20\nM2\n", "pcnc-mill",
                       [](Setup& s) { s.work_offsets[0] = {100, 50, 0, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].kind == EventKind::linear);
     CHECK(m[1].machine_end[X] == Approx(60));
@@ -503,7 +427,7 @@ TEST_CASE("G28: via the intermediate point to reference point 1, programmed axes
     const Run r = run("O1\nG90 G0 X10. Y20. Z30.\nG28 X50. Y60.\nG91 G28 Z0.\nM30\n", "fanuc-mill",
                       [](Setup& s) { s.work_offsets[0] = {-500, -300, -500, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() >= 4);   // each G28: intermediate leg, then reference leg (the G91 Z0 one is empty)
     for (const Event& e : m) CHECK(e.kind == EventKind::rapid);
     CHECK(m[1].end[X] == Approx(50));
@@ -531,7 +455,7 @@ TEST_CASE("lathe G28 U0 and G28 W0 move one axis each", "[coordinates]") {
     const Run r = run("O1\nG0 X50. Z20.\nG28 U0.\nG28 W0.\nM30\n", "fanuc-lathe-a",
                       [](Setup& s) { s.reference_points[0] = {300, 0, 550, 0, 0, 0}; });
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE_FALSE(m.empty());
     bool x_home_with_z20 = false;
     for (const Event& e : m)
@@ -548,7 +472,7 @@ TEST_CASE("lathe G28 U0 and G28 W0 move one axis each", "[coordinates]") {
 TEST_CASE("system A: X and U in one block, the later word wins", "[coordinates]") {
     const Run r = run("O1\nG0 X50. Z0.\nG0 X20. U10.\nG0 U10. X20.\nM30\n", "fanuc-lathe-a");
     CHECK(r.result.alarms.empty());
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 3);
     CHECK(m[1].end[X] == Approx(60));
     CHECK(m[2].end[X] == Approx(20));
@@ -562,7 +486,7 @@ TEST_CASE("systems B/C: G91 and U/W", "[coordinates]") {
         INFO(id);
         const Run r = run("O1\nG90 G0 X50. Z0.\nG91 G0 X10. Z-5.\nG90 G0 X20.\nG0 U10. W-5.\nM30\n", id);
         require_clean(r);
-        const auto m = moves(r);
+        const auto m = moves_with_threads(r);
         REQUIRE(m.size() == 4);
         CHECK(m[1].end[X] == Approx(60));
         CHECK(m[1].end[Z] == Approx(-5));
@@ -582,7 +506,7 @@ TEST_CASE("mills: G91 incremental in pcnc-mill and adv400-mill", "[coordinates]"
         INFO(id);
         const Run r = run("G90 G0 X10 Y10\nG91 G0 X5 Y-5\nG90 G0 X0\nM30\n", id);
         CHECK(r.result.alarms.empty());
-        const auto m = moves(r);
+        const auto m = moves_with_threads(r);
         REQUIRE(m.size() == 3);
         CHECK(m[1].end[X] == Approx(15));
         CHECK(m[1].end[Y] == Approx(5));
@@ -602,7 +526,7 @@ TEST_CASE("mills: G91 incremental in pcnc-mill and adv400-mill", "[coordinates]"
 TEST_CASE("lathe: lengths and times use the radius of diameter X", "[coordinates]") {
     const Run r = run("O1\nG0 X20. Z0.\nG98 G1 X40. F100.\nG1 Z-30.\nG1 X20. Z-40.\nM30\n", "fanuc-lathe-a");
     require_clean(r);
-    const auto m = moves(r);
+    const auto m = moves_with_threads(r);
     REQUIRE(m.size() == 4);
     CHECK(m[0].length_mm == Approx(10));
     CHECK(m[1].length_mm == Approx(10));

@@ -9,72 +9,15 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <functional>
 #include <string>
 #include <vector>
 
-#include "dialects/dialect.hpp"
-#include "interpreter/interpreter.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
 
 using namespace kerf;
-using interpreter::Event;
-using interpreter::EventKind;
-using interpreter::Setup;
+using namespace kerf::test;
 
-namespace {
-
-constexpr std::size_t X = 0, Y = 1, Z = 2;
-
-const dialects::Dialect& dialect(const char* id) {
-    const dialects::Dialect* d = dialects::builtin_registry().find(id);
-    INFO(id);
-    REQUIRE(d != nullptr);
-    return *d;
-}
-
-struct Run {
-    interpreter::RunResult result;
-    std::vector<Event> events;
-};
-
-Run run(const std::string& text, const char* id, const std::function<void(Setup&)>& adjust = {}) {
-    const dialects::Dialect& d = dialect(id);
-    interpreter::ProgramSet programs;
-    const auto file = programs.add("test.nc", text, d);
-    Setup setup;
-    setup.diameter_x = d.machine == dialects::MachineKind::lathe;
-    setup.calculator_decimal = d.lexical.calculator_decimal;
-    setup.step_limit = 100'000;
-    if (adjust) adjust(setup);
-    interpreter::VectorSink sink;
-    Run r;
-    const auto main = programs.first_program(file);
-    REQUIRE(main);
-    r.result = interpreter::run(programs, *main, d, setup, sink);
-    r.events = std::move(sink.events);
-    return r;
-}
-
-bool is_move(EventKind k) {
-    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw;
-}
-
-std::vector<Event> moves(const Run& r) {
-    std::vector<Event> out;
-    for (const Event& e : r.events)
-        if (is_move(e.kind)) out.push_back(e);
-    return out;
-}
-
-void require_clean(const Run& r) {
-    std::string s;
-    for (const Event& a : r.result.alarms) s += "alarm " + std::to_string(a.code) + ": " + a.text + "\n";
-    INFO(s);
-    CHECK(r.result.alarms.empty());
-    CHECK(r.result.completed);
-}
-
-}  // namespace
+// Runs use bare_setup (tests/interpreter/interpreter_fixture.hpp): no rapid rates unless set.
 
 // --- G96 (semantics.md §4.1) -------------------------------------------------------------------------
 
@@ -85,8 +28,8 @@ void require_clean(const Run& r) {
 //   G1 Z-10. at X10: n = 6366.198 rpm > S3000 → 3000 rpm; 5 mm at 0.2·3000 = 600 mm/min = 0.5 s
 // The M3 in the G96 block runs at X0 (the power-on position), where n is clamped: 3000 rpm.
 TEST_CASE("G96: rpm from the diameter, clamped by G50 S", "[feed]") {
-    const Run r = run("O1\nG50 S3000\nG96 S200 M3\nG0 X100. Z5.\nG1 Z0. F0.2\nG0 X50.\nG1 Z-5.\nG0 X10.\nG1 Z-10.\nM30\n",
-                      "fanuc-lathe-a");
+    const Run r = run_bare("O1\nG50 S3000\nG96 S200 M3\nG0 X100. Z5.\nG1 Z0. F0.2\nG0 X50.\nG1 Z-5.\nG0 X10.\nG1 Z-10.\nM30\n",
+                           "fanuc-lathe-a");
     require_clean(r);
     std::vector<Event> cuts;
     for (const Event& e : r.events)
@@ -109,14 +52,14 @@ TEST_CASE("G96: rpm from the diameter, clamped by G50 S", "[feed]") {
 // min(3000, 2500) = 2500; with G50 S2000 → 2000; without any G50 S → 2500.
 TEST_CASE("G96: the machine's maximum rpm", "[feed]") {
     auto max2500 = [](Setup& s) { s.max_rpm = 2500; };
-    const Run a = run("O1\nG50 S3000\nG96 S200 M3\nG0 X10. Z5.\nG1 Z0. F0.2\nM30\n", "fanuc-lathe-a", max2500);
+    const Run a = run_bare("O1\nG50 S3000\nG96 S200 M3\nG0 X10. Z5.\nG1 Z0. F0.2\nM30\n", "fanuc-lathe-a", max2500);
     require_clean(a);
     REQUIRE(moves(a).size() == 2);
     CHECK(moves(a)[1].spindle_rpm == Approx(2500));
-    const Run b = run("O1\nG50 S2000\nG96 S200 M3\nG0 X10. Z5.\nG1 Z0. F0.2\nM30\n", "fanuc-lathe-a", max2500);
+    const Run b = run_bare("O1\nG50 S2000\nG96 S200 M3\nG0 X10. Z5.\nG1 Z0. F0.2\nM30\n", "fanuc-lathe-a", max2500);
     require_clean(b);
     CHECK(moves(b)[1].spindle_rpm == Approx(2000));
-    const Run c = run("O1\nG96 S200 M3\nG0 X10. Z5.\nG1 Z0. F0.2\nM30\n", "fanuc-lathe-a", max2500);
+    const Run c = run_bare("O1\nG96 S200 M3\nG0 X10. Z5.\nG1 Z0. F0.2\nM30\n", "fanuc-lathe-a", max2500);
     require_clean(c);
     CHECK(moves(c)[1].spindle_rpm == Approx(2500));
 }
@@ -126,7 +69,7 @@ TEST_CASE("G96: the machine's maximum rpm", "[feed]") {
 TEST_CASE("G96 in systems B/C: G92 S clamps", "[feed]") {
     for (const char* id : {"fanuc-lathe-b", "fanuc-lathe-c"}) {
         INFO(id);
-        const Run r = run("O1\nG92 S1500\nG96 S150 M3\nG90 G0 X50. Z5.\nG95 G1 Z0. F0.1\nG0 X20.\nG1 Z-5.\nM30\n", id);
+        const Run r = run_bare("O1\nG92 S1500\nG96 S150 M3\nG90 G0 X50. Z5.\nG95 G1 Z0. F0.1\nG0 X20.\nG1 Z-5.\nM30\n", id);
         require_clean(r);
         std::vector<Event> cuts;
         for (const Event& e : r.events)
@@ -141,7 +84,7 @@ TEST_CASE("G96 in systems B/C: G92 S clamps", "[feed]") {
 
 // G97 S800: a fixed rpm whatever X is; G99 F0.2 → 160 mm/min; 10 mm → 10/160 min = 3.75 s.
 TEST_CASE("G97: fixed rpm", "[feed]") {
-    const Run r = run("O1\nG97 S800 M3\nG0 X100. Z0.\nG1 Z-10. F0.2\nG0 X10.\nG1 Z-20.\nM30\n", "fanuc-lathe-a");
+    const Run r = run_bare("O1\nG97 S800 M3\nG0 X100. Z0.\nG1 Z-10. F0.2\nG0 X10.\nG1 Z-20.\nM30\n", "fanuc-lathe-a");
     require_clean(r);
     std::vector<Event> cuts;
     for (const Event& e : r.events)
@@ -160,7 +103,7 @@ TEST_CASE("G97: fixed rpm", "[feed]") {
 //   clamped part: (10.61033 − 10) mm at 0.2·3000 = 600 mm/min = 0.061033 s; total 11.311489 s.
 // (The end-point rpm alone would give 40 mm at 600 mm/min = 4 s.)
 TEST_CASE("G96: time of a facing cut with the rpm following X", "[feed]") {
-    const Run r = run("O1\nG50 S3000\nG96 S200 M3\nG0 X100. Z0.\nG1 X20. F0.2\nM30\n", "fanuc-lathe-a");
+    const Run r = run_bare("O1\nG50 S3000\nG96 S200 M3\nG0 X100. Z0.\nG1 X20. F0.2\nM30\n", "fanuc-lathe-a");
     require_clean(r);
     const auto m = moves(r);
     REQUIRE(m.size() == 2);
@@ -174,7 +117,7 @@ TEST_CASE("G96: time of a facing cut with the rpm following X", "[feed]") {
 // Lathe A G98 F100: Z0 → Z−50 is 50 mm → 30 s.
 // Lathe B G94 F100 (feed per minute in B): the same 30 s.
 TEST_CASE("feed per minute: time of a known move", "[feed]") {
-    const Run mill = run("O1\nG90 G94 G1 X30. Y40. F200.\nM30\n", "fanuc-mill");
+    const Run mill = run_bare("O1\nG90 G94 G1 X30. Y40. F200.\nM30\n", "fanuc-mill");
     require_clean(mill);
     REQUIRE(moves(mill).size() == 1);
     CHECK_FALSE(moves(mill)[0].feed_per_rev);
@@ -183,12 +126,12 @@ TEST_CASE("feed per minute: time of a known move", "[feed]") {
     CHECK(mill.result.total_time_s == Approx(15));
     CHECK(mill.result.feed_distance_mm == Approx(50));
 
-    const Run a = run("O1\nG98 G1 Z-50. F100.\nM30\n", "fanuc-lathe-a");
+    const Run a = run_bare("O1\nG98 G1 Z-50. F100.\nM30\n", "fanuc-lathe-a");
     require_clean(a);
     REQUIRE(moves(a).size() == 1);
     CHECK(moves(a)[0].time_s == Approx(30));
 
-    const Run b = run("O1\nG94 G1 Z-50. F100.\nM30\n", "fanuc-lathe-b");
+    const Run b = run_bare("O1\nG94 G1 Z-50. F100.\nM30\n", "fanuc-lathe-b");
     require_clean(b);
     REQUIRE(moves(b).size() == 1);
     CHECK(moves(b)[0].time_s == Approx(30));
@@ -200,7 +143,7 @@ TEST_CASE("feed per minute: time of a known move", "[feed]") {
 // F is modal: the second lathe cut (Z−10 → Z−25, 15 mm) keeps F0.2 → 9 s; total 6 + 9 = 15 s
 // (rapids have no rapid rate in this Setup: 0 s).
 TEST_CASE("feed per revolution: time of a known move", "[feed]") {
-    const Run a = run("O1\nG97 S500 M3\nG0 X40. Z0.\nG99 G1 Z-10. F0.2\nZ-25.\nM30\n", "fanuc-lathe-a");
+    const Run a = run_bare("O1\nG97 S500 M3\nG0 X40. Z0.\nG99 G1 Z-10. F0.2\nZ-25.\nM30\n", "fanuc-lathe-a");
     require_clean(a);
     std::vector<Event> cuts;
     for (const Event& e : a.events)
@@ -212,7 +155,7 @@ TEST_CASE("feed per revolution: time of a known move", "[feed]") {
     CHECK(cuts[1].time_s == Approx(9));
     CHECK(a.result.total_time_s == Approx(15));
 
-    const Run mill = run("O1\nS1000 M3\nG90 G95 G1 X10. F0.1\nM30\n", "fanuc-mill");
+    const Run mill = run_bare("O1\nS1000 M3\nG90 G95 G1 X10. F0.1\nM30\n", "fanuc-mill");
     require_clean(mill);
     REQUIRE(moves(mill).size() == 1);
     CHECK(moves(mill)[0].feed_per_rev);
@@ -227,8 +170,8 @@ TEST_CASE("feed per revolution: time of a known move", "[feed]") {
 // G0 → (100, 0, −12): only Y moves, 30 mm → 0.6 s. F does not matter for G00.
 // Totals: 1.6 s, rapid distance √(100² + 30² + 12²) + 30 = √11044 + 30 = 105.0904 + 30 = 135.0904 mm.
 TEST_CASE("rapid time from the Setup's rapid rates (mill)", "[feed]") {
-    const Run r = run("O1\nG90 G0 X100. Y30. Z-12. F1.\nG0 Y0.\nM30\n", "fanuc-mill",
-                      [](Setup& s) { s.rapid_mm_min = {6000, 3000, 1200, 0, 0, 0}; });
+    const Run r = run_bare("O1\nG90 G0 X100. Y30. Z-12. F1.\nG0 Y0.\nM30\n", "fanuc-mill",
+                           [](Setup& s) { s.rapid_mm_min = {6000, 3000, 1200, 0, 0, 0}; });
     require_clean(r);
     const auto m = moves(r);
     REQUIRE(m.size() == 2);
@@ -241,8 +184,8 @@ TEST_CASE("rapid time from the Setup's rapid rates (mill)", "[feed]") {
 // Lathe: X is a diameter, the axis moves its radius. Rates X 6000, Z 12000 mm/min.
 // G0 (X0, Z0) → (X100, Z−30): X radius 50 mm → 0.5 s; Z 30 mm → 0.15 s → 0.5 s.
 TEST_CASE("rapid time on a lathe uses the radius travel of X", "[feed]") {
-    const Run r = run("O1\nG0 X100. Z-30.\nM30\n", "fanuc-lathe-a",
-                      [](Setup& s) { s.rapid_mm_min = {6000, 0, 12000, 0, 0, 0}; });
+    const Run r = run_bare("O1\nG0 X100. Z-30.\nM30\n", "fanuc-lathe-a",
+                           [](Setup& s) { s.rapid_mm_min = {6000, 0, 12000, 0, 0, 0}; });
     require_clean(r);
     const auto m = moves(r);
     REQUIRE(m.size() == 1);
@@ -252,7 +195,7 @@ TEST_CASE("rapid time on a lathe uses the radius travel of X", "[feed]") {
 
 // Time per tool: a lathe T0101 cut of 6 s, then T0202 cuts of 9 s (G98 F100: 10 mm and 15 mm).
 TEST_CASE("time is booked to the active tool", "[feed]") {
-    const Run r = run("O1\nT0101\nG98 G1 Z-10. F100.\nT0202\nG1 Z-25.\nM30\n", "fanuc-lathe-a");
+    const Run r = run_bare("O1\nT0101\nG98 G1 Z-10. F100.\nT0202\nG1 Z-25.\nM30\n", "fanuc-lathe-a");
     require_clean(r);
     CHECK(r.result.time_per_tool_s.at(1) == Approx(6));
     CHECK(r.result.time_per_tool_s.at(2) == Approx(9));
@@ -268,7 +211,7 @@ TEST_CASE("time is booked to the active tool", "[feed]") {
 //   Mill:     G90 G0 X10. → G4 X2.: one dwell of 2 s, the tool stays at X10 (one move in all).
 //   Lathe A:  G0 X50. Z0. → G4 X1.5 (1.5 s) → G4 U2. (2 s): the tool stays at X50 Z0.
 TEST_CASE("G04 X is a dwell time, not a move", "[feed]") {
-    const Run mill = run("O1\nG90 G0 X10. Y0.\nG4 X2.\nM30\n", "fanuc-mill");
+    const Run mill = run_bare("O1\nG90 G0 X10. Y0.\nG4 X2.\nM30\n", "fanuc-mill");
     require_clean(mill);
     CHECK(moves(mill).size() == 1);
     CHECK(mill.result.final_position[X] == Approx(10));
@@ -278,7 +221,7 @@ TEST_CASE("G04 X is a dwell time, not a move", "[feed]") {
     REQUIRE(dwells.size() == 1);
     CHECK(dwells[0] == Approx(2));
 
-    const Run lathe = run("O1\nG0 X50. Z0.\nG4 X1.5\nG4 U2.\nM30\n", "fanuc-lathe-a");
+    const Run lathe = run_bare("O1\nG0 X50. Z0.\nG4 X1.5\nG4 U2.\nM30\n", "fanuc-lathe-a");
     require_clean(lathe);
     CHECK(moves(lathe).size() == 1);
     CHECK(lathe.result.final_position[X] == Approx(50));

@@ -4,6 +4,7 @@
 
 #include "interpreter/default_setup.hpp"
 #include "interpreter/interpreter.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -11,40 +12,26 @@
 
 using namespace kerf;
 using interpreter::EventKind;
+// The shared helpers, but not their `run`: runs here use the dialect's built-in machine (below).
+using test::moves;
+using test::Run;
+using test::X;
+using test::Y;
+using test::Z;
 
 namespace {
 
-struct Run {
-    interpreter::RunResult result;
-    std::vector<interpreter::Event> events;
-};
-
+// The built-in machine of the dialect (interpreter::default_setup), with `step_limit`; without
+// acceleration when `acceleration` is false.
 Run run(const std::string& text, const char* dialect_id, std::uint64_t step_limit = 10'000'000,
         bool acceleration = true) {
     const dialects::Dialect* d = dialects::builtin_registry().find(dialect_id);
-    REQUIRE(d);
-    interpreter::ProgramSet programs;
-    const auto file = programs.add("test.nc", text, *d);
+    if (!d) FAIL("no dialect " << dialect_id);
     interpreter::Setup setup = interpreter::default_setup(*d);
     setup.step_limit = step_limit;
     if (!acceleration) setup.accel_mm_s2 = {};
-    interpreter::VectorSink sink;
-    Run r;
-    r.result = interpreter::run(programs, *programs.first_program(file), *d, setup, sink);
-    r.events = sink.events;
-    return r;
+    return test::run_with(text, *d, setup);   // REQUIREs the program (the one assertion of a run)
 }
-
-std::vector<interpreter::Event> moves(const Run& r) {
-    std::vector<interpreter::Event> out;
-    for (const auto& e : r.events)
-        if (e.kind == EventKind::rapid || e.kind == EventKind::linear || e.kind == EventKind::arc_cw ||
-            e.kind == EventKind::arc_ccw)
-            out.push_back(e);
-    return out;
-}
-
-constexpr std::size_t X = 0, Y = 1, Z = 2;
 
 }  // namespace
 

@@ -18,26 +18,27 @@
 #include <string>
 #include <vector>
 
-#include "dialects/dialect.hpp"
 #include "interpreter/default_setup.hpp"
-#include "interpreter/interpreter.hpp"
 #include "machine/machine.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
 
 using namespace kerf;
 using interpreter::Event;
 using interpreter::EventKind;
 using interpreter::Setup;
+// The shared helpers, but not their `run`: runs here start from the machine configuration (below).
+using test::alarm_list;
+using test::dialect;
+using test::moves;
+using test::moves_on_line;
+using test::require_clean;
+using test::Run;
+using test::x_at;
+using test::X;
+using test::Y;
+using test::Z;
 
 namespace {
-
-constexpr std::size_t X = 0, Y = 1, Z = 2;
-
-const dialects::Dialect& dialect(const char* id) {
-    const dialects::Dialect* d = dialects::builtin_registry().find(id);
-    INFO(id);
-    REQUIRE(d != nullptr);
-    return *d;
-}
 
 machine::Machine base_machine(const char* id) {
     machine::Machine m = machine::default_machine_for(dialect(id));
@@ -60,64 +61,14 @@ machine::Axis& axis(machine::Machine& m, char letter) {
     return m.axes.front();
 }
 
-struct Run {
-    interpreter::RunResult result;
-    std::vector<Event> events;
-};
-
+// Under dialect `id`: base_machine(id) changed by `adjust`, made a Setup; step limit 100 000.
 Run run(const std::string& text, const char* id, const std::function<void(machine::Machine&)>& adjust = {}) {
     const dialects::Dialect& d = dialect(id);
     machine::Machine m = base_machine(id);
     if (adjust) adjust(m);
     Setup setup = interpreter::make_setup(m);
     setup.step_limit = 100'000;
-    interpreter::ProgramSet programs;
-    const auto file = programs.add("test.nc", text, d);
-    interpreter::VectorSink sink;
-    Run r;
-    const auto main = programs.first_program(file);
-    REQUIRE(main);
-    r.result = interpreter::run(programs, *main, d, setup, sink);
-    r.events = std::move(sink.events);
-    return r;
-}
-
-bool is_move(EventKind k) {
-    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw;
-}
-
-std::vector<Event> moves(const Run& r) {
-    std::vector<Event> out;
-    for (const Event& e : r.events)
-        if (is_move(e.kind)) out.push_back(e);
-    return out;
-}
-
-std::vector<Event> moves_on_line(const Run& r, std::uint32_t line) {
-    std::vector<Event> out;
-    for (const Event& e : moves(r))
-        if (e.source.line == line) out.push_back(e);
-    return out;
-}
-
-std::string alarm_list(const Run& r) {
-    std::string s;
-    for (const Event& a : r.result.alarms) s += "alarm " + std::to_string(a.code) + ": " + a.text + "\n";
-    return s;
-}
-
-void require_clean(const Run& r) {
-    INFO(alarm_list(r));
-    CHECK(r.result.alarms.empty());
-    CHECK(r.result.completed);
-}
-
-// The X of the last move ending at Z = tag.
-std::optional<double> x_at(const Run& r, double tag) {
-    std::optional<double> x;
-    for (const Event& e : moves(r))
-        if (std::fabs(e.end[Z] - tag) < 1e-9) x = e.end[X];
-    return x;
+    return test::run_with(text, d, setup);
 }
 
 // "G0 X#<first+i> Z<i+1>." for each variable: shows common variables as tagged moves (after the

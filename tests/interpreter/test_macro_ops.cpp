@@ -11,98 +11,20 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "dialects/dialect.hpp"
-#include "interpreter/default_setup.hpp"
-#include "interpreter/interpreter.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
 
 using namespace kerf;
-using interpreter::Event;
-using interpreter::EventKind;
-using interpreter::Setup;
+using namespace kerf::test;
 
 namespace {
 
-constexpr std::size_t X = 0, Y = 1, Z = 2;
 constexpr double kSentinel = -777777;
 
-const dialects::Dialect& dialect(const char* id) {
-    const dialects::Dialect* d = dialects::builtin_registry().find(id);
-    INFO(id);
-    REQUIRE(d != nullptr);
-    return *d;
-}
-
-Setup plain_setup(const dialects::Dialect& d) {
-    Setup s;
-    s.diameter_x = d.machine == dialects::MachineKind::lathe;
-    s.calculator_decimal = d.lexical.calculator_decimal;   // fanuc-mill: X10 = 0.010 mm (IS-B)
-    s.increment_mm = 0.001;
-    s.step_limit = 100'000;
-    return s;
-}
-
-struct Run {
-    interpreter::RunResult result;
-    std::vector<Event> events;
-};
-
-Run run(const std::string& text, const std::function<void(Setup&)>& adjust = {}, const char* id = "fanuc-mill") {
-    const dialects::Dialect& d = dialect(id);
-    interpreter::ProgramSet programs;
-    const auto file = programs.add("test.nc", text, d);
-    Setup setup = plain_setup(d);
-    if (adjust) adjust(setup);
-    interpreter::VectorSink sink;
-    Run r;
-    const auto main = programs.first_program(file);
-    REQUIRE(main);
-    r.result = interpreter::run(programs, *main, d, setup, sink);
-    r.events = std::move(sink.events);
-    return r;
-}
-
-bool is_move(EventKind k) {
-    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw;
-}
-
-std::vector<Event> moves(const Run& r) {
-    std::vector<Event> out;
-    for (const Event& e : r.events)
-        if (is_move(e.kind)) out.push_back(e);
-    return out;
-}
-
-std::string alarm_list(const Run& r) {
-    std::string s;
-    for (const Event& a : r.result.alarms) s += "alarm " + std::to_string(a.code) + ": " + a.text + "\n";
-    return s;
-}
-
-void require_clean(const Run& r) {
-    INFO(alarm_list(r));
-    CHECK(r.result.alarms.empty());
-    CHECK(r.result.completed);
-}
-
-void require_alarm(const Run& r, int number) {
-    INFO(alarm_list(r));
-    REQUIRE(r.result.alarms.size() == 1);
-    CHECK(r.result.alarms[0].code == number);
-    CHECK_FALSE(r.result.completed);
-}
-
-// The X of the last move that ends at Z = tag (the tags are unique per program), or nullopt.
-std::optional<double> x_at(const Run& r, double tag) {
-    std::optional<double> x;
-    for (const Event& e : moves(r))
-        if (std::fabs(e.end[Z] - tag) < 1e-9) x = e.end[X];
-    return x;
-}
+// Every run is fanuc-mill with bare_setup (tests/interpreter/interpreter_fixture.hpp), IS-B: X10 = 0.010 mm.
 
 // Runs `prelude`, then each expression into #199 and out through a tagged move (tags 1, 2, ...).
 // Result per expression: its value, nullopt when vacant; a missing move fails the test.
@@ -113,7 +35,7 @@ std::vector<std::optional<double>> values(const std::string& prelude, const std:
         text += "#199=" + expressions[i] + "\nG0 X-777777. Z" + tag + "\nG0 X#199 Z" + tag + "\n";
     }
     text += "M30\n";
-    const Run r = run(text);
+    const Run r = run_bare(text);
     require_clean(r);
     std::vector<std::optional<double>> out;
     for (std::size_t i = 0; i < expressions.size(); ++i) {
@@ -131,7 +53,7 @@ std::vector<bool> conditions(const std::string& prelude, const std::vector<std::
     for (std::size_t i = 0; i < list.size(); ++i)
         text += "#198=0\nIF [" + list[i] + "] THEN #198=1\nG0 X#198 Z" + std::to_string(i + 1) + ".\n";
     text += "M30\n";
-    const Run r = run(text);
+    const Run r = run_bare(text);
     require_clean(r);
     std::vector<bool> out;
     for (std::size_t i = 0; i < list.size(); ++i) {
@@ -263,7 +185,7 @@ TEST_CASE("ROUND FIX FUP of positive and negative numbers", "[macro]") {
 // increment of the address" (the manual's example): #1 = 1.2345, #2 = 2.3456, IS-B 0.001 mm:
 // X[ROUND[#1]+ROUND[#2]] = 1.235 + 2.346 = 3.581 (not 1 + 2 = 3).
 TEST_CASE("ROUND in an NC address rounds to the least input increment", "[macro]") {
-    const Run r = run("O1\n#1=1.2345\n#2=2.3456\nG90 G0 X[ROUND[#1]+ROUND[#2]] Z1.\nM30\n");
+    const Run r = run_bare("O1\n#1=1.2345\n#2=2.3456\nG90 G0 X[ROUND[#1]+ROUND[#2]] Z1.\nM30\n");
     require_clean(r);
     const auto x = x_at(r, 1);
     REQUIRE(x);
@@ -322,7 +244,7 @@ TEST_CASE("#0 in comparisons (the FANUC table)", "[macro]") {
 // FANUC: "G90 X100 Y#1" with #1 vacant is "G90 X100": the move happens without Y (Y stays 7);
 // a block whose only axis word is vacant does not move at all (two moves in total).
 TEST_CASE("a vacant variable omits its address", "[macro]") {
-    const Run r = run("O1\nG90 G0 X0. Y7.\nG0 X100. Y#5\nG0 Y#5\nM30\n");
+    const Run r = run_bare("O1\nG90 G0 X0. Y7.\nG0 X100. Y#5\nG0 Y#5\nM30\n");
     require_clean(r);
     const auto m = moves(r);
     REQUIRE(m.size() == 2);
@@ -343,7 +265,7 @@ TEST_CASE("macro alarms stop the program", "[macro]") {
     };
     for (const auto& [statement, number] : cases) {
         INFO(statement);
-        const Run r = run("O1\nG90 G0 X0. Y0.\n" + statement + "\nG0 X5.\nM30\n");
+        const Run r = run_bare("O1\nG90 G0 X0. Y0.\n" + statement + "\nG0 X5.\nM30\n");
         require_alarm(r, number);
         CHECK(moves(r).size() == 1);
     }
@@ -363,7 +285,7 @@ TEST_CASE("G65 argument specification I maps every letter to its local", "[macro
         text += "#100=-1\nIF [#" + std::to_string(n) + " NE #0] THEN #100=#" + std::to_string(n) + "\nG0 X#100 Z" +
                 std::to_string(n) + ".\n";
     text += "M99\n";
-    const Run r = run(text);
+    const Run r = run_bare(text);
     require_clean(r);
     for (int n = 1; n <= 26; ++n) {
         INFO("#" << n);
@@ -380,9 +302,9 @@ TEST_CASE("G65 argument specification I maps every letter to its local", "[macro
 //   O9300 shows #24·1000 at Z1 (10 for 0.010) and ADP[#24] at Z2 (10); the second call, with X10.,
 //   shows #24 at Z3 (10).
 TEST_CASE("G65 arguments without a decimal point are in least input increments", "[macro]") {
-    const Run r = run("O1\nG90 G0 X0. Y0. Z0.\nG65 P9300 X10\nG65 P9301 X10.\nM30\n"
-                      "O9300\nG0 X[#24*1000] Z1.\n#1=ADP[#24]\nG0 X#1 Z2.\nM99\n"
-                      "O9301\nG0 X#24 Z3.\nM99\n");
+    const Run r = run_bare("O1\nG90 G0 X0. Y0. Z0.\nG65 P9300 X10\nG65 P9301 X10.\nM30\n"
+                           "O9300\nG0 X[#24*1000] Z1.\n#1=ADP[#24]\nG0 X#1 Z2.\nM99\n"
+                           "O9301\nG0 X#24 Z3.\nM99\n");
     require_clean(r);
     REQUIRE(x_at(r, 1));
     CHECK(*x_at(r, 1) == Approx(10));
@@ -399,10 +321,10 @@ TEST_CASE("G65 arguments without a decimal point are in least input increments",
 //   back in O9100: #1 = 7 (Z4), #2 = 8 (Z5), #100 = 99 (Z6)
 //   back in main: #1 = 5 (Z1), #2 vacant → −1 (Z2)
 TEST_CASE("G65: local variables per call level, commons shared", "[macro]") {
-    const Run r = run("O1\n#1=5.\n#100=0\nG90 G0 X0. Y0. Z0.\nG65 P9100 A7.\nG0 X#1 Z1.\n"
-                      "#101=-1\nIF [#2 NE #0] THEN #101=#2\nG0 X#101 Z2.\nM30\n"
-                      "O9100\nG0 X#1 Z3.\n#2=8.\nG65 P9101\nG0 X#1 Z4.\nG0 X#2 Z5.\nG0 X#100 Z6.\nM99\n"
-                      "O9101\n#199=-1\nIF [#1 NE #0] THEN #199=#1\nG0 X#199 Z7.\n#1=99.\n#100=99.\nM99\n");
+    const Run r = run_bare("O1\n#1=5.\n#100=0\nG90 G0 X0. Y0. Z0.\nG65 P9100 A7.\nG0 X#1 Z1.\n"
+                           "#101=-1\nIF [#2 NE #0] THEN #101=#2\nG0 X#101 Z2.\nM30\n"
+                           "O9100\nG0 X#1 Z3.\n#2=8.\nG65 P9101\nG0 X#1 Z4.\nG0 X#2 Z5.\nG0 X#100 Z6.\nM99\n"
+                           "O9101\n#199=-1\nIF [#1 NE #0] THEN #199=#1\nG0 X#199 Z7.\n#1=99.\n#100=99.\nM99\n");
     require_clean(r);
     const std::vector<std::pair<double, double>> expected = {{1, 5}, {2, -1}, {3, 7}, {4, 7}, {5, 8}, {6, 99}, {7, -1}};
     for (const auto& [tag, value] : expected) {
@@ -415,7 +337,7 @@ TEST_CASE("G65: local variables per call level, commons shared", "[macro]") {
 
 // M98 does not open a level: the subprogram works on the caller's #1 (5 + 1 = 6).
 TEST_CASE("M98 subprograms share the caller's locals", "[macro]") {
-    const Run r = run("O1\n#1=5.\nG90 G0 X0. Y0. Z0.\nM98 P9200\nG0 X#1 Z1.\nM30\nO9200\n#1=#1+1.\nM99\n");
+    const Run r = run_bare("O1\n#1=5.\nG90 G0 X0. Y0. Z0.\nM98 P9200\nG0 X#1 Z1.\nM30\nO9200\n#1=#1+1.\nM99\n");
     require_clean(r);
     REQUIRE(x_at(r, 1));
     CHECK(*x_at(r, 1) == Approx(6));
@@ -425,9 +347,9 @@ TEST_CASE("M98 subprograms share the caller's locals", "[macro]") {
 
 // Three nested loops of 2, 3 and 4 passes: #100 counts 2·3·4 = 24 inner passes.
 TEST_CASE("WHILE loops nest three deep", "[macro]") {
-    const Run r = run("O1\n#100=0\n#1=0\nWHILE [#1 LT 2] DO 1\n#2=0\nWHILE [#2 LT 3] DO 2\n#3=0\n"
-                      "WHILE [#3 LT 4] DO 3\n#100=#100+1\n#3=#3+1\nEND 3\n#2=#2+1\nEND 2\n#1=#1+1\nEND 1\n"
-                      "G90 G0 X#100 Z1.\nM30\n");
+    const Run r = run_bare("O1\n#100=0\n#1=0\nWHILE [#1 LT 2] DO 1\n#2=0\nWHILE [#2 LT 3] DO 2\n#3=0\n"
+                           "WHILE [#3 LT 4] DO 3\n#100=#100+1\n#3=#3+1\nEND 3\n#2=#2+1\nEND 2\n#1=#1+1\nEND 1\n"
+                           "G90 G0 X#100 Z1.\nM30\n");
     require_clean(r);
     REQUIRE(x_at(r, 1));
     CHECK(*x_at(r, 1) == Approx(24));
@@ -437,8 +359,8 @@ TEST_CASE("WHILE loops nest three deep", "[macro]") {
 // can be nested to a maximum depth of three levels". The 16i manual does not name the number for
 // this case; 124 (DO/END do not correspond) or 126 (illegal loop number) are the candidates.
 TEST_CASE("a fourth WHILE level is an alarm", "[macro]") {
-    const Run r = run("O1\nWHILE [#1 LT 1] DO 1\nWHILE [#2 LT 1] DO 2\nWHILE [#3 LT 1] DO 3\nWHILE [#4 LT 1] DO 1\n"
-                      "#4=1\nEND 1\n#3=1\nEND 3\n#2=1\nEND 2\n#1=1\nEND 1\nM30\n");
+    const Run r = run_bare("O1\nWHILE [#1 LT 1] DO 1\nWHILE [#2 LT 1] DO 2\nWHILE [#3 LT 1] DO 3\nWHILE [#4 LT 1] DO 1\n"
+                           "#4=1\nEND 1\n#3=1\nEND 3\n#2=1\nEND 2\n#1=1\nEND 1\nM30\n");
     INFO(alarm_list(r));
     REQUIRE(r.result.alarms.size() == 1);
     CHECK((r.result.alarms[0].code == 124 || r.result.alarms[0].code == 126));
@@ -447,16 +369,16 @@ TEST_CASE("a fourth WHILE level is an alarm", "[macro]") {
 
 // FANUC alarm 126 "illegal loop number: in DO n, 1 ≤ n ≤ 3 is not established".
 TEST_CASE("DO 4 is alarm 126", "[macro]") {
-    const Run r = run("O1\n#1=0\nWHILE [#1 LT 1] DO 4\n#1=1\nEND 4\nM30\n");
+    const Run r = run_bare("O1\n#1=0\nWHILE [#1 LT 1] DO 4\n#1=1\nEND 4\nM30\n");
     require_alarm(r, 126);
 }
 
 // FANUC alarm 124 "DO and END do not correspond": END 2 closing DO 1; a DO whose END is missing
 // (the false condition looks for END 1); an END without any DO.
 TEST_CASE("DO/END mismatches are alarm 124", "[macro]") {
-    require_alarm(run("O1\n#1=0\nWHILE [#1 LT 2] DO 1\n#1=#1+1\nEND 2\nM30\n"), 124);
-    require_alarm(run("O1\nWHILE [1 EQ 2] DO 1\nG0 X1.\nM30\n"), 124);
-    require_alarm(run("O1\nG0 X1.\nEND 1\nM30\n"), 124);
+    require_alarm(run_bare("O1\n#1=0\nWHILE [#1 LT 2] DO 1\n#1=#1+1\nEND 2\nM30\n"), 124);
+    require_alarm(run_bare("O1\nWHILE [1 EQ 2] DO 1\nG0 X1.\nM30\n"), 124);
+    require_alarm(run_bare("O1\nG0 X1.\nEND 1\nM30\n"), 124);
 }
 
 // --- GOTO and IF ---------------------------------------------------------------------------------------
@@ -465,9 +387,9 @@ TEST_CASE("DO/END mismatches are alarm 124", "[macro]") {
 // (Y30), skipping X98; IF [#1 EQ 20] GOTO 40 jumps (Z40), skipping X97; IF [#1 NE 20] GOTO 50 does
 // not, so Z41 runs. Moves: start, X20, Y30, Z40, Z41.
 TEST_CASE("computed GOTO and IF GOTO", "[macro]") {
-    const Run r = run("O1\nG90 G0 X0. Y0. Z0.\n#1=20\nGOTO #1\nG0 X99.\nN20 G0 X20.\n#2=10\nGOTO [#2*3]\nG0 X98.\n"
-                      "N30 G0 Y30.\nIF [#1 EQ 20] GOTO 40\nG0 X97.\nN40 G0 Z40.\nIF [#1 NE 20] GOTO 50\nG0 Z41.\n"
-                      "N50 M30\n");
+    const Run r = run_bare("O1\nG90 G0 X0. Y0. Z0.\n#1=20\nGOTO #1\nG0 X99.\nN20 G0 X20.\n#2=10\nGOTO [#2*3]\nG0 X98.\n"
+                           "N30 G0 Y30.\nIF [#1 EQ 20] GOTO 40\nG0 X97.\nN40 G0 Z40.\nIF [#1 NE 20] GOTO 50\nG0 Z41.\n"
+                           "N50 M30\n");
     require_clean(r);
     const auto m = moves(r);
     REQUIRE(m.size() == 5);
@@ -481,7 +403,7 @@ TEST_CASE("computed GOTO and IF GOTO", "[macro]") {
 // GOTO to a sequence number the program lacks stops with an alarm (16i list: 128 "the sequence
 // number specified in the branch command ... cannot be searched").
 TEST_CASE("GOTO to a missing sequence number is an alarm", "[macro]") {
-    require_alarm(run("O1\nGOTO 77\nM30\n"), 128);
+    require_alarm(run_bare("O1\nGOTO 77\nM30\n"), 128);
 }
 
 // IF [..] THEN runs its statement only when the condition holds: #2 = 5 (taken), #3 stays 0.
@@ -500,7 +422,7 @@ TEST_CASE("IF THEN", "[macro]") {
 TEST_CASE("endless macro loops end at the step limit", "[macro]") {
     for (const char* text : {"O1\nN10 GOTO 10\nM30\n", "O1\nWHILE [1 EQ 1] DO 1\nEND 1\nM30\n"}) {
         INFO(text);
-        const Run r = run(text, [](Setup& s) { s.step_limit = 50; });
+        const Run r = run_bare(text, "fanuc-mill", [](Setup& s) { s.step_limit = 50; });
         REQUIRE(r.result.alarms.size() == 1);
         CHECK(r.result.alarms[0].text.find("step limit") != std::string::npos);
         CHECK(r.result.blocks <= 51);

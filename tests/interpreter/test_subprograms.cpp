@@ -10,110 +10,15 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <functional>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "dialects/dialect.hpp"
-#include "interpreter/default_setup.hpp"
-#include "interpreter/interpreter.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
 
 using namespace kerf;
-using interpreter::Event;
-using interpreter::EventKind;
-using interpreter::Setup;
-
-namespace {
-
-constexpr std::size_t X = 0, Y = 1, Z = 2;
-
-const dialects::Dialect& dialect(const char* id) {
-    const dialects::Dialect* d = dialects::builtin_registry().find(id);
-    INFO(id);
-    REQUIRE(d != nullptr);
-    return *d;
-}
-
-Setup plain_setup(const dialects::Dialect& d) {
-    Setup s;
-    s.diameter_x = d.machine == dialects::MachineKind::lathe;
-    s.calculator_decimal = d.lexical.calculator_decimal;
-    // The G52 reading is a machine switch resolved from the dialect (pcnc/ADV400: current point).
-    s.g52_current_point = interpreter::default_setup(d).g52_current_point;
-    s.g52_zeros_cancel = interpreter::default_setup(d).g52_zeros_cancel;
-    s.g54_cancels_g52 = interpreter::default_setup(d).g54_cancels_g52;
-    s.step_limit = 100'000;
-    return s;
-}
-
-struct Run {
-    interpreter::RunResult result;
-    std::vector<Event> events;
-    std::size_t files = 0;
-};
-
-Run run(const std::string& text, const char* id, const std::function<void(Setup&)>& adjust = {}) {
-    const dialects::Dialect& d = dialect(id);
-    interpreter::ProgramSet programs;
-    const auto file = programs.add("test.nc", text, d);
-    Setup setup = plain_setup(d);
-    if (adjust) adjust(setup);
-    interpreter::VectorSink sink;
-    Run r;
-    const auto main = programs.first_program(file);
-    REQUIRE(main);
-    r.result = interpreter::run(programs, *main, d, setup, sink);
-    r.events = std::move(sink.events);
-    r.files = programs.file_count();
-    return r;
-}
-
-bool is_move(EventKind k) {
-    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw;
-}
-
-std::vector<Event> moves(const Run& r) {
-    std::vector<Event> out;
-    for (const Event& e : r.events)
-        if (is_move(e.kind)) out.push_back(e);
-    return out;
-}
-
-std::vector<Event> of_kind(const Run& r, EventKind kind) {
-    std::vector<Event> out;
-    for (const Event& e : r.events)
-        if (e.kind == kind) out.push_back(e);
-    return out;
-}
-
-std::size_t moves_on_line(const Run& r, std::uint32_t line) {
-    std::size_t n = 0;
-    for (const Event& e : moves(r)) n += e.source.line == line;
-    return n;
-}
-
-std::string alarm_list(const Run& r) {
-    std::string s;
-    for (const Event& a : r.result.alarms) s += "alarm " + std::to_string(a.code) + ": " + a.text + "\n";
-    return s;
-}
-
-void require_clean(const Run& r) {
-    INFO(alarm_list(r));
-    CHECK(r.result.alarms.empty());
-    CHECK(r.result.completed);
-}
-
-void require_alarm(const Run& r, int number) {
-    INFO(alarm_list(r));
-    REQUIRE(r.result.alarms.size() == 1);
-    CHECK(r.result.alarms[0].code == number);
-    CHECK_FALSE(r.result.completed);
-}
-
-}  // namespace
+using namespace kerf::test;
 
 // --- the packed form M98 P<repeats><program> (dialects.md §3.6) ---------------------------------
 
@@ -128,7 +33,7 @@ TEST_CASE("M98 P41001 runs O1001 four times", "[subprograms]") {
     REQUIRE(calls.size() == 1);
     CHECK(calls[0].code == 1001);
     CHECK(of_kind(r, EventKind::return_).size() == 4);
-    CHECK(moves_on_line(r, 7) == 4);
+    CHECK(count_moves_on_line(r, 7) == 4);
     std::vector<double> z;
     for (const Event& e : moves(r))
         if (e.source.line == 7) z.push_back(e.end[Z]);
@@ -175,7 +80,7 @@ TEST_CASE("M98 P12 L100 (ADV400) runs O12 a hundred times", "[subprograms]") {
     const Run r = run("O1\nG90 G0 X0 Y0\nM98 P12 L100\nM30\nO12\nG91 G0 X1\nG90\nM99\n", "adv400-mill");
     require_clean(r);
     CHECK(r.result.final_position[X] == Approx(100));
-    CHECK(moves_on_line(r, 6) == 100);
+    CHECK(count_moves_on_line(r, 6) == 100);
     CHECK(of_kind(r, EventKind::call).size() == 1);
     CHECK(of_kind(r, EventKind::return_).size() == 100);
 }
