@@ -32,11 +32,11 @@ public:
     void on_event(const interpreter::Event& e) override {
         if (!out_) return;
         interpreter::append_event_json(buffer_, e, programs_, axes_);
-        buffer_ += '\n';
+        buffer_.push_back('\n');
         if (buffer_.size() >= kFlushBytes) flush();
     }
     void flush() {
-        if (out_ && !buffer_.empty()) out_->write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+        if (out_ && buffer_.size() > 0) out_->write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
         buffer_.clear();
     }
 
@@ -45,7 +45,7 @@ private:
     std::ostream* out_;
     const interpreter::ProgramSet& programs_;
     std::string axes_;
-    std::string buffer_;
+    fmt::memory_buffer buffer_;
 };
 
 void print_summary(const DryRun& run, const interpreter::RunResult& result, const std::string& axes) {
@@ -73,7 +73,8 @@ int run_run(const RunCliOptions& o) {
             return kExitUsage;
         }
     }
-    const std::string axes = run.dialect->lexical.axes;
+    // The machine's axes (a lathe has no Y even where the dialect knows the letter).
+    const std::string axes = run.setup.axis_order.empty() ? run.dialect->lexical.axes : run.setup.axis_order;
     JsonLinesSink sink(o.trace.empty() ? nullptr : &trace_file, run.programs, axes);
     const interpreter::RunResult result = execute(run, sink, o.state);
     sink.flush();

@@ -24,65 +24,102 @@ bool is_motion(EventKind k) {
            k == EventKind::thread;
 }
 
-using Out = std::back_insert_iterator<std::string>;
+// Written into an fmt::memory_buffer with literal pieces appended directly: the trace of a
+// 100 MB program is millions of lines, and a format string per piece costs more than the numbers.
+using Buffer = fmt::memory_buffer;
 
-void write_string(Out out, std::string_view s) {
-    *out++ = '"';
+void put(Buffer& out, std::string_view text) { out.append(text.data(), text.data() + text.size()); }
+
+void put_number(Buffer& out, double v) { fmt::format_to(std::back_inserter(out), "{}", snap(v)); }
+
+void put_int(Buffer& out, long long v) { fmt::format_to(std::back_inserter(out), "{}", v); }
+
+void write_string(Buffer& out, std::string_view s) {
+    out.push_back('"');
     for (const char c : s) {
         switch (c) {
-            case '"': fmt::format_to(out, "\\\""); break;
-            case '\\': fmt::format_to(out, "\\\\"); break;
-            case '\n': fmt::format_to(out, "\\n"); break;
-            case '\r': fmt::format_to(out, "\\r"); break;
-            case '\t': fmt::format_to(out, "\\t"); break;
+            case '"': put(out, "\\\""); break;
+            case '\\': put(out, "\\\\"); break;
+            case '\n': put(out, "\\n"); break;
+            case '\r': put(out, "\\r"); break;
+            case '\t': put(out, "\\t"); break;
             default:
-                if (static_cast<unsigned char>(c) < 0x20) fmt::format_to(out, "\\u{:04x}", static_cast<int>(c));
-                else *out++ = c;
+                if (static_cast<unsigned char>(c) < 0x20) fmt::format_to(std::back_inserter(out), "\\u{:04x}", static_cast<int>(c));
+                else out.push_back(c);
         }
     }
-    *out++ = '"';
+    out.push_back('"');
 }
 
-void write_position(Out out, std::string_view key, const Position& p, std::string_view axes) {
-    fmt::format_to(out, ",\"{}\":{{", key);
+void write_position(Buffer& out, std::string_view key, const Position& p, std::string_view axes) {
+    put(out, ",\"");
+    put(out, key);
+    put(out, "\":{");
     bool first = true;
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         if (axes.find(kAxisLetters[a]) == std::string_view::npos) continue;
-        fmt::format_to(out, "{}\"{}\":{}", first ? "" : ",", kAxisLetters[a], snap(p[a]));
+        if (!first) out.push_back(',');
+        out.push_back('"');
+        out.push_back(kAxisLetters[a]);
+        put(out, "\":");
+        put_number(out, p[a]);
         first = false;
     }
-    *out++ = '}';
+    out.push_back('}');
+}
+
+void write_field(Buffer& out, std::string_view key, double v) {
+    put(out, ",\"");
+    put(out, key);
+    put(out, "\":");
+    put_number(out, v);
 }
 
 }  // namespace
 
-void append_event_json(std::string& line, const Event& e, const ProgramSet& programs, std::string_view axes) {
-    Out out(line);
-    fmt::format_to(out, "{{\"kind\":\"{}\",\"file\":", to_string(e.kind));
+void append_event_json(fmt::memory_buffer& out, const Event& e, const ProgramSet& programs, std::string_view axes) {
+    put(out, "{\"kind\":\"");
+    put(out, to_string(e.kind));
+    put(out, "\",\"file\":");
     write_string(out, programs.file(e.source.file).name);
-    fmt::format_to(out, ",\"line\":{}", e.source.line);
+    put(out, ",\"line\":");
+    put_int(out, e.source.line);
     write_position(out, "end", e.end, axes);
     write_position(out, "machine", e.machine_end, axes);
     if (is_motion(e.kind)) {
         write_position(out, "start", e.start, axes);
-        fmt::format_to(out, ",\"length_mm\":{},\"time_s\":{}", snap(e.length_mm), snap(e.time_s));
-        if (e.kind != EventKind::rapid)
-            fmt::format_to(out, ",\"feed\":{},\"feed_per_rev\":{},\"spindle_rpm\":{},\"spindle_running\":{}", snap(e.feed),
-                           e.feed_per_rev, snap(e.spindle_rpm), e.spindle_running);
+        write_field(out, "length_mm", e.length_mm);
+        write_field(out, "time_s", e.time_s);
+        if (e.kind != EventKind::rapid) {
+            write_field(out, "feed", e.feed);
+            put(out, e.feed_per_rev ? ",\"feed_per_rev\":true" : ",\"feed_per_rev\":false");
+            write_field(out, "spindle_rpm", e.spindle_rpm);
+            put(out, e.spindle_running ? ",\"spindle_running\":true" : ",\"spindle_running\":false");
+        }
     }
     if (e.center) {
         write_position(out, "center", *e.center, axes);
-        fmt::format_to(out, ",\"radius\":{}", snap(e.radius));
+        write_field(out, "radius", e.radius);
     }
-    if (e.kind == EventKind::dwell) fmt::format_to(out, ",\"time_s\":{}", snap(e.time_s));
-    if (e.kind == EventKind::spindle) fmt::format_to(out, ",\"spindle_rpm\":{}", snap(e.spindle_rpm));
-    fmt::format_to(out, ",\"tool\":{}", e.tool);
-    if (e.code) fmt::format_to(out, ",\"code\":{}", e.code);
+    if (e.kind == EventKind::dwell) write_field(out, "time_s", e.time_s);
+    if (e.kind == EventKind::spindle) write_field(out, "spindle_rpm", e.spindle_rpm);
+    put(out, ",\"tool\":");
+    put_int(out, e.tool);
+    if (e.code) {
+        put(out, ",\"code\":");
+        put_int(out, e.code);
+    }
     if (!e.text.empty()) {
-        fmt::format_to(out, ",\"text\":");
+        put(out, ",\"text\":");
         write_string(out, e.text);
     }
-    *out++ = '}';
+    out.push_back('}');
+}
+
+void append_event_json(std::string& line, const Event& e, const ProgramSet& programs, std::string_view axes) {
+    fmt::memory_buffer buffer;
+    append_event_json(buffer, e, programs, axes);
+    line.append(buffer.data(), buffer.size());
 }
 
 json::object event_to_json(const Event& e, const ProgramSet& programs, std::string_view axes) {

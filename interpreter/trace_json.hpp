@@ -2,6 +2,8 @@
 // caller writes it where it wants.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <boost/json/value.hpp>
 #include <string>
 
@@ -12,6 +14,7 @@ namespace kerf::interpreter {
 // One JSON object per event: kind, file, line, end (axis letter → number, work coordinates, lathe X
 // as diameter), and per kind: start, center, radius, length_mm, time_s, feed, tool, code, text.
 // Appends the event as one line of JSON text (no newline) to `line`: the fast path of --trace.
+void append_event_json(fmt::memory_buffer& line, const Event& e, const ProgramSet& programs, std::string_view axes);
 void append_event_json(std::string& line, const Event& e, const ProgramSet& programs, std::string_view axes);
 // The same as a JSON object (parsed from that text, so both always agree).
 boost::json::object event_to_json(const Event& e, const ProgramSet& programs, std::string_view axes);
