@@ -33,12 +33,21 @@ deps:
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
 
+# The parse benchmark (bench/run.sh), then the dry run against LinuxCNC's rs274
+# (bench/dryrun_vs_rs274.sh; rs274 comes from linuxcnc-uspace, /usr/bin/time from time).
+BENCH_PACKAGES := libbenchmark-dev linuxcnc-uspace time
 bench: deps
-	@dpkg-query -W -f='$${Status}' libbenchmark-dev 2>/dev/null | grep -q "install ok installed" || \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libbenchmark-dev
+	@missing=""; for p in $(BENCH_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DKERF_BENCH=ON
-	cmake --build $(BUILD_DIR) -j $(JOBS) --target kerf_bench kerf
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target kerf_bench kerf_bench_dryrun kerf
 	./bench/run.sh $(BUILD_DIR)
+	./bench/dryrun_vs_rs274.sh $(BUILD_DIR)
 
 fuzz:
 	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DKERF_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
