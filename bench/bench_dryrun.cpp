@@ -33,6 +33,7 @@
 #include <sstream>
 #include <string>
 
+#include "bench/bench_input.hpp"
 #include "bench/meter.hpp"
 #include "dialects/dialect.hpp"
 #include "interpreter/default_setup.hpp"
@@ -55,50 +56,14 @@ int big_iterations() {
     return n > 0 ? n : 3;
 }
 
-struct Input {
-    std::optional<std::string> text;
-    std::string error;
-};
-
-const Input& input() {
-    static const Input in = [] {
-        Input r;
-        const std::string path = bench_file_path();
-        std::ifstream f(path, std::ios::binary);
-        if (!f) {
-            r.error = "cannot open " + path +
-                      " (set KERF_DRYRUN_FILE, or generate it: python3 bench/gen_mill.py bench-dryrun-100mb.nc 100 "
-                      "--runnable)";
-            return r;
-        }
-        std::ostringstream ss;
-        ss << f.rdbuf();
-        if (ss.str().empty()) {
-            r.error = path + " is empty";
-            return r;
-        }
-        r.text = std::move(ss).str();
-        return r;
-    }();
+const kerf::bench::Input& input() {
+    static const kerf::bench::Input in = kerf::bench::read_input(bench_file_path(), "set KERF_DRYRUN_FILE, or generate it: python3 bench/gen_mill.py bench-dryrun-100mb.nc 100 --runnable");
     return in;
 }
 
-const kerf::dialects::Dialect* mill_dialect() {
-    static const kerf::dialects::Dialect* d = kerf::dialects::builtin_registry().find("fanuc-mill");
-    return d;
-}
+using kerf::bench::mill_dialect;
 
-bool ready(benchmark::State& state) {
-    if (!input().text) {
-        state.SkipWithError(input().error.c_str());
-        return false;
-    }
-    if (!mill_dialect()) {
-        state.SkipWithError("dialect fanuc-mill is not in the built-in registry");
-        return false;
-    }
-    return true;
-}
+bool ready(benchmark::State& state) { return kerf::bench::ready(state, input()); }
 
 // Counts events; nothing else (the sink's virtual call is the only cost).
 class CountingSink : public interp::EventSink {

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "ast/typed.hpp"
+#include "bench/bench_input.hpp"
 #include "bench/meter.hpp"
 #include "dialects/dialect.hpp"
 #include "grammar/parse.hpp"
@@ -51,50 +52,14 @@ int big_iterations() {
 }
 
 // The input, read once. nullopt (with `error` set) if the file is missing or empty.
-struct Input {
-    std::optional<std::string> text;
-    std::string error;
-};
-
-const Input& input() {
-    static const Input in = [] {
-        Input r;
-        const std::string path = bench_file_path();
-        std::ifstream f(path, std::ios::binary);
-        if (!f) {
-            r.error = "cannot open " + path +
-                      " (set KERF_BENCH_FILE, or generate it: python3 bench/gen_mill.py bench-100mb.nc 100)";
-            return r;
-        }
-        std::ostringstream ss;
-        ss << f.rdbuf();
-        if (ss.str().empty()) {
-            r.error = path + " is empty";
-            return r;
-        }
-        r.text = std::move(ss).str();
-        return r;
-    }();
+const kerf::bench::Input& input() {
+    static const kerf::bench::Input in = kerf::bench::read_input(bench_file_path(), "set KERF_BENCH_FILE, or generate it: python3 bench/gen_mill.py bench-100mb.nc 100");
     return in;
 }
 
-const kerf::dialects::Dialect* mill_dialect() {
-    static const kerf::dialects::Dialect* d = kerf::dialects::builtin_registry().find("fanuc-mill");
-    return d;
-}
+using kerf::bench::mill_dialect;
 
-// Skips the benchmark with a message if the input or the dialect is missing.
-bool ready(benchmark::State& state) {
-    if (!input().text) {
-        state.SkipWithError(input().error.c_str());
-        return false;
-    }
-    if (!mill_dialect()) {
-        state.SkipWithError("dialect fanuc-mill is not in the built-in registry");
-        return false;
-    }
-    return true;
-}
+bool ready(benchmark::State& state) { return kerf::bench::ready(state, input()); }
 
 // Bytes held by the tree's arrays (size, not capacity: reserved capacity that is never written
 // costs address space only).
