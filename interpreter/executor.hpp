@@ -119,6 +119,8 @@ class Executor;
 
 // Work coordinates (program units, lathe X diameter) → geometric mm (X radius).
 motion::Vec3 geometric_mm(const Position& p, bool diameter_x, double scale);
+// And back: X, Y, Z of `g` in program units into a copy of `like` (whose other axes are kept).
+Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, double scale);
 
 // The system variables (#1000 and up) as the interpreter's state: executor_system.cpp.
 class ExecutorSystemVariables : public macro::SystemVariables {
@@ -213,7 +215,6 @@ private:
                           const std::vector<std::pair<int, macro::Value>>& arguments, bool modal);
     std::optional<std::uint32_t> find_end(const Frame& frame, std::uint32_t from, int label) const;
     bool evaluate_words(const ast::BlockView& view, BlockWords& out);
-    std::uint32_t data_letters(const ast::BlockView& view) const;
     macro::Options macro_options(bool address) const;
     void remember_words(const ast::BlockView& view, const BlockWords& words);
     void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);

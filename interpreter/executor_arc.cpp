@@ -23,13 +23,6 @@ motion::Vec3 rotate_vector(motion::Vec3 v, const std::optional<Rotation>& rotati
     return v;
 }
 
-Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, double scale) {
-    Position p = like;
-    p[0] = (diameter_x ? g.x * 2 : g.x) / scale;
-    p[1] = g.y / scale;
-    p[2] = g.z / scale;
-    return p;
-}
 
 }  // namespace
 

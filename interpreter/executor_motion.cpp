@@ -37,6 +37,14 @@ motion::Vec3 geometric_mm(const Position& p, bool diameter_x, double scale) {
     return {(diameter_x ? p[0] / 2 : p[0]) * scale, p[1] * scale, p[2] * scale};
 }
 
+Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, double scale) {
+    Position p = like;
+    p[0] = (diameter_x ? g.x * 2 : g.x) / scale;
+    p[1] = g.y / scale;
+    p[2] = g.z / scale;
+    return p;
+}
+
 Position Executor::target_position(const BlockWords& words, bool& moves) const {
     // Built in the program's frame (G68 undone), then turned back into work coordinates.
     const Position start = to_program(position_);

@@ -10,14 +10,10 @@ namespace kerf::interpreter {
 
 namespace {
 
-// The plane's (first, second) axes as Position indices (vec.hpp: G17 X Y, G18 Z X, G19 Y Z).
+// The plane's (first, second) axes as Position indices (motion::Axis x, y, z are 0, 1, 2 there too).
 std::pair<std::size_t, std::size_t> plane_indices(motion::Plane plane) {
-    switch (plane) {
-        case motion::Plane::xy: return {0, 1};
-        case motion::Plane::zx: return {2, 0};
-        case motion::Plane::yz: return {1, 2};
-    }
-    return {0, 1};
+    const motion::PlaneAxes axes = motion::plane_axes(plane);
+    return {static_cast<std::size_t>(axes.first), static_cast<std::size_t>(axes.second)};
 }
 
 Position rotate(const Position& p, const Rotation& r, double angle) {

@@ -49,22 +49,23 @@ constexpr OffsetRange kMillOffsets[] = {
     {12001, 999, OffsetField::d_wear},   {13001, 999, OffsetField::d_geometry},
 };
 
-double& field_of(ToolOffset& t, OffsetField f) {
-    static double tip_dummy = 0;   // never used: the tip is an int, handled by the caller
+// The register a variable range maps to; nullptr for the tip number, an int (read and written apart).
+template <class Offset>   // ToolOffset or const ToolOffset
+auto field_of(Offset& t, OffsetField f) -> decltype(&t.length) {
     switch (f) {
-        case OffsetField::x_wear: return t.wear[0];
-        case OffsetField::z_wear: return t.wear[2];
-        case OffsetField::r_wear: return t.nose_radius_wear;
-        case OffsetField::x_geometry: return t.geometry[0];
-        case OffsetField::z_geometry: return t.geometry[2];
-        case OffsetField::r_geometry: return t.nose_radius;
-        case OffsetField::h_wear: return t.length_wear;
-        case OffsetField::h_geometry: return t.length;
-        case OffsetField::d_wear: return t.radius_wear;
-        case OffsetField::d_geometry: return t.radius;
+        case OffsetField::x_wear: return &t.wear[0];
+        case OffsetField::z_wear: return &t.wear[2];
+        case OffsetField::r_wear: return &t.nose_radius_wear;
+        case OffsetField::x_geometry: return &t.geometry[0];
+        case OffsetField::z_geometry: return &t.geometry[2];
+        case OffsetField::r_geometry: return &t.nose_radius;
+        case OffsetField::h_wear: return &t.length_wear;
+        case OffsetField::h_geometry: return &t.length;
+        case OffsetField::d_wear: return &t.radius_wear;
+        case OffsetField::d_geometry: return &t.radius;
         case OffsetField::tip: break;
     }
-    return tip_dummy;
+    return nullptr;
 }
 
 // Variable ranges per axis: #5001 + i, the i-th axis of the machine (0-based).
@@ -96,9 +97,8 @@ std::optional<macro::Value> Executor::read_system(int number) {
         if (offset > setup_.tool_offset_count) return std::nullopt;
         const auto it = tools_.find(offset);
         if (it == tools_.end()) return Value::of(0);
-        if (r.field == OffsetField::tip) return Value::of(it->second.tip);
-        ToolOffset copy = it->second;
-        return Value::of(field_of(copy, r.field));
+        const ToolOffset& t = it->second;
+        return Value::of(r.field == OffsetField::tip ? t.tip : *field_of(t, r.field));
     }
     if ((number >= 1000 && number <= 1035) || (number >= 1100 && number <= 1135)) return Value::of(0);
     if (number == 3000 || number == 3006) return Value::vacant_value();
@@ -179,7 +179,7 @@ macro::WriteResult Executor::write_system(int number, macro::Value value) {
         if (offset > setup_.tool_offset_count) return WriteResult::undefined;
         ToolOffset& t = tools_[offset];
         if (r.field == OffsetField::tip) t.tip = static_cast<int>(std::lround(v));
-        else field_of(t, r.field) = v;
+        else *field_of(t, r.field) = v;
         return WriteResult::ok;
     }
     if (number >= kWorkOffsets && number <= kWorkOffsetsEnd) {

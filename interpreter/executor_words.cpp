@@ -21,14 +21,12 @@ macro::Options Executor::macro_options(bool address) const {
     return o;
 }
 
-// Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words):
-// they do not move the tool and do not set the modal F, S or T (the code's parameter_words).
-std::uint32_t Executor::data_letters(const ast::BlockView&) const { return scan_.data_letters; }
-
 bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
     const LoadedFile& file = file_of(*frame_);
     const dialects::LexicalRules& rules = dialect_.lexical;
-    const std::uint32_t data = data_letters(view);
+    // Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words)
+    // do not move the tool and do not set the modal F, S or T (the codes' parameter_words).
+    const std::uint32_t data = scan_.data_letters;
     const macro::Options options = macro_options(true);
     const auto tokens = view.tokens();
     for (std::uint32_t i = 0; i < tokens.size(); ++i) {
