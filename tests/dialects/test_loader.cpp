@@ -326,3 +326,13 @@ TEST_CASE("user dialect files through Registry::add_text") {
         CHECK(combined.code("G71")->function == builtin("fanuc-lathe-c").code("G71")->function);
     }
 }
+
+TEST_CASE("lexical.tool_word is mmnn or number; anything else is reported") {
+    CHECK(builtin("fanuc-mill").lexical.tool_word == "number");      // T is a tool number, M06 changes
+    CHECK(builtin("fanuc-lathe-a").lexical.tool_word == "mmnn");     // T0101: tool 1, offset 1
+    std::string text = minimal_dialect();
+    text.insert(text.find("axes = "), "tool_word = \"nnmm\"\n");
+    Registry reg;
+    const std::vector<LoadError> errors = reg.add_text(text, "user.toml");
+    CHECK(any_error_mentions(errors, "lexical.tool_word: unknown value 'nnmm'"));
+}
