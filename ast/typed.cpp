@@ -112,66 +112,66 @@ BlockFacts bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t 
     return facts;
 }
 
-void split_programs(const SyntaxTree& tree, std::vector<Program>& programs) {
-    Program current;
-    bool open = false;
-    bool has_code = false;
-    auto close = [&](std::uint32_t end_block) {
-        if (open && (has_code || current.number)) {
-            current.end_block = end_block;
-            programs.push_back(current);
-        }
-        open = false;
-        has_code = false;
-    };
-    for (std::uint32_t i = 0; i < tree.block_count(); ++i) {
-        const Block& b = tree.blocks[i];
-        switch (b.kind) {
-            case BlockKind::program_start: {
-                close(i);
-                current = Program{};
-                current.first_block = i;
-                for (std::uint32_t t = b.first_token; t < tree.block_token_end(i); ++t) {
-                    if (tree.tokens[t].kind == TokenKind::word && tree.tokens[t].letter == 'O') {
-                        current.o_token = static_cast<std::int32_t>(t);
-                        current.number = integer_value(tree, tree.tokens[t]);
-                        break;
-                    }
-                }
-                open = true;
-                has_code = true;
-                break;
-            }
-            case BlockKind::percent:
-            case BlockKind::tail:
-                close(i);
-                break;
-            case BlockKind::code:
-                if (!open) {
-                    current = Program{};
-                    current.first_block = i;
-                    open = true;
-                }
-                has_code = true;
-                break;
-            case BlockKind::blank:
-            case BlockKind::comment_only:
-                if (!open) {
-                    current = Program{};
-                    current.first_block = i;
-                    open = true;
-                }
-                break;
-        }
-    }
-    close(static_cast<std::uint32_t>(tree.block_count()));
-}
-
 }  // namespace
 
-TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
+void ProgramSplitter::close(std::uint32_t end_block) {
+    if (open_ && (has_code_ || current_.number)) {
+        current_.end_block = end_block;
+        programs_.push_back(current_);
+    }
+    open_ = false;
+    has_code_ = false;
+}
+
+void ProgramSplitter::finish(std::uint32_t end_block) { close(end_block); }
+
+std::optional<Program> ProgramSplitter::open_program() const {
+    if (!open_ || !(has_code_ || current_.number)) return std::nullopt;
+    return current_;
+}
+
+void ProgramSplitter::feed(const SyntaxTree& tree, std::uint32_t local, std::uint32_t block) {
+    const Block& b = tree.blocks[local];
+    auto open_here = [&] {
+        if (open_) return;
+        current_ = Program{};
+        current_.first_block = block;
+        open_ = true;
+    };
+    switch (b.kind) {
+        case BlockKind::program_start:
+            close(block);
+            current_ = Program{};
+            current_.first_block = block;
+            for (std::uint32_t t = b.first_token; t < tree.block_token_end(local); ++t) {
+                if (tree.tokens[t].kind == TokenKind::word && tree.tokens[t].letter == 'O') {
+                    current_.o_token = static_cast<std::int32_t>(t);
+                    current_.number = integer_value(tree, tree.tokens[t]);
+                    break;
+                }
+            }
+            open_ = true;
+            has_code_ = true;
+            break;
+        case BlockKind::percent:
+        case BlockKind::tail:
+            close(block);
+            break;
+        case BlockKind::code:
+            open_here();
+            has_code_ = true;
+            break;
+        case BlockKind::blank:
+        case BlockKind::comment_only:
+            open_here();
+            break;
+    }
+}
+
+TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start) {
     TypedFile file(tree, dialect);
     BindContext context(dialect.lexical);
+    context.linear = linear_at_start;
     std::vector<std::size_t> call_blocks;
     for (std::size_t i = 0; i < tree.block_count(); ++i) {
         const BlockFacts facts = bind_block(tree, dialect, i, context);
@@ -184,7 +184,11 @@ TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect) {
                  "a block has one N word, at its start; remove this one or split the block"});
         }
     }
-    split_programs(tree, file.programs_);
+    file.linear_at_end_ = context.linear;
+    ProgramSplitter splitter;
+    for (std::uint32_t i = 0; i < tree.block_count(); ++i) splitter.feed(tree, i, i);
+    splitter.finish(static_cast<std::uint32_t>(tree.block_count()));
+    file.programs_ = std::move(splitter.programs());
     // Call forms that contradict each other (dialects.md §3.6).
     for (const std::size_t i : call_blocks) {
         const BlockView view = file.block(i);
@@ -218,6 +222,7 @@ void TypedFile::rebind_block(SyntaxTree& tree, std::size_t index) {
 
 // --- views -----------------------------------------------------------------------------------------
 
+const SyntaxTree& BlockView::tree() const { return file_->tree(); }
 const Block& BlockView::block() const { return file_->tree().blocks[index_]; }
 Range BlockView::range() const { return file_->tree().block_range(index_); }
 std::span<const Token> BlockView::tokens() const { return file_->tree().block_tokens(index_); }

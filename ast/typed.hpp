@@ -50,7 +50,8 @@ class TypedFile;
 class BlockView {
 public:
     BlockView(const TypedFile& file, std::size_t index) : file_(&file), index_(index) {}
-    std::size_t index() const { return index_; }
+    std::size_t index() const { return index_; }   // in its TypedFile (a piece of a long file: see interpreter/loaded_file.hpp)
+    const SyntaxTree& tree() const;
     const Block& block() const;
     Range range() const;
     std::span<const Token> tokens() const;
@@ -80,10 +81,31 @@ private:
     std::size_t index_;
 };
 
+// Splits blocks into programs (an O line starts one, '%' and the tail end one, code before the
+// first O line is a program without number), fed block by block so that a file read in pieces
+// splits exactly as the whole file. Block indices are the caller's (global in a long file).
+class ProgramSplitter {
+public:
+    void feed(const SyntaxTree& tree, std::uint32_t local_block, std::uint32_t block);
+    void finish(std::uint32_t end_block);   // closes the open program at the end of the file
+    std::vector<Program>& programs() { return programs_; }
+    // The program still open at the last block fed, if it already counts as one (a number or code).
+    std::optional<Program> open_program() const;
+
+private:
+    void close(std::uint32_t end_block);
+    std::vector<Program> programs_;
+    Program current_;
+    bool open_ = false;
+    bool has_code_ = false;
+};
+
 class TypedFile {
 public:
     // Binds `tree` (sets token roles in place) against `dialect`. Both must outlive the result.
-    static TypedFile bind(SyntaxTree& tree, const dialects::Dialect& dialect);
+    // `linear_at_start`: the static G01 reading the previous piece of a long file ended with.
+    static TypedFile bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start = false);
+    bool linear_at_end() const { return linear_at_end_; }
 
     const SyntaxTree& tree() const { return *tree_; }
     const dialects::Dialect& dialect() const { return *dialect_; }
@@ -102,6 +124,7 @@ private:
     const dialects::Dialect* dialect_;
     std::vector<Program> programs_;
     std::vector<Diagnostic> diagnostics_;
+    bool linear_at_end_ = false;
 };
 
 // Integer value of a numeric word (P41001, T0101), if it is an integer.

@@ -38,7 +38,7 @@ std::vector<fs::path> dialect_files(const DryRunOptions& o, const ProjectConfig&
 }
 
 // --dialect, else .kerf.toml's dialect, else detection from the text.
-std::string dialect_id(const DryRunOptions& o, const ProjectConfig& config, const std::string& text) {
+std::string dialect_id(const DryRunOptions& o, const ProjectConfig& config, std::string_view text) {
     if (o.dialect != "auto") return o.dialect;
     if (!config.dialect.empty() && config.dialect != "auto") return config.dialect;
     return grammar::detect_dialect(text).dialect;
@@ -89,9 +89,13 @@ fs::path machine_file(const DryRunOptions& o, const ProjectConfig& config) {
     return config.machine_file.value_or(fs::path{});
 }
 
-// Reads and binds the program, hooks up the folder loader, finds the main program.
-int load_program(DryRun& run, const std::string& file, std::string text) {
-    const std::uint32_t main_file = run.programs.add(file, std::move(text), *run.dialect);
+// Hooks the mapped program up as a stream (the run parses it piece by piece and the pages of
+// parsed pieces are dropped: memory stays flat however long the file), the folder loader, and
+// finds the main program.
+int load_program(DryRun& run, const std::string& file) {
+    interpreter::StreamOptions stream;
+    stream.release = [source = run.source.get()](std::size_t begin, std::size_t end) { source->release(begin, end); };
+    const std::uint32_t main_file = run.programs.add_stream(file, run.source->text(), *run.dialect, stream);
     const fs::path folder = fs::path(file).parent_path();
     run.programs.set_loader([folder](std::int64_t n) { return load_from_folder(folder, n); }, run.dialect);
     const std::optional<interpreter::ProgramRef> main = run.programs.first_program(main_file);
@@ -115,18 +119,19 @@ void add_dry_run_options(CLI::App& command, DryRunOptions& o) {
 
 std::variant<std::unique_ptr<DryRun>, int> prepare_dry_run(const DryRunOptions& o) {
     std::string error;
-    std::optional<std::string> text = read_file(o.file, error);
-    if (!text) {
+    std::optional<MappedFile> source = MappedFile::open(o.file, error);
+    if (!source) {
         std::cerr << "kerf: " << error << "\n";
         return kExitUsage;
     }
     std::vector<std::string> config_errors;
     const ProjectConfig config = find_config(o.file, config_errors);
     auto run = std::make_unique<DryRun>();
+    run->source = std::make_unique<MappedFile>(std::move(*source));
     run->dialects = make_registry(dialect_files(o, config));
     for (const std::string& e : config_errors) std::cerr << "kerf: " << e << "\n";
     for (const std::string& e : run->dialects.errors) std::cerr << "kerf: " << e << "\n";
-    run->dialect_id = dialect_id(o, config, *text);
+    run->dialect_id = dialect_id(o, config, run->source->text());
     run->dialect = run->dialects.registry.find(run->dialect_id);
     if (!run->dialect) {
         std::cerr << fmt::format("kerf: unknown dialect '{}'; `kerf dialects` lists them\n", run->dialect_id);
@@ -136,7 +141,7 @@ std::variant<std::unique_ptr<DryRun>, int> prepare_dry_run(const DryRunOptions& 
     if (!setup) return kExitUsage;
     run->setup = std::move(*setup);
     run->lenient = o.lenient;
-    if (const int code = load_program(*run, o.file, std::move(*text)); code != kExitClean) return code;
+    if (const int code = load_program(*run, o.file); code != kExitClean) return code;
     return run;
 }
 
@@ -149,7 +154,7 @@ interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink, bool e
 
 int report_alarms(const DryRun& run, const interpreter::RunResult& result) {
     for (const interpreter::Event& a : result.alarms)
-        std::cerr << fmt::format("{}:{}: error: alarm {}: {}\n", run.programs.file(a.source.file).name, a.source.line,
+        std::cerr << fmt::format("{}:{}: error: alarm {}: {}\n", run.programs.file(a.source.file).name(), a.source.line,
                                  a.code, a.text);
     return result.alarms.empty() ? kExitClean : kExitFindings;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/config.hpp"
+#include "cli/mapped_file.hpp"
 #include "interpreter/interpreter.hpp"
 
 namespace kerf::cli {
@@ -31,6 +32,7 @@ struct DryRun {
     RegistryResult dialects;
     const dialects::Dialect* dialect = nullptr;
     std::string dialect_id;
+    std::unique_ptr<MappedFile> source;   // the main file, read in pieces by the run (outlives `programs`)
     interpreter::ProgramSet programs;
     interpreter::ProgramRef main;
     interpreter::Setup setup;

@@ -45,6 +45,13 @@ struct Evidence {
 }  // namespace
 
 Detection detect_dialect(std::string_view text) {
+    // The evidence of a program is in its first lines (headers, first tool, first moves); reading
+    // a 100 MB program to the end would cost a whole second parse. Whole lines only.
+    constexpr std::size_t kEnough = std::size_t{256} << 10;
+    if (text.size() > kEnough) {
+        const std::size_t cut = text.rfind('\n', kEnough);
+        text = text.substr(0, cut == std::string_view::npos ? kEnough : cut + 1);
+    }
     const ast::SyntaxTree tree = parse(std::string(text), permissive_rules());
     const ast::LineIndex lines(tree.text);
     Evidence ev;

@@ -14,6 +14,7 @@ struct Detection {
     int confidence = 0;                // the winning score
 };
 
+// Reads at most the first 256 KiB (whole lines): enough evidence, and a long file costs no more.
 Detection detect_dialect(std::string_view text);
 
 }  // namespace kerf::grammar

@@ -66,14 +66,15 @@ class Driver {
 public:
     Driver(ast::SyntaxTree& tree, const dialects::LexicalRules& rules) : tree_(tree), builder_(tree, rules) {}
 
-    void run() {
+    grammar::ParseState run(grammar::ParseState state) {
         const std::string& text = tree_.text;
         const char* const base = text.data();
         const char* const end = base + text.size();
         reserve(base, end);
         const char* pos = base;
-        bool program_seen = false;   // code since the opening '%'
-        bool bom_pending = text.size() >= 3 && std::memcmp(base, "\xEF\xBB\xBF", 3) == 0;
+        bool program_seen = state.program_seen;   // code since the opening '%'
+        bool bom_pending = state.file_start && text.size() >= 3 && std::memcmp(base, "\xEF\xBB\xBF", 3) == 0;
+        bool ended = false;
         while (pos < end) {
             const char* nl = static_cast<const char*>(std::memchr(pos, '\n', static_cast<std::size_t>(end - pos)));
             const char* line_end = nl ? nl : end;
@@ -103,10 +104,13 @@ public:
             prefault_ahead();
             const ast::Block& last = tree_.blocks.back();
             if (last.kind == BlockKind::percent) {
-                if (program_seen && pos < end) {
+                if (program_seen) {
                     // Text after the closing '%' is not read by the control ([FANUC]).
-                    start_block(pos);
-                    tree_.blocks.back().kind = BlockKind::tail;
+                    if (pos < end) {
+                        start_block(pos);
+                        tree_.blocks.back().kind = BlockKind::tail;
+                    }
+                    ended = true;
                     break;
                 }
                 program_seen = false;
@@ -115,6 +119,7 @@ public:
             }
         }
         if (tree_.blocks.empty()) start_block(base);   // an empty file is one blank block
+        return {false, program_seen, ended};
     }
 
 private:
@@ -224,8 +229,26 @@ ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules) {
         return tree;
     }
     tree.text = std::move(text);
-    Driver(tree, rules).run();
+    Driver(tree, rules).run({});
     return tree;
+}
+
+ParseState parse_into(ast::SyntaxTree& tree, std::string_view text, const dialects::LexicalRules& rules,
+                      ParseState start) {
+    tree.text.assign(text);
+    tree.blocks.clear();
+    tree.tokens.clear();
+    tree.exprs.clear();
+    tree.statements.clear();
+    tree.big_numbers.clear();
+    tree.diagnostics.clear();
+    if (text.size() >= 0xFFFFFFF0u) {
+        tree.text.clear();
+        tree.blocks.push_back({});
+        tree.diagnostics.push_back({{0, 0}, ast::Severity::error, "S0001", "piece too large (4 GiB or more)", "split the file"});
+        return {false, start.program_seen, true};
+    }
+    return Driver(tree, rules).run(start);
 }
 
 }  // namespace kerf::grammar

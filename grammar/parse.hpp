@@ -13,4 +13,18 @@ namespace kerf::grammar {
 // decimal comma, macro B). The text is moved into the tree, which owns it.
 ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules);
 
+// Reading a long file in pieces (interpreter/loaded_file.hpp): a piece is a run of whole lines,
+// and this is what the parse of one piece hands to the next.
+struct ParseState {
+    bool file_start = true;      // the piece starts the file (a BOM is read only there)
+    bool program_seen = false;   // code since the opening '%' (the next '%' closes the tape)
+    bool ended = false;          // the closing '%' was read: the rest of the file is not program text
+};
+
+// Parses `text` (whole lines) into `tree`, whose arrays keep their capacity: parsing piece after
+// piece into one tree allocates nothing once it has grown. Offsets are relative to `text`. After a
+// closing '%' the rest of `text` is one tail block and the result says `ended`.
+ParseState parse_into(ast::SyntaxTree& tree, std::string_view text, const dialects::LexicalRules& rules,
+                      ParseState start);
+
 }  // namespace kerf::grammar

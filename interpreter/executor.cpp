@@ -93,7 +93,7 @@ bool Executor::modal_active(std::string_view function) const {
 }
 
 std::string Executor::block_comment(const ast::BlockView& view) const {
-    const ast::SyntaxTree& tree = file_of(*frame_).tree;
+    const ast::SyntaxTree& tree = view.tree();
     for (const std::uint32_t ti : view.comments()) {
         std::string_view text = tree.spelling(tree.tokens[ti]);
         if (!text.empty() && text.front() == '(') text.remove_prefix(1);
@@ -103,16 +103,14 @@ std::string Executor::block_comment(const ast::BlockView& view) const {
     return {};
 }
 
-const ast::Program& Executor::program_of(const Frame& f) const {
-    return file_of(f).typed->programs()[f.program.program];
-}
+ast::Program Executor::program_of(const Frame& f) const { return file_of(f).program(f.program.program); }
 
 SourceRef Executor::source(const Frame& f, const ast::BlockView& view) const {
     if (&view == view_) return scan_.source;   // the block being executed: computed once
-    const ast::Range r = view.range();
     const LoadedFile& file = file_of(f);
+    const ast::Range r = file.file_range(view);
     const bool same_file = line_hint_file_ == f.program.file;
-    const std::uint32_t line = file.lines->line_near(r.begin, same_file ? line_hint_ : 0);
+    const std::uint32_t line = file.line_of(view, same_file ? line_hint_ : 0);
     line_hint_file_ = f.program.file;
     line_hint_ = line;
     return {f.program.file, r, line + 1};
@@ -178,8 +176,7 @@ RunResult Executor::run(ProgramRef main) {
         position_[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
     while (!frames_.empty() && !stopped_) {
         Frame& f = frames_.back();
-        const ast::Program& p = program_of(f);
-        if (f.block >= p.end_block) {
+        if (!file_of(f).in_program(f.program.program, f.block)) {
             // Running off the end of a program: a subprogram returns, a main program ends.
             if (frames_.size() == 1) {
                 result_.completed = true;
@@ -189,7 +186,7 @@ RunResult Executor::run(ProgramRef main) {
             continue;
         }
         if (++result_.blocks > setup_.step_limit) {
-            const ast::BlockView view = file_of(f).typed->block(f.block);
+            const ast::BlockView view = file_of(f).block(f.block);
             view_ = nullptr;
             alarm(f, view, 0, fmt::format("step limit of {} blocks reached: endless loop?", setup_.step_limit));
             break;
@@ -203,11 +200,13 @@ RunResult Executor::run(ProgramRef main) {
 void Executor::execute_block(Frame& frame) {
     const LoadedFile& file = file_of(frame);
     const std::uint32_t index = frame.block++;
-    const ast::BlockView view = file.typed->block(index);
+    file.pin(index);
+    const ast::BlockView view = file.block(index);
     const ast::Block& block = view.block();
     if (block.kind != ast::BlockKind::code) return;
     if (block.has(ast::block_flags::deleted) && options_.block_delete) return;
     view_ = nullptr;   // scan_block computes the source of this block, not the last one's
+    scan_.block = index;
     scan_block(frame, view);
     view_ = &view;
     if (block.has(ast::block_flags::has_error)) {
@@ -267,7 +266,7 @@ void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {
         }
     scan_.statements = scan_.comma_words = scan_.direct_drawing = false;
     scan_.sequence.reset();
-    const ast::SyntaxTree& tree = file_of(frame).tree;
+    const ast::SyntaxTree& tree = view.tree();
     for (const ast::Token& t : view.tokens()) {
         if (t.kind == ast::TokenKind::word && t.letter == 'N' && t.is_number() && !scan_.sequence)
             scan_.sequence = tree.number_value(t);

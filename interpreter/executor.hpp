@@ -85,6 +85,7 @@ struct BlockScan {
     bool direct_drawing = false;
     bool macro_call = false;          // G65/G66
     std::optional<double> sequence;   // N
+    std::uint32_t block = 0;          // its index in the file
     SourceRef source;
 };
 
@@ -245,7 +246,7 @@ private:
 
     // Helpers.
     const LoadedFile& file_of(const Frame& f) const { return programs_.file(f.program.file); }
-    const ast::Program& program_of(const Frame& f) const;
+    ast::Program program_of(const Frame& f) const;   // a copy: reading ahead may add programs
     SourceRef source(const Frame& f, const ast::BlockView& view) const;
     bool has_function(const ast::BlockView& view, std::string_view function) const;
     bool modal_active(std::string_view function) const;

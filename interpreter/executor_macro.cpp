@@ -81,7 +81,7 @@ std::string format_print(std::string_view text, const macro::Variables& variable
 
 // Returns false when the block must not go on (a jump, an alarm, a call).
 bool Executor::execute_statements(Frame& frame, const ast::BlockView& view) {
-    const ast::SyntaxTree& tree = file_of(frame).tree;
+    const ast::SyntaxTree& tree = view.tree();
     if (scan_.statements) {
         for (const std::uint32_t ti : view.statements()) {
             const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
@@ -94,7 +94,7 @@ bool Executor::execute_statements(Frame& frame, const ast::BlockView& view) {
 }
 
 bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const ast::Statement& s) {
-    const ast::SyntaxTree& tree = file_of(frame).tree;
+    const ast::SyntaxTree& tree = view.tree();
     auto fail = [&](const macro::Error& e) {
         alarm(frame, view, e.alarm, e.message);
         return false;
@@ -157,18 +157,18 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
             }();
             if (stopped_) return false;
             if (enter) {
-                if (frame.loops.empty() || frame.loops.back().do_block != view.index()) {
+                if (frame.loops.empty() || frame.loops.back().do_block != scan_.block) {
                     if (frame.loops.size() >= 3) {
                         alarm(frame, view, 124, "WHILE/DO nested deeper than 3 (alarm 124)");
                         return false;
                     }
-                    frame.loops.push_back({static_cast<std::uint32_t>(view.index()), static_cast<int>(*m)});
+                    frame.loops.push_back({scan_.block, static_cast<int>(*m)});
                 }
                 return true;
             }
             // Condition false: continue after the matching END m.
-            if (!frame.loops.empty() && frame.loops.back().do_block == view.index()) frame.loops.pop_back();
-            const auto end = find_end(frame, view.index(), static_cast<int>(*m));
+            if (!frame.loops.empty() && frame.loops.back().do_block == scan_.block) frame.loops.pop_back();
+            const auto end = find_end(frame, scan_.block, static_cast<int>(*m));
             if (!end) {
                 alarm(frame, view, 124, fmt::format("DO {} without END {} (alarm 124)", *m, *m));
                 return false;
@@ -202,13 +202,14 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
 
 std::optional<std::uint32_t> Executor::find_end(const Frame& frame, std::uint32_t from, int label) const {
     const LoadedFile& file = file_of(frame);
-    const ast::Program& p = program_of(frame);
-    for (std::uint32_t b = from + 1; b < p.end_block; ++b) {
-        for (const std::uint32_t ti : file.typed->block(b).statements()) {
-            const ast::Statement& s = file.tree.statements[static_cast<std::size_t>(file.tree.tokens[ti].payload)];
+    for (std::uint32_t b = from + 1; file.in_program(frame.program.program, b); ++b) {
+        const ast::BlockView view = file.block(b);
+        const ast::SyntaxTree& tree = view.tree();
+        for (const std::uint32_t ti : view.statements()) {
+            const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
             if (s.kind != ast::StatementKind::end) continue;
-            const ast::Expr& e = file.tree.exprs[static_cast<std::size_t>(s.label)];
-            if (e.kind == ast::ExprKind::number && std::lround(file.tree.number_value(e)) == label) return b;
+            const ast::Expr& e = tree.exprs[static_cast<std::size_t>(s.label)];
+            if (e.kind == ast::ExprKind::number && std::lround(tree.number_value(e)) == label) return b;
         }
     }
     return std::nullopt;
@@ -217,16 +218,16 @@ std::optional<std::uint32_t> Executor::find_end(const Frame& frame, std::uint32_
 std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_arguments(const Frame& frame,
                                                                                     const ast::BlockView& view,
                                                                                     const ast::MacroCall& call) {
-    const LoadedFile& file = file_of(frame);
+    const ast::SyntaxTree& tree = view.tree();
     ArgumentMapper mapper;
     std::vector<std::pair<int, macro::Value>> arguments;
     for (const std::uint32_t ti : call.arguments) {
-        const ast::Token& t = file.tree.tokens[ti];
+        const ast::Token& t = tree.tokens[ti];
         const int number = mapper.variable(t.letter);
         if (!number) continue;
         macro::Value v = macro::Value::vacant_value();
         if (t.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(file.tree, t.payload, variables_, macro_options(true));
+            const macro::Result r = macro::evaluate(tree, t.payload, variables_, macro_options(true));
             if (r.error) {
                 alarm(frame, view, r.error->alarm, r.error->message);
                 return std::nullopt;
@@ -235,7 +236,7 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
         } else if (t.is_number()) {
             // Without a decimal point an argument counts least input increments unless the
             // machine has calculator-type input ([FANUC]: G65 X10 gives #24 = 0.010 on IS-B).
-            const double n = file.tree.number_value(t);
+            const double n = tree.number_value(t);
             const bool increments = !t.has(ast::token_flags::has_point) && !setup_.calculator_decimal;
             v = increments ? macro::Value::of_increments(n * setup_.increment_mm) : macro::Value::of(n);
         }

@@ -217,10 +217,9 @@ void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) 
 }
 
 std::optional<std::uint32_t> Executor::find_label(const Frame& f, double n) const {
-    const ast::Program& p = program_of(f);
     const LoadedFile& file = file_of(f);
-    for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
-        if (const auto seq = file.typed->block(b).sequence_number(); seq && *seq == n) return b;
+    for (std::uint32_t b = program_of(f).first_block; file.in_program(f.program.program, b); ++b)
+        if (const auto seq = file.block(b).sequence_number(); seq && *seq == n) return b;
     return std::nullopt;
 }
 

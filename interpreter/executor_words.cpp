@@ -22,7 +22,7 @@ macro::Options Executor::macro_options(bool address) const {
 }
 
 bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
-    const LoadedFile& file = file_of(*frame_);
+    const ast::SyntaxTree& tree = view.tree();
     const dialects::LexicalRules& rules = dialect_.lexical;
     // Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words)
     // do not move the tool and do not set the modal F, S or T (the codes' parameter_words).
@@ -41,7 +41,7 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
         const bool letter = t.letter >= 'A' && t.letter <= 'Z';
         w.data = (letter && (data >> (t.letter - 'A')) & 1u) || (t.role() == ast::Role::parameter && rules.is_axis(t.letter));
         if (t.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(file.tree, t.payload, variables_, options);
+            const macro::Result r = macro::evaluate(tree, t.payload, variables_, options);
             if (r.error) {
                 alarm(*frame_, view, r.error->alarm, r.error->message);
                 return false;
@@ -50,7 +50,7 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
             w.value = r.value.number;
             w.has_point = true;             // macro values are never in least increments
         } else {
-            w.value = file.tree.number_value(t);
+            w.value = tree.number_value(t);
         }
         if (t.role() == ast::Role::axis_incremental && !w.data) out.incremental.set(rules.incremental_axis_of(t.letter), w);
         else if (letter) out.words.set(t.letter, w);

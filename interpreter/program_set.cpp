@@ -1,24 +1,22 @@
 #include "interpreter/program_set.hpp"
 
-#include "grammar/parse.hpp"
 
 namespace kerf::interpreter {
 
 std::uint32_t ProgramSet::add(std::string name, std::string text, const dialects::Dialect& dialect) {
-    auto f = std::make_unique<LoadedFile>();
-    f->name = std::move(name);
-    f->tree = grammar::parse(std::move(text), dialect.lexical);
-    f->typed = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(f->tree, dialect));
-    f->lines = std::make_unique<ast::LineIndex>(f->tree.text);
-    files_.push_back(std::move(f));
+    files_.push_back(std::make_unique<LoadedFile>(std::move(name), std::move(text), dialect));
+    return static_cast<std::uint32_t>(files_.size() - 1);
+}
+
+std::uint32_t ProgramSet::add_stream(std::string name, std::string_view text, const dialects::Dialect& dialect,
+                                     StreamOptions options) {
+    files_.push_back(std::make_unique<LoadedFile>(std::move(name), text, dialect, std::move(options)));
     return static_cast<std::uint32_t>(files_.size() - 1);
 }
 
 std::optional<ProgramRef> ProgramSet::find(std::int64_t number, std::uint32_t from_file) const {
     auto search = [&](std::uint32_t fi) -> std::optional<ProgramRef> {
-        const auto& programs = files_[fi]->typed->programs();
-        for (std::uint32_t p = 0; p < programs.size(); ++p)
-            if (programs[p].number == number) return ProgramRef{fi, p};
+        if (const auto p = files_[fi]->find_program(number)) return ProgramRef{fi, *p};
         return std::nullopt;
     };
     if (from_file < files_.size())
@@ -39,8 +37,9 @@ std::optional<ProgramRef> ProgramSet::find_or_load(std::int64_t number, std::uin
 }
 
 std::optional<ProgramRef> ProgramSet::first_program(std::uint32_t file) const {
-    if (file >= files_.size() || files_[file]->typed->programs().empty()) return std::nullopt;
-    return ProgramRef{file, 0};
+    if (file >= files_.size()) return std::nullopt;
+    if (const auto p = files_[file]->first_program()) return ProgramRef{file, *p};
+    return std::nullopt;
 }
 
 }  // namespace kerf::interpreter

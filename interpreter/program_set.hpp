@@ -12,15 +12,9 @@
 
 #include "ast/source.hpp"
 #include "ast/typed.hpp"
+#include "interpreter/loaded_file.hpp"
 
 namespace kerf::interpreter {
-
-struct LoadedFile {
-    std::string name;
-    ast::SyntaxTree tree;
-    std::unique_ptr<ast::TypedFile> typed;
-    std::unique_ptr<ast::LineIndex> lines;
-};
 
 struct ProgramRef {
     std::uint32_t file = 0;      // index into ProgramSet::files
@@ -41,6 +35,9 @@ public:
 
     // Parses and binds `text` with the dialect; returns the file index.
     std::uint32_t add(std::string name, std::string text, const dialects::Dialect& dialect);
+    // A file read in pieces as the run reaches them (loaded_file.hpp); `text` must outlive the set.
+    std::uint32_t add_stream(std::string name, std::string_view text, const dialects::Dialect& dialect,
+                             StreamOptions options);
     const LoadedFile& file(std::uint32_t i) const { return *files_[i]; }
     std::size_t file_count() const { return files_.size(); }
     // O number → program: the calling file first, then every other file in order.

@@ -81,7 +81,7 @@ void append_event_json(fmt::memory_buffer& out, const Event& e, const ProgramSet
     put(out, "{\"kind\":\"");
     put(out, to_string(e.kind));
     put(out, "\",\"file\":");
-    write_string(out, programs.file(e.source.file).name);
+    write_string(out, programs.file(e.source.file).name());
     put(out, ",\"line\":");
     put_int(out, e.source.line);
     write_position(out, "end", e.end, axes);

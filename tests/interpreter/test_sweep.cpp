@@ -25,7 +25,7 @@ TEST_CASE("the interpreter runs every reference example and corpus file to an en
         CHECK(r.blocks <= setup.step_limit + 1);
         for (const interpreter::Event& e : events) {
             REQUIRE(e.source.file < programs.file_count());
-            REQUIRE(e.source.range.end <= programs.file(e.source.file).tree.text.size());
+            REQUIRE(e.source.range.end <= programs.file(e.source.file).text_size());
             REQUIRE(e.source.line >= 1);
             for (const double v : e.end) REQUIRE(std::isfinite(v));
         }

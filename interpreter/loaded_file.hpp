@@ -1,0 +1,114 @@
+// One file of a run, parsed and bound, whole or in pieces.
+//
+// A dry run of a 100 MB program must not hold a 400 MB tree (bench/RESULTS.md): a file given as a
+// stream is read in pieces of whole lines (about `piece_bytes` each) as the run reaches them. Only
+// a few pieces are held at a time; what the run needs again (a jump back, a label search, a call
+// into a program seen earlier) is parsed again from the piece's start, whose parser and binder
+// states were kept. Blocks keep their index in the whole file, so the executor, its frames and its
+// events do not know whether a file is whole or in pieces. A file given as a string is one piece.
+//
+// Lifetime rule for BlockViews: a view stays valid while its piece is held. The piece of the
+// pinned block (the block being executed) is always held; of the others, the last few used are.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ast/source.hpp"
+#include "ast/typed.hpp"
+#include "grammar/parse.hpp"
+
+namespace kerf::interpreter {
+
+struct StreamOptions {
+    std::size_t piece_bytes = std::size_t{1} << 20;   // lines are not cut: a piece ends at a line end
+    std::size_t pieces_held = 4;                      // besides the pinned one
+    // Called with a byte range of the text once its piece is parsed and no longer held, so the
+    // owner can drop the memory behind it (the CLI's file mapping); the range is read again if
+    // the run comes back to it. May be empty.
+    std::function<void(std::size_t begin, std::size_t end)> release;
+};
+
+class LoadedFile {
+public:
+    // The whole text, parsed and bound at once.
+    LoadedFile(std::string name, std::string text, const dialects::Dialect& dialect);
+    // A stream over `text`, which must outlive this object.
+    LoadedFile(std::string name, std::string_view text, const dialects::Dialect& dialect, StreamOptions options);
+    ~LoadedFile();
+    LoadedFile(const LoadedFile&) = delete;
+    LoadedFile& operator=(const LoadedFile&) = delete;
+
+    const std::string& name() const { return name_; }
+    std::size_t text_size() const { return text_.size(); }
+
+    // The view of block `index` (of the whole file); parses ahead as needed. `index` must exist
+    // (has_block).
+    ast::BlockView block(std::uint32_t index) const;
+    bool has_block(std::uint32_t index) const;
+    // Keeps the piece of `index` held until the next pin (the executor pins the running block).
+    void pin(std::uint32_t index) const;
+
+    // Programs found so far, in file order, with whole-file block indices. The last one may still
+    // be open (end_block = kOpenEnd) while the file is read in pieces.
+    static constexpr std::uint32_t kOpenEnd = 0xFFFFFFFFu;
+    const ast::Program& program(std::uint32_t i) const { return programs_[i]; }
+    std::size_t program_count() const { return programs_.size(); }
+    // True when `block` belongs to program `i` (reads ahead to find where an open program ends).
+    bool in_program(std::uint32_t i, std::uint32_t block) const;
+    // The program with O number `number`, reading ahead through the whole file if needed.
+    std::optional<std::uint32_t> find_program(std::int64_t number) const;
+    // The first program of the file (the main program of `kerf run FILE`), reading ahead to it.
+    std::optional<std::uint32_t> first_program() const;
+
+    // Where a block is in the file: its byte range and 0-based line (`hint`: a line at or before it).
+    ast::Range file_range(const ast::BlockView& view) const;
+    std::uint32_t line_of(const ast::BlockView& view, std::uint32_t hint) const;
+
+    // The whole file's tree when it was given whole (tools and tests that walk it); else null.
+    const ast::SyntaxTree* whole_tree() const;
+
+private:
+    struct Piece {            // what is kept of every piece read: a few dozen bytes per piece
+        std::uint32_t first_block = 0;
+        std::uint32_t end_block = 0;
+        std::size_t text_begin = 0;
+        std::size_t text_end = 0;
+        std::uint32_t first_line = 0;
+        grammar::ParseState parse_start;
+        bool linear_at_start = false;
+    };
+    struct Held;              // a parsed piece: tree, typed file, line index
+
+    const Held& hold(std::size_t piece) const;
+    const Held& held_for(std::uint32_t block) const;
+    std::size_t piece_of(std::uint32_t block) const;
+    const Held* owner(const ast::BlockView& view) const;   // the held piece a view belongs to
+    bool read_next_piece() const;   // false at the end of the file
+    void publish_programs() const;
+
+    std::string name_;
+    std::string owned_text_;        // the whole text, when given as a string
+    std::string_view text_;
+    const dialects::Dialect& dialect_;
+    StreamOptions options_;
+    // Lazily read: logically const (the same blocks whenever they are read).
+    mutable std::vector<Piece> pieces_;
+    mutable std::vector<std::unique_ptr<Held>> held_;
+    mutable std::size_t pinned_piece_ = 0;
+    mutable std::uint64_t clock_ = 0;
+    mutable grammar::ParseState next_state_;
+    mutable bool next_linear_ = false;
+    mutable std::uint32_t next_line_ = 0;
+    mutable bool complete_ = false;
+    mutable ast::ProgramSplitter splitter_;
+    mutable std::vector<ast::Program> programs_;
+    std::uint32_t total_blocks() const { return pieces_.empty() ? 0 : pieces_.back().end_block; }
+};
+
+}  // namespace kerf::interpreter
