@@ -1,7 +1,12 @@
 #include "interpreter/loaded_file.hpp"
 
 #include <algorithm>
+#include <condition_variable>
 #include <cstring>
+#include <deque>
+#include <mutex>
+#include <thread>
+#include <utility>
 
 namespace kerf::interpreter {
 
@@ -23,6 +28,7 @@ LoadedFile::LoadedFile(std::string name, std::string text, const dialects::Diale
     Piece piece;
     piece.end_block = static_cast<std::uint32_t>(held->tree.block_count());
     piece.text_end = text_.size();
+    piece.last = true;
     pieces_.push_back(piece);
     programs_ = held->typed->programs();
     held_.push_back(std::move(held));
@@ -35,7 +41,7 @@ LoadedFile::LoadedFile(std::string name, std::string_view text, const dialects::
     options_.piece_bytes = std::max<std::size_t>(options_.piece_bytes, 1);
 }
 
-LoadedFile::~LoadedFile() = default;
+LoadedFile::~LoadedFile() { read_ahead_.reset(); }   // the thread stops before the slots go
 
 const ast::SyntaxTree* LoadedFile::whole_tree() const {
     return pieces_.size() == 1 && complete_ && !held_.empty() ? &held_.front()->tree : nullptr;
@@ -43,14 +49,13 @@ const ast::SyntaxTree* LoadedFile::whole_tree() const {
 
 // The next piece ends at the last line end within `piece_bytes`, or at the first line end after
 // it when a single line is longer: blocks never span lines (grammar/parse.cpp).
-bool LoadedFile::read_next_piece() const {
-    if (complete_) return false;
+LoadedFile::Piece LoadedFile::parse_piece(Cursor& cursor, Held& held) const {
     Piece piece;
-    piece.text_begin = pieces_.empty() ? 0 : pieces_.back().text_end;
-    piece.first_block = total_blocks();
-    piece.first_line = next_line_;
-    piece.parse_start = next_state_;
-    piece.linear_at_start = next_linear_;
+    piece.text_begin = cursor.text_begin;
+    piece.first_block = cursor.first_block;
+    piece.first_line = cursor.first_line;
+    piece.parse_start = cursor.state;
+    piece.linear_at_start = cursor.linear;
     const std::size_t size = text_.size();
     std::size_t end = size;
     if (size - piece.text_begin > options_.piece_bytes) {
@@ -64,22 +69,128 @@ bool LoadedFile::read_next_piece() const {
         }
     }
     piece.text_end = end;
-    pieces_.push_back(piece);
-    const std::size_t index = pieces_.size() - 1;
+    const std::string_view text = text_.substr(piece.text_begin, end - piece.text_begin);
+    held.typed.reset();
+    cursor.state = grammar::parse_into(held.tree, text, dialect_.lexical, piece.parse_start);
+    held.typed = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(held.tree, dialect_, piece.linear_at_start));
+    held.lines = std::make_unique<ast::LineIndex>(held.tree.text);
+    piece.end_block = piece.first_block + static_cast<std::uint32_t>(held.tree.block_count());
+    cursor.text_begin = end;
+    cursor.first_block = piece.end_block;
+    cursor.first_line += static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
+    cursor.linear = held.typed->linear_at_end();
+    cursor.done = cursor.state.ended || end >= size;
+    piece.last = cursor.done;
+    if (options_.release) options_.release(piece.text_begin, piece.text_end);
+    return piece;
+}
 
-    const Held& held = hold(index);
-    Piece& read = pieces_[index];
-    read.end_block = read.first_block + static_cast<std::uint32_t>(held.tree.block_count());
-    const std::string_view piece_text = text_.substr(read.text_begin, read.text_end - read.text_begin);
-    next_line_ += static_cast<std::uint32_t>(std::count(piece_text.begin(), piece_text.end(), '\n'));
-    next_linear_ = held.typed->linear_at_end();
-    for (std::uint32_t b = 0; b < held.tree.block_count(); ++b) splitter_.feed(held.tree, b, read.first_block + b);
-    if (next_state_.ended || read.text_end >= size) {
+void LoadedFile::parse_again(const Piece& piece, Held& held) const {
+    Cursor cursor;
+    cursor.text_begin = piece.text_begin;
+    cursor.first_block = piece.first_block;
+    cursor.first_line = piece.first_line;
+    cursor.state = piece.parse_start;
+    cursor.linear = piece.linear_at_start;
+    parse_piece(cursor, held);
+}
+
+// The read-ahead thread parses the pieces in order, at most two ahead of the run, into slots the
+// run hands back when it drops a piece.
+class LoadedFile::ReadAhead {
+public:
+    explicit ReadAhead(const LoadedFile& file) : file_(file), thread_([this] { work(); }) {}
+    ~ReadAhead() {
+        {
+            std::lock_guard lock(mutex_);
+            stop_ = true;
+        }
+        changed_.notify_all();
+        thread_.join();
+    }
+    // The next piece in file order, waiting for it; nullopt after the last.
+    std::optional<std::pair<Piece, std::unique_ptr<Held>>> take() {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return !ready_.empty() || finished_; });
+        if (ready_.empty()) return std::nullopt;
+        auto next = std::move(ready_.front());
+        ready_.pop_front();
+        changed_.notify_all();
+        return next;
+    }
+    void give_back(std::unique_ptr<Held> slot) {
+        std::lock_guard lock(mutex_);
+        spare_.push_back(std::move(slot));
+    }
+
+private:
+    static constexpr std::size_t kAhead = 2;
+    void work() {
+        Cursor cursor;
+        while (!cursor.done) {
+            std::unique_ptr<Held> slot;
+            {
+                std::unique_lock lock(mutex_);
+                changed_.wait(lock, [&] { return stop_ || ready_.size() < kAhead; });
+                if (stop_) return;
+                if (!spare_.empty()) {
+                    slot = std::move(spare_.back());
+                    spare_.pop_back();
+                }
+            }
+            if (!slot) slot = std::make_unique<Held>();
+            Piece piece = file_.parse_piece(cursor, *slot);
+            {
+                std::lock_guard lock(mutex_);
+                ready_.emplace_back(piece, std::move(slot));
+            }
+            changed_.notify_all();
+        }
+        std::lock_guard lock(mutex_);
+        finished_ = true;
+        changed_.notify_all();
+    }
+
+    const LoadedFile& file_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::deque<std::pair<Piece, std::unique_ptr<Held>>> ready_;
+    std::vector<std::unique_ptr<Held>> spare_;
+    bool stop_ = false;
+    bool finished_ = false;
+    std::thread thread_;   // last: starts once the rest is built
+};
+
+bool LoadedFile::read_next_piece() const {
+    if (complete_) return false;
+    if (options_.read_ahead && !read_ahead_ && text_.size() > options_.piece_bytes)
+        read_ahead_ = std::make_unique<ReadAhead>(*this);
+    const std::size_t slot = slot_index();
+    if (slot == held_.size()) held_.emplace_back();
+    Piece piece;
+    if (read_ahead_) {
+        auto next = read_ahead_->take();
+        if (!next) {   // the last piece sets `complete_`: not reached
+            complete_ = true;
+            return false;
+        }
+        piece = next->first;
+        if (held_[slot]) read_ahead_->give_back(std::move(held_[slot]));
+        held_[slot] = std::move(next->second);
+    } else {
+        if (!held_[slot]) held_[slot] = std::make_unique<Held>();
+        piece = parse_piece(cursor_, *held_[slot]);
+    }
+    Held& held = *held_[slot];
+    pieces_.push_back(piece);
+    held.piece = pieces_.size() - 1;
+    held.last_use = ++clock_;
+    for (std::uint32_t b = 0; b < held.tree.block_count(); ++b) splitter_.feed(held.tree, b, piece.first_block + b);
+    if (piece.last) {
         complete_ = true;
-        splitter_.finish(read.end_block);
+        splitter_.finish(piece.end_block);
     }
     publish_programs();
-    if (options_.release) options_.release(read.text_begin, read.text_end);
     return true;
 }
 
@@ -91,8 +202,19 @@ void LoadedFile::publish_programs() const {
     }
 }
 
-// Parses piece `index` into a held slot (the least recently used one that is not pinned, once
-// `pieces_held` + 1 are held). A piece read for the first time also sets `next_state_`.
+// The slot for another piece: a new one while fewer than `pieces_held` + 1 are held, else the
+// least recently used one that is not pinned (held_.size() means "append one").
+std::size_t LoadedFile::slot_index() const {
+    std::size_t slot = held_.size();
+    if (held_.size() <= options_.pieces_held) return slot;
+    for (std::size_t i = 0; i < held_.size(); ++i) {
+        if (held_[i]->piece == pinned_piece_) continue;
+        if (slot == held_.size() || held_[i]->last_use < held_[slot]->last_use) slot = i;
+    }
+    return slot;
+}
+
+// Piece `index`, parsed again if it is not held.
 const LoadedFile::Held& LoadedFile::hold(std::size_t index) const {
     ++clock_;
     for (const auto& h : held_) {
@@ -101,26 +223,13 @@ const LoadedFile::Held& LoadedFile::hold(std::size_t index) const {
             return *h;
         }
     }
-    Held* slot = nullptr;
-    if (held_.size() > options_.pieces_held) {
-        for (const auto& h : held_)
-            if (h->piece != pinned_piece_ && (!slot || h->last_use < slot->last_use)) slot = h.get();
-    }
-    if (!slot) {
-        held_.push_back(std::make_unique<Held>());
-        slot = held_.back().get();
-    }
-    const Piece& piece = pieces_[index];
-    const std::string_view text = text_.substr(piece.text_begin, piece.text_end - piece.text_begin);
-    slot->piece = index;
-    slot->last_use = clock_;
-    slot->typed.reset();
-    const grammar::ParseState end = grammar::parse_into(slot->tree, text, dialect_.lexical, piece.parse_start);
-    if (index + 1 == pieces_.size()) next_state_ = end;
-    slot->typed = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(slot->tree, dialect_, piece.linear_at_start));
-    slot->lines = std::make_unique<ast::LineIndex>(slot->tree.text);
-    if (options_.release && index + 1 < pieces_.size()) options_.release(piece.text_begin, piece.text_end);
-    return *slot;
+    const std::size_t slot = slot_index();
+    if (slot == held_.size()) held_.push_back(std::make_unique<Held>());
+    Held& held = *held_[slot];
+    parse_again(pieces_[index], held);
+    held.piece = index;
+    held.last_use = clock_;
+    return held;
 }
 
 std::size_t LoadedFile::piece_of(std::uint32_t block) const {

@@ -28,9 +28,12 @@ namespace kerf::interpreter {
 struct StreamOptions {
     std::size_t piece_bytes = std::size_t{1} << 20;   // lines are not cut: a piece ends at a line end
     std::size_t pieces_held = 4;                      // besides the pinned one
+    // Parse the pieces ahead of the run on a second thread (the run on one core, the grammar on
+    // the other); the pieces and every event are the same either way.
+    bool read_ahead = false;
     // Called with a byte range of the text once its piece is parsed and no longer held, so the
     // owner can drop the memory behind it (the CLI's file mapping); the range is read again if
-    // the run comes back to it. May be empty.
+    // the run comes back to it. May be empty; with read_ahead it is called from that thread too.
     std::function<void(std::size_t begin, std::size_t end)> release;
 };
 
@@ -82,8 +85,24 @@ private:
         std::uint32_t first_line = 0;
         grammar::ParseState parse_start;
         bool linear_at_start = false;
+        bool last = false;    // the end of the file, or of the tape (the closing '%')
     };
     struct Held;              // a parsed piece: tree, typed file, line index
+    struct Cursor {           // where the next piece of the file starts
+        std::size_t text_begin = 0;
+        std::uint32_t first_block = 0;
+        std::uint32_t first_line = 0;
+        grammar::ParseState state;
+        bool linear = false;
+        bool done = false;
+    };
+    class ReadAhead;          // the second thread (loaded_file.cpp)
+
+    // Parses the piece at `cursor` into `held` and moves the cursor past it. Touches only the
+    // immutable text, dialect and options: safe on the read-ahead thread.
+    Piece parse_piece(Cursor& cursor, Held& held) const;
+    void parse_again(const Piece& piece, Held& held) const;
+    std::size_t slot_index() const;
 
     const Held& hold(std::size_t piece) const;
     const Held& held_for(std::uint32_t block) const;
@@ -102,9 +121,8 @@ private:
     mutable std::vector<std::unique_ptr<Held>> held_;
     mutable std::size_t pinned_piece_ = 0;
     mutable std::uint64_t clock_ = 0;
-    mutable grammar::ParseState next_state_;
-    mutable bool next_linear_ = false;
-    mutable std::uint32_t next_line_ = 0;
+    mutable Cursor cursor_;          // the next piece, when read on this thread
+    mutable std::unique_ptr<ReadAhead> read_ahead_;
     mutable bool complete_ = false;
     mutable ast::ProgramSplitter splitter_;
     mutable std::vector<ast::Program> programs_;

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,8 +25,9 @@ struct Outcome {
 
 // Runs `text` whole (piece_bytes 0) or in pieces of `piece_bytes`, `held` pieces kept.
 Outcome run_text(const std::string& text, const dialects::Dialect& d, std::size_t piece_bytes, std::size_t held,
-                 bool start_at_reference = true) {
+                 bool start_at_reference = true, bool read_ahead = false) {
     Outcome out;
+    std::mutex released_mutex;
     interpreter::ProgramSet programs;
     std::uint32_t file = 0;
     if (piece_bytes == 0) {
@@ -34,7 +36,12 @@ Outcome run_text(const std::string& text, const dialects::Dialect& d, std::size_
         interpreter::StreamOptions options;
         options.piece_bytes = piece_bytes;
         options.pieces_held = held;
-        options.release = [&out](std::size_t b, std::size_t e) { out.released.emplace_back(b, e); };
+        options.read_ahead = read_ahead;
+        // Called from the read-ahead thread too.
+        options.release = [&out, &released_mutex](std::size_t b, std::size_t e) {
+            std::lock_guard lock(released_mutex);
+            out.released.emplace_back(b, e);
+        };
         file = programs.add_stream("f.nc", text, d, options);
     }
     const auto main = programs.first_program(file);
@@ -86,6 +93,8 @@ TEST_CASE("every reference example and corpus file runs the same whole and in pi
             INFO("piece_bytes " << bytes << " held " << held);
             check_same(whole, run_text(text, *d, bytes, held));
         }
+        INFO("read ahead on a second thread, 97-byte pieces");
+        check_same(whole, run_text(text, *d, 97, 1, true, true));
     }
 }
 
@@ -127,6 +136,7 @@ TEST_CASE("jumps, loops and calls across pieces") {
         INFO("held " << held);
         const Outcome pieces = run_text(text, fanuc_mill(), 1, held, false);
         check_same(whole, pieces);
+        check_same(whole, run_text(text, fanuc_mill(), 1, held, false, true));
         // The text of every piece read is offered for release, and never past the tape end.
         REQUIRE_FALSE(pieces.released.empty());
         for (const auto& [b, e] : pieces.released) CHECK(e <= text.find("text after"));
