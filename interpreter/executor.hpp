@@ -288,7 +288,10 @@ private:
     // --- canned cycles (executor_cycles.cpp; the expansions are in interpreter/cycles/) ----------
     friend class CycleContext;
     cycles::Parameters cycle_parameters_{setup_.cycles.initial};   // persistent (cycles.md §0)
-    std::optional<std::uint32_t> cycle_profile_end_;   // N Q of the last profile read: G71–G73 go on after it
+    struct ProfileBlocks {
+        std::uint32_t first, last;   // block indices of N P and N Q
+    };
+    std::optional<ProfileBlocks> cycle_profile_blocks_;   // of the cycle being run: G71–G73 go on after N Q
     // The cycle of the block (its code, or the modal one on a block with axis words) expanded into
     // moves; false when the block has no cycle. `to` is the block's target point.
     bool apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to);

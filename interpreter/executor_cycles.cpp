@@ -174,7 +174,7 @@ const dialects::CodeInfo* Executor::cycle_of_block(bool has_axis_words) const {
 bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to) {
     const dialects::CodeInfo* cycle = cycle_of_block(has_axis_words);
     if (!cycle) return false;
-    cycle_profile_end_.reset();
+    cycle_profile_blocks_.reset();
     CycleContext context(*this, *cycle, view, words, has_axis_words, to);
     if (!cycles::expand(context)) {
         Event e = event_at(EventKind::message, *frame_, view);
@@ -183,9 +183,12 @@ bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, 
         emit(e);
         return true;
     }
-    // G71–G73: the control goes on after the profile the cycle has used (cycles.md §2–§4); G70
-    // goes on after its own block (§1).
-    if (cycle_profile_end_ && cycle->function != fn::finishing_cycle && !stopped_) current_frame()->block = *cycle_profile_end_ + 1;
+    // G71–G73: the control goes on after the profile that follows the cycle block (cycles.md
+    // §2–§4); G70, or a profile written elsewhere, goes on after the cycle block (§1).
+    Frame* frame = current_frame();
+    if (cycle_profile_blocks_ && cycle->function != fn::finishing_cycle && !stopped_ && frame &&
+        cycle_profile_blocks_->first >= frame->block)
+        frame->block = cycle_profile_blocks_->last + 1;
     return true;
 }
 
@@ -224,7 +227,7 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     position_ = saved_position;
     view_ = saved_view;
     if (!ok) return std::nullopt;
-    cycle_profile_end_ = *last;
+    cycle_profile_blocks_ = ProfileBlocks{*first, *last};
     return profile;
 }
 
