@@ -288,6 +288,7 @@ private:
     // --- canned cycles (executor_cycles.cpp; the expansions are in interpreter/cycles/) ----------
     friend class CycleContext;
     cycles::Parameters cycle_parameters_{setup_.cycles.initial};   // persistent (cycles.md §0)
+    cycles::SingleCycleModal single_cycle_;                         // G90/G92/G94 repeat values
     struct ProfileBlocks {
         std::uint32_t first, last;   // block indices of N P and N Q
     };

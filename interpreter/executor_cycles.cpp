@@ -102,6 +102,16 @@ public:
         const double unit = ex_.setup_.cycles.pq_unit_mm > 0 ? ex_.setup_.cycles.pq_unit_mm : ex_.setup_.increment_mm;
         return w->value * unit;
     }
+    bool repeat() const override {
+        for (const std::vector<ast::CodeRef>* codes : {&ex_.scan_.g, &ex_.scan_.m})
+            for (const ast::CodeRef& c : *codes)
+                if (c.info == &code_) return false;
+        return true;
+    }
+    bool names_axis(char axis) const override {
+        const auto* w = words_.get(axis);
+        return (w && !w->data) || words_.incremental.count(axis);
+    }
     bool has_end_point() const override { return has_end_; }
     Position end_point() const override { return end_; }
     bool incremental() const override { return ex_.flags_.incremental; }
@@ -112,6 +122,7 @@ public:
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
+    cycles::SingleCycleModal& single_cycle() override { return ex_.single_cycle_; }
     std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, p, q); }
 
     bool rapid(const Position& to) override { return move(EventKind::rapid, to); }

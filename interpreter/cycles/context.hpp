@@ -26,6 +26,14 @@ struct ProfileMove {
     bool x_word = false, z_word = false;    // the block names X/U, Z/W (G71 type I/II, §2)
 };
 
+// What a group-01 single cycle (G90/G92/G94) keeps for the blocks that repeat it: a repeat block
+// gives only the new X (or Z); the other end coordinate and R are those of the last cycle
+// [FANUC] (cycles.md §8 "subsequent blocks containing only new X (or Z) repeat the cycle").
+struct SingleCycleModal {
+    Position end{};
+    double r = 0;
+};
+
 struct Profile {
     Position start{};                       // the cycle start point A
     std::vector<ProfileMove> moves;         // ns … nf in order; moves[0] is A → A′
@@ -43,6 +51,8 @@ public:
     virtual std::optional<double> raw(char letter) const = 0;   // the value as written (P100 = 100)
     virtual std::optional<double> mm(char letter) const = 0;    // a distance (no point: increments, §0)
     virtual std::optional<double> pq(char letter) const = 0;    // P/Q of G74–G76/G83/G87 (§0)
+    virtual bool repeat() const = 0;                       // a modal cycle run again by a block without its code
+    virtual bool names_axis(char axis) const = 0;          // the block moves `axis` (X or U for 'X', ...)
     virtual bool has_end_point() const = 0;                // X/U/Z/W (lathe), X/Y (mill) in the block
     virtual Position end_point() const = 0;                // the block's target (absolute/incremental)
     virtual bool incremental() const = 0;                  // G91 (B/C, mills)
@@ -54,6 +64,7 @@ public:
     virtual bool diameter_x() const = 0;
     virtual const Settings& settings() const = 0;
     virtual Parameters& parameters() = 0;                  // persistent across the run (§0)
+    virtual SingleCycleModal& single_cycle() = 0;          // G90/G92/G94 values for repeat blocks
 
     // Profile N P .. N Q of the current program; nullopt after an alarm (not found, bad block).
     virtual std::optional<Profile> profile(double p, double q) = 0;
@@ -78,5 +89,13 @@ void lathe_profile(Context& ctx);   // G70–G73, cycles.md §1–§4 (lathe_pro
 void lathe_peck(Context& ctx);      // G74/G75, §5–§6 (lathe_peck.cpp)
 void lathe_thread(Context& ctx);    // G76, G92 (lathe_thread.cpp)
 void lathe_single(Context& ctx);    // G90/G94, §8 (lathe_single.cpp)
+
+// The end point and R of a single cycle block: a repeat block takes the coordinate it omits and R
+// from the last cycle (lathe_single.cpp).
+struct SingleCycleBlock {
+    Position end;
+    double r;
+};
+SingleCycleBlock single_cycle_block(Context& ctx);
 
 }  // namespace kerf::interpreter::cycles

@@ -11,10 +11,22 @@ namespace {
 namespace fn = dialects::functions;
 }
 
+SingleCycleBlock single_cycle_block(Context& ctx) {
+    SingleCycleModal& modal = ctx.single_cycle();
+    Position end = ctx.end_point();
+    double r = ctx.mm('R').value_or(0);
+    if (ctx.repeat()) {
+        for (const std::size_t a : {std::size_t{0}, std::size_t{2}})
+            if (!ctx.names_axis(a == 0 ? 'X' : 'Z')) end[a] = modal.end[a];
+        if (!ctx.has('R')) r = modal.r;
+    }
+    modal = {end, r};
+    return {end, r};
+}
+
 void lathe_single(Context& ctx) {
     const Position a = ctx.position();
-    const Position end = ctx.end_point();
-    const double r = ctx.mm('R').value_or(0);
+    const auto [end, r] = single_cycle_block(ctx);
     const bool turning = ctx.function() == fn::turning_cycle;
     // The first axis of the cycle moves by rapid to the taper start (R a radius on X: 2R on the
     // diameter, §8.1), the other axis feeds the cut, then the first feeds back and the second

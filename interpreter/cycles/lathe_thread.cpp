@@ -20,8 +20,9 @@ constexpr double kEps = 1e-9;
 double sign(double v) { return v > kEps ? 1.0 : v < -kEps ? -1.0 : 0.0; }
 
 // The cut of one pass from the current point to `end` (X a diameter when `dia`): with a run-out
-// of `chamfer` (Z length) the thread leaves at 45° before the end point (§7 step 3, §8.2).
-bool cut(Context& ctx, const Position& end, double lead, double chamfer, double out_x) {
+// of `chamfer` (Z length) the thread leaves at 45° before the end point (§7 step 3, §8.2), never
+// past the start diameter `limit_x` [inference: the pull-out ends where the X retract would].
+bool cut(Context& ctx, const Position& end, double lead, double chamfer, double limit_x) {
     if (chamfer <= kEps) return ctx.thread(end, lead);
     const Position from = ctx.position();
     const double length = end[2] - from[2];
@@ -32,8 +33,10 @@ bool cut(Context& ctx, const Position& end, double lead, double chamfer, double 
     before[0] = from[0] + (end[0] - from[0]) * t;
     before[2] = end[2] - dir * run_out;
     if (!ctx.thread(before, lead)) return false;
+    const double out_x = sign(limit_x - end[0]);
     Position pulled = end;
     pulled[0] = before[0] + out_x * (ctx.diameter_x() ? 2 : 1) * run_out;
+    if (out_x * (pulled[0] - limit_x) > 0) pulled[0] = limit_x;
     return ctx.thread(pulled, lead);
 }
 
@@ -44,8 +47,7 @@ bool pass(Context& ctx, const Position& a, double x_start, double z_start, Posit
     in[0] = x_start;
     in[2] = z_start;
     if (!ctx.rapid(in)) return false;
-    const double out_x = sign(a[0] - end[0]);
-    if (!cut(ctx, end, lead, chamfer, out_x)) return false;
+    if (!cut(ctx, end, lead, chamfer, a[0])) return false;
     Position back = ctx.position();
     back[0] = a[0];
     if (!ctx.rapid(back)) return false;
@@ -117,9 +119,9 @@ void multiple_threading(Context& ctx) {
 // G92: rapid to X + 2R, thread to (X, Z) with the run-out of the machine, rapid X, rapid Z (§8.2).
 void single_threading(Context& ctx) {
     const Position a = ctx.position();
-    const Position end = ctx.end_point();
+    const auto [end, r] = single_cycle_block(ctx);
     const double lead = thread_lead(ctx);
-    const double taper = ctx.mm('R').value_or(0) * (ctx.diameter_x() ? 2 : 1);
+    const double taper = r * (ctx.diameter_x() ? 2 : 1);
     pass(ctx, a, end[0] + taper, a[2], end, lead, ctx.settings().thread_chamfer_leads * lead);
 }
 
