@@ -297,7 +297,7 @@ private:
     // moves; false when the block has no cycle. `to` is the block's target point.
     bool apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to);
     const dialects::CodeInfo* cycle_of_block(bool has_axis_words) const;
-    std::optional<cycles::Profile> cycle_profile(const ast::BlockView& view, double p, double q);
+    std::optional<cycles::Profile> cycle_profile(const ast::BlockView& view, std::string_view spelling, double p, double q);
     bool read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile);
     bool cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view);
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.

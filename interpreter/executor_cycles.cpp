@@ -123,7 +123,7 @@ public:
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
     cycles::SingleCycleModal& single_cycle() override { return ex_.single_cycle_; }
-    std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, p, q); }
+    std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, code_.spelling, p, q); }
 
     bool rapid(const Position& to) override { return move(EventKind::rapid, to); }
     bool feed(const Position& to, std::optional<double> f) override {
@@ -205,14 +205,15 @@ bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, 
 
 // --- profile blocks -----------------------------------------------------------------------------
 
-std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& view, double p, double q) {
+std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& view, std::string_view spelling, double p,
+                                                       double q) {
     const Frame& f = *frame_;
     const auto first = find_label(f, p);
     const auto last = find_label(f, q);
     if (!first || !last || *last < *first) {
-        const double missing = !first ? p : q;
-        alarm(f, view, 60, fmt::format("P{} Q{}: sequence number N{} not found after N{} in this program (alarm 060)", p, q,
-                                       missing, p));
+        const std::string why = !first || !last ? fmt::format("sequence number N{} not found in this program", !first ? p : q)
+                                                : fmt::format("N{} comes before N{}", q, p);
+        alarm(f, view, 60, fmt::format("{} P{} Q{}: {} (alarm 060)", spelling, p, q, why));
         return std::nullopt;
     }
     // Each profile block is read with the executor's own word evaluation, from the running profile
