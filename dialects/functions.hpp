@@ -57,4 +57,38 @@ inline constexpr std::string_view stroke_check_off = "stroke-check-off";
 // "work-coordinate-1" ... "work-coordinate-6" are G54 ... G59.
 inline constexpr std::string_view work_coordinate_prefix = "work-coordinate-";
 
+// Canned cycles (reference/cycles.md; interpreter/cycles/ expands them).
+inline constexpr std::string_view finishing_cycle = "finishing-cycle";
+inline constexpr std::string_view rough_turning_cycle = "rough-turning-cycle";
+inline constexpr std::string_view rough_facing_cycle = "rough-facing-cycle";
+inline constexpr std::string_view pattern_repeating_cycle = "pattern-repeating-cycle";
+inline constexpr std::string_view face_peck_drilling_cycle = "face-peck-drilling-cycle";
+inline constexpr std::string_view grooving_cycle = "grooving-cycle";
+inline constexpr std::string_view multiple_threading_cycle = "multiple-threading-cycle";
+inline constexpr std::string_view thread_cutting_cycle = "thread-cutting-cycle";
+inline constexpr std::string_view variable_lead_thread_cutting = "variable-lead-thread-cutting";
+inline constexpr std::string_view turning_cycle = "turning-cycle";
+inline constexpr std::string_view facing_cycle = "facing-cycle";
+inline constexpr std::string_view canned_cycle_cancel = "canned-cycle-cancel";
+inline constexpr std::string_view return_initial_level = "return-initial-level";
+inline constexpr std::string_view return_r_level = "return-r-level";
+inline constexpr std::string_view drilling_cycle = "drilling-cycle";
+inline constexpr std::string_view drilling_dwell_cycle = "drilling-dwell-cycle";
+inline constexpr std::string_view peck_drilling_cycle = "peck-drilling-cycle";
+inline constexpr std::string_view high_speed_peck_drilling_cycle = "high-speed-peck-drilling-cycle";
+inline constexpr std::string_view tapping_cycle = "tapping-cycle";
+inline constexpr std::string_view left_hand_tapping_cycle = "left-hand-tapping-cycle";
+inline constexpr std::string_view boring_cycle = "boring-cycle";
+inline constexpr std::string_view boring_dwell_cycle = "boring-dwell-cycle";
+inline constexpr std::string_view boring_spindle_stop_cycle = "boring-spindle-stop-cycle";
+inline constexpr std::string_view boring_manual_retract_cycle = "boring-manual-retract-cycle";
+inline constexpr std::string_view back_boring_cycle = "back-boring-cycle";
+inline constexpr std::string_view fine_boring_cycle = "fine-boring-cycle";
+inline constexpr std::string_view face_drilling_cycle = "face-drilling-cycle";
+inline constexpr std::string_view face_tapping_cycle = "face-tapping-cycle";
+inline constexpr std::string_view face_boring_cycle = "face-boring-cycle";
+inline constexpr std::string_view side_drilling_cycle = "side-drilling-cycle";
+inline constexpr std::string_view side_tapping_cycle = "side-tapping-cycle";
+inline constexpr std::string_view side_boring_cycle = "side-boring-cycle";
+
 }  // namespace kerf::dialects::functions

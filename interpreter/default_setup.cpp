@@ -36,6 +36,31 @@ void set_axes(Setup& s, const machine::Machine& m) {
         s.soft_limits[i] = {axis.min, axis.max};
     }
 }
+
+
+cycles::Settings cycle_settings(const machine::Machine& m) {
+    const machine::CycleParameters& c = m.cycle_parameters;
+    const machine::Switches& sw = m.switches;
+    cycles::Settings s;
+    s.initial = {c.g71_depth, c.g71_retract, c.g72_depth, c.g72_retract, c.g73_relief_x, c.g73_relief_z,
+                 c.g73_divisions, c.g74_retract, c.g75_retract, c.g76_finishing_passes, c.g76_chamfer, c.g76_angle,
+                 c.g76_min_depth, c.g76_allowance};
+    s.allowance_u_radius = sw.finish_allowance_u == machine::AllowanceU::radius;
+    // cycles.md §0: P/Q count the input increment, or a fixed micron / tenth of a micron.
+    s.pq_unit_mm = sw.cycle_pq_units == machine::CyclePQUnits::micron         ? 0.001
+                   : sw.cycle_pq_units == machine::CyclePQUnits::tenth_micron ? 0.0001
+                                                                             : m.increment_mm();
+    s.relief = sw.rough_relief == machine::Relief::rapid ? cycles::Relief::rapid : cycles::Relief::feed;
+    s.rough_return = sw.rough_return == machine::RoughReturn::x_then_z   ? cycles::Return::x_then_z
+                     : sw.rough_return == machine::RoughReturn::z_then_x ? cycles::Return::z_then_x
+                                                                          : cycles::Return::simultaneous;
+    s.infeed = sw.g76_infeed == machine::G76Infeed::radial           ? cycles::Infeed::radial
+               : sw.g76_infeed == machine::G76Infeed::opposite_flank ? cycles::Infeed::opposite_flank
+                                                                     : cycles::Infeed::flank;
+    s.thread_chamfer_leads = sw.thread_chamfer;
+    s.peck_clearance = sw.peck_clearance;
+    return s;
+}
 }  // namespace
 
 Setup make_setup(const machine::Machine& m) {
@@ -68,6 +93,7 @@ Setup make_setup(const machine::Machine& m) {
     s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);
     s.max_call_depth = sw.subprogram_nesting;
     s.max_macro_depth = sw.macro_nesting;
+    s.cycles = cycle_settings(m);
     return s;
 }
 

@@ -62,8 +62,12 @@ void Executor::update_flags() {
     for (const auto& [group, code] : modal_) {
         if (!code) continue;
         const std::uint8_t c = code_class_of(*code);
-        if (code->binder_traits & dialects::CodeInfo::kMotionGroup) f.motion = code->function;
-        if (code->modal && (c & kCycleCode)) f.modal_cycle = code;
+        const bool motion_group = (code->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
+        if (motion_group) {
+            f.motion = code->function;
+            if (c & kCycleCode) f.motion_cycle = code;
+        }
+        if (code->modal && (c & kCycleCode) && !motion_group) f.modal_cycle = code;   // G81.., lathe G83..
         f.incremental |= (c & kIncrementalCode) != 0;
         f.per_revolution |= (c & kPerRevolutionCode) != 0;
         f.css |= (c & kCssCode) != 0;

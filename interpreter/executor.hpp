@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/cycles/context.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/macro/evaluate.hpp"
 #include "interpreter/macro/variables.hpp"
@@ -99,6 +100,7 @@ struct ModalFlags {
     bool inch = false;                // G20 (C: G70)
     motion::Plane plane = motion::Plane::xy;
     const dialects::CodeInfo* modal_cycle = nullptr;   // a modal canned cycle (G81.., lathe G83..)
+    const dialects::CodeInfo* motion_cycle = nullptr;  // group 01 is a cycle (G90/G92/G94): X/Z blocks repeat it
 };
 
 // G68 coordinate rotation (semantics.md §2.9): programmed points are turned about `center` by
@@ -235,7 +237,6 @@ private:
                                   kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
                                   kPlaneYZCode = 192;   // the plane: two bits
     std::vector<std::uint8_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
-    bool apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words);
     void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
@@ -284,6 +285,25 @@ private:
 
     const ast::BlockView* view_ = nullptr;
     const Frame* frame_ = nullptr;
+
+    // --- canned cycles (executor_cycles.cpp; the expansions are in interpreter/cycles/) ----------
+    friend class CycleContext;
+    cycles::Parameters cycle_parameters_{setup_.cycles.initial};   // persistent (cycles.md §0)
+    cycles::SingleCycleModal single_cycle_;                         // G90/G92/G94 repeat values
+    struct ProfileBlocks {
+        std::uint32_t first, last;   // block indices of N P and N Q
+    };
+    std::optional<ProfileBlocks> cycle_profile_blocks_;   // of the cycle being run: G71–G73 go on after N Q
+    // The cycle of the block (its code, or the modal one on a block with axis words) expanded into
+    // moves; false when the block has no cycle. `to` is the block's target point.
+    bool apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to);
+    const dialects::CodeInfo* cycle_of_block(bool has_axis_words) const;
+    std::optional<cycles::Profile> cycle_profile(const ast::BlockView& view, std::string_view spelling, double p, double q);
+    bool read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile);
+    bool cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view);
+    // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
+    motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
+    void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);
 };
 
 }  // namespace kerf::interpreter

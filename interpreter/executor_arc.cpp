@@ -26,25 +26,27 @@ motion::Vec3 rotate_vector(motion::Vec3 v, const std::optional<Rotation>& rotati
 
 }  // namespace
 
-void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view) {
-    const Frame& f = *frame_;
+motion::ArcResult Executor::arc_geometry(bool cw, const Position& from, const Position& to,
+                                         const BlockWords& words) const {
     const double scale = unit_scale();
-    const motion::Vec3 start = geometric_mm(position_, setup_.diameter_x, scale);
+    const motion::Vec3 start = geometric_mm(from, setup_.diameter_x, scale);
     const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
     const motion::ArcDirection dir = cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
     motion::ArcOptions options;
     options.radius_tolerance = setup_.arc_tolerance;
     options.allow_negative_r = setup_.arc_negative_r;
     options.enlarge_small_r = setup_.arc_enlarge_small_r;
-    const auto* r = words.get('R');
-    const motion::ArcResult arc = [&] {
-        if (r) return motion::arc_from_radius(start, end, plane(), dir, axis_value(*r, 'R') * scale, options);
-        motion::Vec3 offset{};
-        if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * scale;
-        if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * scale;
-        if (const auto* k = words.get('K')) offset.z = axis_value(*k, 'K') * scale;
-        return motion::arc_from_center(start, end, plane(), dir, rotate_vector(offset, rotation_), options);
-    }();
+    if (const auto* r = words.get('R')) return motion::arc_from_radius(start, end, plane(), dir, axis_value(*r, 'R') * scale, options);
+    motion::Vec3 offset{};
+    if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * scale;
+    if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * scale;
+    if (const auto* k = words.get('K')) offset.z = axis_value(*k, 'K') * scale;
+    return motion::arc_from_center(start, end, plane(), dir, rotate_vector(offset, rotation_), options);
+}
+
+void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view) {
+    const Frame& f = *frame_;
+    const motion::ArcResult arc = arc_geometry(cw, position_, to, words);
     if (!arc) {
         const motion::ArcError& e = arc.error();
         if (e.code == motion::ArcErrorCode::r_zero_chord) {
@@ -58,26 +60,32 @@ void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, co
               fmt::format("arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(e.code), e.found, e.allowed));
         return;
     }
-    const motion::Box box = motion::bounds(arc.arc());
+    emit_arc(arc.arc(), to, view);
+}
+
+void Executor::emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view) {
+    const Frame& f = *frame_;
+    const double scale = unit_scale();
+    const motion::Box box = motion::bounds(arc);
     if (!within_soft_limits(from_geometric(box.min, to, setup_.diameter_x, scale),
                             from_geometric(box.max, to, setup_.diameter_x, scale), f, view))
         return;
     Event e;
-    e.kind = cw ? EventKind::arc_cw : EventKind::arc_ccw;
+    e.kind = arc.cw ? EventKind::arc_cw : EventKind::arc_ccw;
     e.source = source(f, view);
     e.start = position_;
     e.end = to;
-    e.center = from_geometric(arc.arc().center, to, setup_.diameter_x, scale);
-    e.radius = arc.arc().radius;
-    e.length_mm = motion::length(arc.arc());
+    e.center = from_geometric(arc.center, to, setup_.diameter_x, scale);
+    e.radius = arc.radius;
+    e.length_mm = motion::length(arc);
     // F is the speed along the arc in its plane; a helix's third axis follows (semantics.md §3).
-    const motion::PlaneAxes axes = motion::plane_axes(plane());
+    const motion::PlaneAxes axes = motion::plane_axes(arc.plane);
     double accel = 0;
     for (const motion::Axis a : {axes.first, axes.second}) {
         const double axis_accel = setup_.accel_mm_s2[static_cast<std::size_t>(a)];
         if (axis_accel > 0) accel = accel > 0 ? std::min(accel, axis_accel) : axis_accel;
     }
-    time_feed_move(e, motion::feed_length(arc.arc()), accel, &arc.arc());
+    time_feed_move(e, motion::feed_length(arc), accel, &arc);
     result_.feed_distance_mm += e.length_mm;
     position_ = to;
     emit(std::move(e));

@@ -1,10 +1,10 @@
-// Codes whose motion the next issue expands (canned cycles, compensation, polar and cylindrical
-// interpolation, position offsets, direct drawing: reference/cycles.md, semantics.md §5–§10).
-// Until an expander exists for a code, the interpreter must not pretend: a cycle block does not
-// run its words as a plain move (the tool would cut through the part), it says so in a message
-// and keeps the tool where it is; G71–G73 skip their profile blocks as the control does and check
-// that P and Q exist (alarm 060); codes that change the path (G41/G42, G112, G45–G48, ,C ,R) let
-// the programmed path run and say that it is not the compensated one.
+// Canned cycles: the executor's side of interpreter/cycles/ (reference/cycles.md). CycleContext
+// gives a cycle function the block's words, the profile blocks N P..N Q, the persistent
+// parameters and moves through the executor's move()/emit_arc() (times, soft limits, machine
+// positions as for any block). A cycle without an expander yet (SPINNER §12–§17, drilling) does
+// not run its words as a plain move (the tool would cut through the part): it says so in a
+// message and keeps the tool where it is. Codes that change the path (G41/G42, G112, G45–G48,
+// ,C ,R) let the programmed path run and say that it is not the compensated one.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -31,11 +31,6 @@ constexpr std::string_view kPathChangers[] = {
     "position-offset-double-decrease", "corner-slowdown", "arc-approach", "arc-exit",
     "tool-length-comp-plus", "tool-length-comp-minus", "polar-coordinate-command", "scaling", "mirror",
 };
-
-// G71/G72/G73 run the profile N P..N Q and go on after N Q (cycles.md §2–§4); G70 runs it and
-// goes on after its own block (§1).
-constexpr std::string_view kProfileCycles[] = {"rough-turning-cycle", "rough-facing-cycle", "pattern-repeating-cycle"};
-constexpr std::string_view kFinishingCycle = "finishing-cycle";
 
 }  // namespace
 
@@ -74,35 +69,230 @@ std::uint8_t Executor::code_class_of(const dialects::CodeInfo& code) const {
     return i < code_class_.size() ? code_class_[i] : (is_cycle_function(code.function) ? kCycleCode : 0);
 }
 
-bool Executor::apply_cycle_placeholder(const ast::BlockView& view, const BlockWords& words, bool has_axis_words) {
-    const dialects::CodeInfo* cycle = nullptr;
-    for (const ast::CodeRef& c : scan_.g)
-        if (c.info && is_cycle(*c.info)) cycle = c.info;
-    for (const ast::CodeRef& c : scan_.m)
-        if (c.info && is_cycle(*c.info)) cycle = c.info;
-    if (!cycle && flags_.modal_cycle && has_axis_words) cycle = flags_.modal_cycle;   // G81 ... X Y: a new hole
-    if (!cycle) return false;
-    const auto* p = words.get('P');
-    const auto* q = words.get('Q');
-    const bool profile = std::find(std::begin(kProfileCycles), std::end(kProfileCycles), cycle->function) !=
-                         std::end(kProfileCycles);
-    if ((profile || cycle->function == kFinishingCycle) && p && q) {
-        const auto first = find_label(*frame_, p->value);
-        const auto last = find_label(*frame_, q->value);
-        if (!first || !last) {
-            const double missing = first ? q->value : p->value;
-            alarm(*frame_, view, 60, fmt::format("{} P{} Q{}: sequence number N{} not found in this program (alarm 060)",
-                                                 cycle->spelling, p->value, q->value, missing));
-            return true;
-        }
-        // The control goes on after the profile (G71–G73), which the cycle has used.
-        if (profile) current_frame()->block = *last + 1;
+// --- the context a cycle runs in ------------------------------------------------------------------
+
+class CycleContext final : public cycles::Context {
+public:
+    CycleContext(Executor& ex, const dialects::CodeInfo& code, const ast::BlockView& view, const BlockWords& words,
+                 bool has_end, const Position& end)
+        : ex_(ex), code_(code), view_(view), words_(words), has_end_(has_end), end_(end) {}
+
+    std::string_view function() const override { return code_.function; }
+    std::string spelling() const override { return code_.spelling; }
+    bool has(char letter) const override { return words_.get(letter) != nullptr; }
+    std::optional<double> raw(char letter) const override {
+        const auto* w = words_.get(letter);
+        return w ? std::optional<double>(w->value) : std::nullopt;
     }
-    Event e = event_at(EventKind::message, *frame_, view);
-    e.text = fmt::format("{} ({}) is not expanded yet (cycles: next issue): the tool stays at its start point",
-                         cycle->spelling, cycle->function);
-    emit(e);
+    std::optional<double> mm(char letter) const override {
+        const auto* w = words_.get(letter);
+        return w ? std::optional<double>(ex_.axis_value(*w, letter)) : std::nullopt;
+    }
+    // cycles.md §0: integers in least-input increments (or the machine's fixed unit); a decimal
+    // point is an alarm on most controls: read as mm and said.
+    std::optional<double> pq(char letter) const override {
+        const auto* w = words_.get(letter);
+        if (!w) return std::nullopt;
+        if (w->has_point) {
+            const_cast<CycleContext*>(this)->message(
+                fmt::format("{}{} has a decimal point: read as mm (cycles.md §0: P/Q are integers in least input "
+                            "increments; most controls alarm)", letter, w->value));
+            return w->value;
+        }
+        const double unit = ex_.setup_.cycles.pq_unit_mm > 0 ? ex_.setup_.cycles.pq_unit_mm : ex_.setup_.increment_mm;
+        return w->value * unit;
+    }
+    bool repeat() const override {
+        for (const std::vector<ast::CodeRef>* codes : {&ex_.scan_.g, &ex_.scan_.m})
+            for (const ast::CodeRef& c : *codes)
+                if (c.info == &code_) return false;
+        return true;
+    }
+    bool names_axis(char axis) const override {
+        const auto* w = words_.get(axis);
+        return (w && !w->data) || words_.incremental.count(axis);
+    }
+    bool has_end_point() const override { return has_end_; }
+    Position end_point() const override { return end_; }
+    bool incremental() const override { return ex_.flags_.incremental; }
+    bool return_to_r_level() const override { return ex_.modal_active(fn::return_r_level); }
+    double modal_feed() const override { return ex_.feed_; }
+
+    Position position() const override { return ex_.position_; }
+    bool diameter_x() const override { return ex_.setup_.diameter_x; }
+    const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
+    cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
+    cycles::SingleCycleModal& single_cycle() override { return ex_.single_cycle_; }
+    std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, code_.spelling, p, q); }
+
+    bool rapid(const Position& to) override { return move(EventKind::rapid, to); }
+    bool feed(const Position& to, std::optional<double> f) override {
+        if (f) ex_.feed_ = *f;
+        return move(EventKind::linear, to);
+    }
+    bool arc(bool cw, const Position& to, const Position& center, std::optional<double> f) override {
+        if (f) ex_.feed_ = *f;
+        return ex_.cycle_arc(cw, to, center, view_);
+    }
+    bool thread(const Position& to, double lead) override {
+        ex_.thread_lead_ = lead;
+        return move(EventKind::thread, to);
+    }
+    void dwell(double seconds) override {
+        Event e = ex_.event_at(EventKind::dwell, *ex_.frame_, view_);
+        e.time_s = std::max(0.0, seconds);
+        ex_.emit(e);
+    }
+    void m_code(int number) override {
+        Event e = ex_.event_at(EventKind::message, *ex_.frame_, view_);
+        e.code = number;
+        e.text = fmt::format("M{} (issued by {})", number, code_.spelling);
+        ex_.emit(e);
+    }
+    void message(std::string text) override {
+        Event e = ex_.event_at(EventKind::message, *ex_.frame_, view_);
+        e.text = std::move(text);
+        ex_.emit(e);
+    }
+    void alarm(int number, std::string text) override { ex_.alarm(*ex_.frame_, view_, number, std::move(text)); }
+
+private:
+    bool move(EventKind kind, const Position& to) {
+        if (ex_.stopped_) return false;
+        if (to == ex_.position_ && kind != EventKind::thread) return true;   // nothing to move
+        ex_.move(kind, to, *ex_.frame_, view_);
+        return !ex_.stopped_;
+    }
+
+    Executor& ex_;
+    const dialects::CodeInfo& code_;
+    const ast::BlockView& view_;
+    const BlockWords& words_;
+    bool has_end_;
+    Position end_;
+};
+
+const dialects::CodeInfo* Executor::cycle_of_block(bool has_axis_words) const {
+    const dialects::CodeInfo* cycle = nullptr;
+    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+        for (const ast::CodeRef& c : *codes)
+            if (c.info && is_cycle(*c.info)) cycle = c.info;
+    if (cycle || !has_axis_words) return cycle;
+    // A block with axis words repeats the modal cycle: G81 X Y a new hole, G90 X a new pass.
+    return flags_.motion_cycle ? flags_.motion_cycle : flags_.modal_cycle;
+}
+
+bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to) {
+    const dialects::CodeInfo* cycle = cycle_of_block(has_axis_words);
+    if (!cycle) return false;
+    cycle_profile_blocks_.reset();
+    CycleContext context(*this, *cycle, view, words, has_axis_words, to);
+    if (!cycles::expand(context)) {
+        Event e = event_at(EventKind::message, *frame_, view);
+        e.text = fmt::format("{} ({}) is not expanded yet (cycles: next issue): the tool stays at its start point",
+                             cycle->spelling, cycle->function);
+        emit(e);
+        return true;
+    }
+    // G71–G73: the control goes on after the profile that follows the cycle block (cycles.md
+    // §2–§4); G70, or a profile written elsewhere, goes on after the cycle block (§1).
+    Frame* frame = current_frame();
+    if (cycle_profile_blocks_ && cycle->function != fn::finishing_cycle && !stopped_ && frame &&
+        cycle_profile_blocks_->first >= frame->block)
+        frame->block = cycle_profile_blocks_->last + 1;
     return true;
+}
+
+// --- profile blocks -----------------------------------------------------------------------------
+
+std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& view, std::string_view spelling, double p,
+                                                       double q) {
+    const Frame& f = *frame_;
+    const auto first = find_label(f, p);
+    const auto last = find_label(f, q);
+    if (!first || !last || *last < *first) {
+        const std::string why = !first || !last ? fmt::format("sequence number N{} not found in this program", !first ? p : q)
+                                                : fmt::format("N{} comes before N{}", q, p);
+        alarm(f, view, 60, fmt::format("{} P{} Q{}: {} (alarm 060)", spelling, p, q, why));
+        return std::nullopt;
+    }
+    // Each profile block is read with the executor's own word evaluation, from the running profile
+    // point; the cycle block's scan, position and motion code are restored afterwards (the profile
+    // leaves the modal state as it was, cycles.md "Notation").
+    const BlockScan saved_scan = scan_;
+    const Position saved_position = position_;
+    const ast::BlockView* saved_view = view_;
+    cycles::Profile profile;
+    profile.start = position_;
+    std::string_view motion = flags_.motion;
+    bool ok = true;
+    for (std::uint32_t b = *first; ok && b <= *last; ++b) {
+        const ast::BlockView block = file_of(f).typed->block(b);
+        if (block.block().kind != ast::BlockKind::code) continue;
+        if (block.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
+        view_ = nullptr;
+        scan_block(f, block);
+        view_ = &block;
+        ok = read_profile_block(block, motion, profile);
+    }
+    scan_ = saved_scan;
+    position_ = saved_position;
+    view_ = saved_view;
+    if (!ok) return std::nullopt;
+    cycle_profile_blocks_ = ProfileBlocks{*first, *last};
+    return profile;
+}
+
+// One profile block: its end point from the running profile point, G00/G01/G02/G03 (modal within
+// the profile), the arc's centre and sweep, its F (G70, cycles.md §1). Blocks without an end point
+// (a direct-drawing angle alone) add no move: the programmed points are the profile.
+bool Executor::read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile) {
+    BlockWords words;
+    if (!evaluate_words(block, words)) return false;
+    for (const ast::CodeRef& c : scan_.g)
+        if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) motion = c.info->function;
+    bool moves = false;
+    const Position to = target_position(words, moves);
+    if (!moves) return true;
+    cycles::ProfileMove m;
+    m.end = to;
+    m.kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
+    if (const auto* w = words.get('F'); w && !w->data) m.feed = w->value;
+    m.x_word = words.get('X') || words.incremental.count('X');
+    m.z_word = words.get('Z') || words.incremental.count('Z');
+    if (motion == fn::circular_cw || motion == fn::circular_ccw) {
+        const motion::ArcResult arc = arc_geometry(motion == fn::circular_cw, position_, to, words);
+        if (!arc) {
+            alarm(*frame_, block, arc.error().fanuc_alarm,
+                  fmt::format("profile arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code),
+                              arc.error().found, arc.error().allowed));
+            return false;
+        }
+        m.kind = arc.arc().cw ? EventKind::arc_cw : EventKind::arc_ccw;
+        m.center = from_geometric(arc.arc().center, to, setup_.diameter_x, unit_scale());
+        m.sweep = arc.arc().sweep;
+    }
+    profile.moves.push_back(m);
+    position_ = to;
+    return true;
+}
+
+// An arc of a cycle from the current point to `to` about `center` (work coordinates).
+bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view) {
+    const double scale = unit_scale();
+    const motion::Vec3 start = geometric_mm(position_, setup_.diameter_x, scale);
+    const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
+    const motion::Vec3 c = geometric_mm(center, setup_.diameter_x, scale);
+    motion::ArcOptions options;
+    options.radius_tolerance = std::max(setup_.arc_tolerance, 1e-4);
+    const motion::ArcResult arc = motion::arc_from_center(start, end, plane(), cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw,
+                                                          c - start, options);
+    if (!arc) {
+        move(EventKind::linear, to, *frame_, view);   // a degenerate piece of an arc: its chord
+        return !stopped_;
+    }
+    emit_arc(arc.arc(), to, view);
+    return !stopped_;
 }
 
 void Executor::note_path_changers(const ast::BlockView& view) {

@@ -164,7 +164,7 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     if (const auto reference = apply_reference_motion(view, words)) return *reference;
     bool moves = false;
     const Position to = target_position(words, moves);
-    if (apply_cycle_placeholder(view, words, moves)) return false;
+    if (apply_cycle(view, words, moves, to)) return false;
     note_path_changers(view);
     const std::string_view motion = flags_.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).

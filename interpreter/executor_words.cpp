@@ -118,8 +118,12 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
         const dialects::CodeInfo*& slot = modal_[c.info->group];
         if (slot == c.info) continue;
         slot = c.info;
-        if (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) flags_.motion = c.info->function;
-        else changed = true;
+        if (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) {
+            flags_.motion = c.info->function;
+            flags_.motion_cycle = (code_class_of(*c.info) & kCycleCode) ? c.info : nullptr;   // G90/G92/G94
+        } else {
+            changed = true;
+        }
     }
     if (changed) update_flags();
 }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "interpreter/cycles/settings.hpp"
 #include "interpreter/events.hpp"
 
 namespace kerf::interpreter {
@@ -62,6 +63,7 @@ struct Setup {
     std::uint64_t step_limit = 10'000'000;
     int max_call_depth = 4;            // M98 nesting ([FANUC], dialects.md §3.6)
     int max_macro_depth = 4;           // G65/G66 nesting
+    cycles::Settings cycles;           // persistent cycle parameters and cycle switches (cycles.md §0, §21)
 };
 
 }  // namespace kerf::interpreter

@@ -1,0 +1,101 @@
+// The canned cycles (reference/cycles.md) as functions over a small interface the executor
+// provides: where the tool is, the words of the cycle block, the profile blocks N P..N Q, the
+// persistent cycle parameters, and moves emitted through the executor (so times, soft limits and
+// machine positions stay those of ordinary blocks). Each family lives in its own file of this
+// folder and is testable through a program run (tests/interpreter/test_cycles_*.cpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "interpreter/cycles/settings.hpp"
+#include "interpreter/events.hpp"
+
+namespace kerf::interpreter::cycles {
+
+// One move of a finishing profile, in work coordinates as programmed (lathe X a diameter).
+struct ProfileMove {
+    EventKind kind = EventKind::linear;     // rapid, linear, arc_cw, arc_ccw
+    Position end{};
+    Position center{};                      // arcs
+    double sweep = 0;                       // arcs: signed radians in the G18 frame (Z, X): > 0 CCW
+    std::optional<double> feed;             // F of the block (effective in G70 only, cycles.md §1)
+    bool x_word = false, z_word = false;    // the block names X/U, Z/W (G71 type I/II, §2)
+};
+
+// What a group-01 single cycle (G90/G92/G94) keeps for the blocks that repeat it: a repeat block
+// gives only the new X (or Z); the other end coordinate and R are those of the last cycle
+// [FANUC] (cycles.md §8 "subsequent blocks containing only new X (or Z) repeat the cycle").
+struct SingleCycleModal {
+    Position end{};
+    double r = 0;
+};
+
+struct Profile {
+    Position start{};                       // the cycle start point A
+    std::vector<ProfileMove> moves;         // ns … nf in order; moves[0] is A → A′
+};
+
+// What the executor offers a cycle. Positions are work coordinates as programmed.
+class Context {
+public:
+    virtual ~Context() = default;
+
+    // The cycle block.
+    virtual std::string_view function() const = 0;         // function id (docs/functions.md)
+    virtual std::string spelling() const = 0;              // "G71", for messages
+    virtual bool has(char letter) const = 0;
+    virtual std::optional<double> raw(char letter) const = 0;   // the value as written (P100 = 100)
+    virtual std::optional<double> mm(char letter) const = 0;    // a distance (no point: increments, §0)
+    virtual std::optional<double> pq(char letter) const = 0;    // P/Q of G74–G76/G83/G87 (§0)
+    virtual bool repeat() const = 0;                       // a modal cycle run again by a block without its code
+    virtual bool names_axis(char axis) const = 0;          // the block moves `axis` (X or U for 'X', ...)
+    virtual bool has_end_point() const = 0;                // X/U/Z/W (lathe), X/Y (mill) in the block
+    virtual Position end_point() const = 0;                // the block's target (absolute/incremental)
+    virtual bool incremental() const = 0;                  // G91 (B/C, mills)
+    virtual bool return_to_r_level() const = 0;            // G99 of a return-level group (§10, §11)
+    virtual double modal_feed() const = 0;                 // F in effect (the block's F included)
+
+    // The machine.
+    virtual Position position() const = 0;
+    virtual bool diameter_x() const = 0;
+    virtual const Settings& settings() const = 0;
+    virtual Parameters& parameters() = 0;                  // persistent across the run (§0)
+    virtual SingleCycleModal& single_cycle() = 0;          // G90/G92/G94 values for repeat blocks
+
+    // Profile N P .. N Q of the current program; nullopt after an alarm (not found, bad block).
+    virtual std::optional<Profile> profile(double p, double q) = 0;
+
+    // Motion: each returns false when the run stopped (soft limit alarm).
+    virtual bool rapid(const Position& to) = 0;
+    virtual bool feed(const Position& to, std::optional<double> feed = std::nullopt) = 0;
+    virtual bool arc(bool cw, const Position& to, const Position& center, std::optional<double> feed = std::nullopt) = 0;
+    virtual bool thread(const Position& to, double lead) = 0;
+    virtual void dwell(double seconds) = 0;
+    virtual void m_code(int number) = 0;                   // a clamp/unclamp M code issued by the cycle
+    virtual void message(std::string text) = 0;
+    virtual void alarm(int number, std::string text) = 0;
+};
+
+// Expands the cycle of the block; false when `ctx.function()` is no cycle this folder knows (the
+// executor then keeps its placeholder message).
+bool expand(Context& ctx);
+
+// The families (one file each).
+void lathe_profile(Context& ctx);   // G70–G73, cycles.md §1–§4 (lathe_profile.cpp)
+void lathe_peck(Context& ctx);      // G74/G75, §5–§6 (lathe_peck.cpp)
+void lathe_thread(Context& ctx);    // G76, G92 (lathe_thread.cpp)
+void lathe_single(Context& ctx);    // G90/G94, §8 (lathe_single.cpp)
+
+// The end point and R of a single cycle block: a repeat block takes the coordinate it omits and R
+// from the last cycle (lathe_single.cpp).
+struct SingleCycleBlock {
+    Position end;
+    double r;
+};
+SingleCycleBlock single_cycle_block(Context& ctx);
+
+}  // namespace kerf::interpreter::cycles

@@ -1,0 +1,191 @@
+// G70–G73, the lathe cycles over a finishing profile N P .. N Q (reference/cycles.md §1–§4).
+// Geometry runs in the Z–X plane with X as a radius (contour.hpp); moves go out as diameters.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interpreter/cycles/contour.hpp"
+
+namespace kerf::interpreter::cycles {
+
+namespace {
+
+constexpr double kEps = 1e-7;
+
+double sign(double v) { return v > 0 ? 1.0 : v < 0 ? -1.0 : 0.0; }
+
+// Emits one contour segment as its kind (rapid, feed, arc); `feed` overrides the modal F (G70).
+bool emit(Context& ctx, const Seg& s, const Position& like, std::optional<double> feed = std::nullopt) {
+    const bool dia = ctx.diameter_x();
+    const Position to = to_position(s.b, like, dia);
+    if (s.kind == EventKind::rapid) return ctx.rapid(to);
+    if (s.is_arc()) return ctx.arc(s.kind == EventKind::arc_cw, to, to_position(s.c, like, dia), feed);
+    return ctx.feed(to, feed);
+}
+
+// Rapid back to the start point A: both axes, or one after the other (machine switch
+// rough_return, cycles.md §21.3).
+bool return_to(Context& ctx, const Position& a) {
+    Position p = ctx.position();
+    if (ctx.settings().rough_return == Return::x_then_z) p[0] = a[0];
+    if (ctx.settings().rough_return == Return::z_then_x) p[2] = a[2];
+    if (p != ctx.position() && !ctx.rapid(p)) return false;
+    return ctx.rapid(a);
+}
+
+// The second-block allowance Δu/2 (radius) and Δw; Δu is a diameter unless the machine says
+// radius (cycles.md §2, §21.2; machine switch finish_allowance_u).
+Pt allowance(Context& ctx) {
+    const double u = ctx.mm('U').value_or(0);
+    const double half = ctx.settings().allowance_u_radius || !ctx.diameter_x() ? u : u / 2;
+    return {half, ctx.mm('W').value_or(0)};
+}
+
+// --- G70 (§1) ------------------------------------------------------------------------------------
+
+// The profile as written, F of the profile blocks in effect, then rapid back to A.
+void finishing(Context& ctx, const Profile& profile) {
+    const Contour contour = contour_of(profile, 0, ctx.diameter_x());
+    for (const Seg& s : contour)
+        if (!emit(ctx, s, profile.start, profile.moves[s.move].feed)) return;
+    ctx.rapid(profile.start);
+}
+
+// --- G71 / G72 type I (§2, §3) -------------------------------------------------------------------
+
+// Roughing in levels of `level` (X for G71, Z for G72), passes along the other axis, 45° relief
+// by e, then one pass along the allowance contour (cycles.md §2 "Expansion, type I").
+struct Rough {
+    Coord level;         // the axis the depth of cut steps in
+    double depth;        // Δd
+    double retract;      // e
+};
+
+bool rough_levels(Context& ctx, const Profile& profile, const Rough& r, const Contour& allowance_contour, Pt a, Pt a_allow) {
+    const Coord pass = other(r.level);
+    const bool dia = ctx.diameter_x();
+    const bool rapid_infeed = profile.moves[0].kind == EventKind::rapid;   // G00/G01 in block ns (§2)
+    const double s = sign(get(a, r.level) - get(a_allow, r.level));
+    for (int k = 1;; ++k) {
+        const double level = get(a, r.level) - k * r.depth * s;
+        if (s * (level - get(a_allow, r.level)) <= kEps) break;
+        const auto cut = first_crossing(allowance_contour, r.level, level);
+        const double end = cut ? get(cut->p, pass) : get(allowance_contour.back().b, pass);
+        const Pt in = make(r.level, level, get(a, pass));
+        const Position in_pos = to_position(in, profile.start, dia);
+        if (!(rapid_infeed ? ctx.rapid(in_pos) : ctx.feed(in_pos))) return false;
+        if (!ctx.feed(to_position(make(r.level, level, end), profile.start, dia))) return false;
+        const double back = sign(get(a, pass) - end);
+        const Position relief = to_position(make(r.level, level + s * r.retract, end + back * r.retract), profile.start, dia);
+        if (!(ctx.settings().relief == Relief::rapid ? ctx.rapid(relief) : ctx.feed(relief))) return false;
+        if (!ctx.rapid(to_position(make(r.level, level + s * r.retract, get(a, pass)), profile.start, dia))) return false;
+    }
+    return true;
+}
+
+// The semi-finishing pass along the allowance contour, clipped where it crosses the pass start
+// (O0071: the contour starts at Z3, the pass at Z1).
+bool allowance_pass(Context& ctx, const Profile& profile, Coord level, const Contour& contour, Pt a) {
+    const Coord pass = other(level);
+    const bool dia = ctx.diameter_x();
+    Contour path = contour;
+    if (const auto clip = first_crossing(contour, pass, get(a, pass))) path = after(contour, *clip);
+    if (path.empty()) return true;
+    const Pt start = path.front().a;
+    const Position in = to_position(make(level, get(start, level), get(a, pass)), profile.start, dia);
+    const bool rapid_infeed = profile.moves[0].kind == EventKind::rapid;
+    if (!(rapid_infeed ? ctx.rapid(in) : ctx.feed(in))) return false;
+    if (std::fabs(get(start, pass) - get(a, pass)) > kEps && !ctx.feed(to_position(start, profile.start, dia))) return false;
+    for (const Seg& s : path)
+        if (!emit(ctx, s, profile.start)) return false;
+    return true;
+}
+
+void rough(Context& ctx, const Profile& profile, const Rough& r) {
+    const bool dia = ctx.diameter_x();
+    if (r.depth <= 0) {
+        ctx.alarm(62, fmt::format("{}: depth of cut {} must be positive (FANUC alarm 062)", ctx.spelling(), r.depth));
+        return;
+    }
+    const ProfileMove& first = profile.moves[0];
+    const bool type2 = first.x_word && first.z_word;
+    if (type2)
+        ctx.message(fmt::format("{}: type II profile (first block moves both axes): roughed as type I, pockets are "
+                                "left to the allowance pass (cycles.md §2 type II is not expanded yet)", ctx.spelling()));
+    const Contour finish = contour_of(profile, 1, dia);
+    if (!type2 && (!monotonic(finish, Coord::x) || !monotonic(finish, Coord::z))) {
+        ctx.alarm(64, fmt::format("{}: the type I profile must be monotonic in X and Z (cycles.md §2; FANUC alarm 064)",
+                                  ctx.spelling()));
+        return;
+    }
+    const Pt shift = allowance(ctx);
+    const Contour allow = shifted(finish, shift.x, shift.z);
+    const Pt a = to_pt(profile.start, dia);
+    const Pt a_prime = to_pt(first.end, dia);
+    const Pt a_allow{a_prime.x + shift.x, a_prime.z + shift.z};
+    if (!allow.empty() && !rough_levels(ctx, profile, r, allow, a, a_allow)) return;
+    if (!allowance_pass(ctx, profile, r.level, allow, a)) return;
+    return_to(ctx, profile.start);
+}
+
+// --- G73 (§4) ------------------------------------------------------------------------------------
+
+// The profile d times, shifted by Δi·(d−j)/(d−1) + Δu/2 and Δk·(d−j)/(d−1) + Δw; each pass
+// starts with a rapid from A to the shifted start, ends with a rapid back to A.
+void pattern(Context& ctx, const Profile& profile, const Parameters& p) {
+    const bool dia = ctx.diameter_x();
+    const Pt finish = allowance(ctx);
+    const Contour contour = contour_of(profile, 0, dia);
+    const int d = std::max(1, p.g73_divisions);
+    for (int j = 1; j <= d; ++j) {
+        const double share = d == 1 ? 0.0 : static_cast<double>(d - j) / (d - 1);
+        const Contour pass = shifted(contour, p.g73_relief_x * share + finish.x, p.g73_relief_z * share + finish.z);
+        if (!ctx.rapid(to_position(pass.front().a, profile.start, dia))) return;
+        for (const Seg& s : pass)
+            if (!emit(ctx, s, profile.start)) return;
+        if (!return_to(ctx, profile.start)) return;
+    }
+}
+
+// The first block of G71–G73 sets the persistent parameters (§0); the block with P and Q runs.
+bool first_block(Context& ctx, std::string_view f) {
+    if (ctx.has('P') && ctx.has('Q')) return false;
+    Parameters& p = ctx.parameters();
+    if (f == "rough-turning-cycle") {
+        p.g71_depth = ctx.mm('U').value_or(p.g71_depth);
+        p.g71_retract = ctx.mm('R').value_or(p.g71_retract);
+    } else if (f == "rough-facing-cycle") {
+        p.g72_depth = ctx.mm('W').value_or(p.g72_depth);
+        p.g72_retract = ctx.mm('R').value_or(p.g72_retract);
+    } else if (f == "pattern-repeating-cycle") {
+        p.g73_relief_x = ctx.mm('U').value_or(p.g73_relief_x);
+        p.g73_relief_z = ctx.mm('W').value_or(p.g73_relief_z);
+        if (const auto r = ctx.raw('R')) p.g73_divisions = static_cast<int>(std::lround(*r));
+    }
+    return true;
+}
+
+}  // namespace
+
+void lathe_profile(Context& ctx) {
+    const std::string_view f = ctx.function();
+    if (f != "finishing-cycle" && first_block(ctx, f)) return;
+    const auto p = ctx.raw('P'), q = ctx.raw('Q');
+    if (!p || !q) {
+        ctx.alarm(62, fmt::format("{} without P and Q: no profile to run (FANUC alarm 062)", ctx.spelling()));
+        return;
+    }
+    const auto profile = ctx.profile(*p, *q);
+    if (!profile) return;
+    if (profile->moves.empty()) {
+        ctx.alarm(65, fmt::format("{} P{} Q{}: the profile has no move (FANUC alarm 065)", ctx.spelling(), *p, *q));
+        return;
+    }
+    const Parameters& params = ctx.parameters();
+    if (f == "finishing-cycle") finishing(ctx, *profile);
+    else if (f == "rough-turning-cycle") rough(ctx, *profile, {Coord::x, params.g71_depth, params.g71_retract});
+    else if (f == "rough-facing-cycle") rough(ctx, *profile, {Coord::z, params.g72_depth, params.g72_retract});
+    else pattern(ctx, *profile, params);
+}
+
+}  // namespace kerf::interpreter::cycles

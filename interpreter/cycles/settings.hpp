@@ -1,0 +1,34 @@
+// The persistent cycle parameters and the machine switches of the canned cycles, as the
+// interpreter's Setup carries them (filled from machine/ by interpreter::make_setup).
+#pragma once
+
+namespace kerf::interpreter::cycles {
+
+// Initial values of the persistent parameters (machine [cycle_parameters]) and the machine
+// switches the reference leaves open (machine/SCHEMA.md "Cycles").
+struct Parameters {
+    double g71_depth = 2.0, g71_retract = 1.0;        // G71 U(Δd) R(e), mm (Δd radius)
+    double g72_depth = 2.0, g72_retract = 1.0;        // G72 W(Δd) R(e)
+    double g73_relief_x = 0, g73_relief_z = 0;        // G73 U(Δi) radius, W(Δk)
+    int g73_divisions = 1;                            // G73 R(d)
+    double g74_retract = 0.5, g75_retract = 0.5;      // G74 / G75 R(e)
+    int g76_finishing_passes = 1, g76_chamfer = 0, g76_angle = 60;   // G76 P m r a
+    double g76_min_depth = 0.05, g76_allowance = 0.03;               // G76 Q(Δdmin) mm, R(d)
+};
+
+enum class Relief { feed, rapid };                           // G71/G72 45° relief (cycles.md §2 step 6)
+enum class Return { simultaneous, x_then_z, z_then_x };      // G71–G73 return to A (cycles.md §21.3)
+enum class Infeed { flank, opposite_flank, radial };         // G76 (cycles.md §7 step 3, §21.4)
+
+struct Settings {
+    Parameters initial;                     // cycles.md §0: "initial values = machine configuration"
+    bool allowance_u_radius = false;        // G71–G73 Δu is a radius (seed 001) instead of a diameter
+    double pq_unit_mm = 0;                  // unit of integer P/Q (G74–G76, G83, G87); 0 = input increment
+    Relief relief = Relief::feed;
+    Return rough_return = Return::simultaneous;
+    Infeed infeed = Infeed::flank;
+    double thread_chamfer_leads = 1.0;      // G92 run-out length in leads (cycles.md §8.2)
+    double peck_clearance = 0.5;            // mm: G83/G87 re-approach above the last depth (cycles.md §10)
+};
+
+}  // namespace kerf::interpreter::cycles

@@ -1,0 +1,49 @@
+// Expected cycle paths in tests: a list of (kind, X, Z) steps compared with the moves and thread
+// cuts of one source line (tests/interpreter/test_cycles_*.cpp).
+#pragma once
+
+#include <catch2/catch.hpp>
+
+#include <fmt/format.h>
+
+#include <string>
+#include <vector>
+
+#include "tests/interpreter/interpreter_fixture.hpp"
+
+namespace kerf::test {
+
+struct Step {
+    EventKind kind;
+    double x;
+    double z;
+};
+
+inline Step rapid(double x, double z) { return {EventKind::rapid, x, z}; }
+inline Step feed(double x, double z) { return {EventKind::linear, x, z}; }
+inline Step thread(double x, double z) { return {EventKind::thread, x, z}; }
+inline Step cw(double x, double z) { return {EventKind::arc_cw, x, z}; }
+inline Step ccw(double x, double z) { return {EventKind::arc_ccw, x, z}; }
+
+inline std::string describe(const Event& e) {
+    return fmt::format("{} X{:.4f} Z{:.4f}", interpreter::to_string(e.kind), e.end[X], e.end[Z]);
+}
+
+// The moves and threads of `line`, each to 0.001 mm, in order (one CHECK per step and the count).
+inline void check_path(const Run& r, std::uint32_t line, const std::vector<Step>& want) {
+    std::vector<Event> got;
+    for (const Event& e : moves_with_threads(r))
+        if (e.source.line == line) got.push_back(e);
+    std::string listing;
+    for (const Event& e : got) listing += describe(e) + "\n";
+    INFO("moves of line " << line << ":\n" << listing);
+    CHECK(got.size() == want.size());
+    for (std::size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
+        INFO("step " << i << ": " << describe(got[i]));
+        CHECK(got[i].kind == want[i].kind);
+        CHECK(got[i].end[X] == Approx(want[i].x).margin(0.001));
+        CHECK(got[i].end[Z] == Approx(want[i].z).margin(0.001));
+    }
+}
+
+}  // namespace kerf::test
