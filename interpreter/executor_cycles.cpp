@@ -227,7 +227,7 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     std::string_view motion = flags_.motion;
     bool ok = true;
     for (std::uint32_t b = *first; ok && b <= *last; ++b) {
-        const ast::BlockView block = file_of(f).typed->block(b);
+        const ast::BlockView block = file_of(f).block(b);
         if (block.block().kind != ast::BlockKind::code) continue;
         if (block.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
         view_ = nullptr;
