@@ -134,9 +134,15 @@ void finalize(std::vector<Finding>& findings, const ast::SyntaxTree& tree, const
     std::stable_sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
         return a.range.begin != b.range.begin ? a.range.begin < b.range.begin : a.rule < b.rule;
     });
-    std::unordered_set<std::string> seen;
+    // A static rule and the dry run may report the same defect on one line: keep the static one.
+    const auto from_run = [](const Finding& f) { return !f.notes.empty() && f.notes.front().starts_with("found by the dry run"); };
+    std::unordered_set<std::string> static_lines, seen;
+    const auto line_key = [&](const Finding& f) { return f.rule + ":" + std::to_string(lines.utf8(f.range.begin).line); };
+    for (const Finding& f : findings)
+        if (!from_run(f)) static_lines.insert(line_key(f));
     std::erase_if(findings, [&](const Finding& f) {
-        return !seen.insert(f.rule + ":" + std::to_string(lines.utf8(f.range.begin).line)).second;
+        if (from_run(f) && static_lines.count(line_key(f))) return true;
+        return !seen.insert(f.rule + ":" + std::to_string(f.range.begin)).second;
     });
 }
 

@@ -10,9 +10,9 @@ void add_alarms(Registry& r) {
         {"The dry run reached its step limit: a loop that never ends.",
          "On the machine the program never finishes (or repeats cuts forever).",
          "N1 GOTO 1", "#1=0\nWHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "interpreter Setup::step_limit"}));
-    r.add(alarm_rule("K4005", "macro-evaluation-error", Category::macro, S::error, {{111, 111}, {114, 115}, {118, 119}},
+    r.add(alarm_rule("K4005", "macro-evaluation-error", Category::macro, S::error, {{111, 111}, {114, 114}, {118, 119}},
         {"A macro expression the control cannot evaluate: overflow, format, variable number, nesting, bad argument.",
-         "The control stops with alarm 111, 114, 115, 118 or 119.", "#1=SQRT[-1]", "#1=SQRT[1]",
+         "The control stops with alarm 111, 114, 118 or 119.", "#1=SQRT[-1]", "#1=SQRT[1]",
          "interpreter/macro/evaluate.hpp"}));
     r.add(alarm_rule("K4006", "user-alarm", Category::macro, S::warning, {{3000, 3999}},
         {"The program raised its own alarm with #3000 during the dry run.",
@@ -34,7 +34,8 @@ void add_alarms(Registry& r) {
         {"G30 with P other than 1 to 4.", "The control stops with alarm 046.", "G30 P5 Z0.", "G30 P3 Z0.",
          "semantics.md §2.8"}));
     r.add(alarm_rule("K4099", "interpreter-alarm", Category::dialect, S::error, {{1, 99999}},
-        {"Any other alarm the dry run raised.", "The control stops at this block.", "", "",
+        {"Any other alarm of the dry run, one without a rule of its own (alarm 115: variable number out of range ...).",
+         "The control stops at this block.", "#1=#[-5]", "#1=#5",
          "interpreter/executor*.cpp"}));
     r.add(alarm_rule("K5014", "arc-radius-mismatch", Category::motion, S::error, {{20, 21}},
         {"An arc whose start and end radius differ beyond the tolerance, or whose R is smaller than half the chord.",

@@ -86,6 +86,19 @@ inline std::map<std::int64_t, int> program_labels(const FileContext& file, std::
     return labels;
 }
 
+// The motion (group 01) function in force for the block: its own code, else the modal one.
+inline std::string_view motion_function(const BlockContext& b) {
+    for (const ast::CodeRef& c : b.g)
+        if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) return c.info->function;
+    for (const auto& [group, info] : b.modal)
+        if (info && (info->binder_traits & dialects::CodeInfo::kMotionGroup)) return info->function;
+    return {};
+}
+inline bool circular_motion(const BlockContext& b) {
+    const std::string_view f = motion_function(b);
+    return f == dialects::functions::circular_cw || f == dialects::functions::circular_ccw;
+}
+
 // A block's words from the first to the last token (no trailing line break).
 inline ast::Range block_text_range(const BlockContext& b) {
     const auto tokens = b.view.tokens();

@@ -32,9 +32,12 @@ class NotFitted : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for_codes(b, [&](const ast::CodeRef& c) {
-            if (!c.info || c.info->availability != dialects::Availability::not_fitted) return;
+            if (!c.info) return;
+            const dialects::Availability a = c.info->availability;
+            if (a != dialects::Availability::not_fitted && a != dialects::Availability::optional) return;
             const ast::Token& t = b.token(c.token);
-            out.report(t.range(), fmt::format("{} ({}) is not fitted on this control", b.tree().spelling(t), c.info->en),
+            out.report(t.range(), fmt::format("{} ({}) is {} on this control", b.tree().spelling(t), c.info->en,
+                                              a == dialects::Availability::optional ? "an option" : "not fitted"),
                        c.info->availability_note.empty() ? "remove it or use a machine that has the option"
                                                          : c.info->availability_note);
         });
@@ -188,9 +191,12 @@ void add_dialect(Registry& r) {
     r.add(static_rule<UnknownCode>(rule("K2001", "unknown-code", S::error,
         {"A G or M code the dialect does not have.", "The control stops with alarm 010 (improper G code).",
          "G384 X10.", "G84 X10.", "gcode-tables.md; mcodes.md; dialects.md §1"})));
-    r.add(static_rule<NotFitted>(rule("K2002", "code-not-fitted", S::warning,
-        {"A code the dialect table marks as not fitted on this control.", "The option is missing: alarm on the control.",
-         "G12.1", "(use the machine that has polar interpolation)", "gcode-tables.md availability column"})));
+    Rule fitted = static_rule<NotFitted>(rule("K2002", "code-not-fitted", S::warning,
+        {"A code the dialect table marks as an option or as not fitted (opt-in: for machines without options).",
+         "A machine without the option raises alarm 010 on the code.",
+         "G12.1", "(use the machine that has polar interpolation)", "gcode-tables.md availability column"}));
+    fitted.enabled = false;
+    r.add(std::move(fitted));
     r.add(static_rule<WordNotAllowed>(rule("K2003", "word-not-allowed", S::warning,
         {"A data word that the block's one-shot code does not take (G04 Q5).",
          "The control raises an alarm or ignores the word: the value you wrote has no effect.",

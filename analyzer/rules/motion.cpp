@@ -136,7 +136,7 @@ public:
         if (e.kind != EventKind::rapid || e.source.file != run.checked_file || reported_) return;
         const bool across = std::abs(e.end[x] - e.start[x]) > 1e-6 || std::abs(e.end[y] - e.start[y]) > 1e-6;
         const bool inside = e.end[x] > lo_x_ && e.end[x] < hi_x_ && e.end[y] > lo_y_ && e.end[y] < hi_y_;
-        if (!across || !inside || std::max(e.start[z], e.end[z]) > cut_level_ - 1e-6) return;
+        if (!across || !inside || std::max(e.start[z], e.end[z]) > cut_level_ + 1e-6) return;
         reported_ = true;
         out.report(where(run, e),
                    fmt::format("rapid move across the part at Z{:g}, not above the level Z{:g} where the program cut", e.end[z],

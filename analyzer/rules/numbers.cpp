@@ -13,18 +13,12 @@ bool is_axis(const ast::Token& t) {
     return t.role() == ast::Role::axis_absolute || t.role() == ast::Role::axis_incremental;
 }
 
-bool circular(const BlockContext& b) {
-    for (const auto* f : {&dialects::functions::circular_cw, &dialects::functions::circular_ccw})
-        if (b.has_function(*f) || b.modal_function(*f)) return true;
-    return false;
-}
-
 // X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm.
 class MissingDecimalPoint : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.setup.calculator_decimal) return;
-        const bool arc = circular(b);
+        const bool arc = circular_motion(b);
         const auto tokens = b.view.tokens();
         for (std::uint32_t i = 0; i < tokens.size(); ++i) {
             const ast::Token& t = tokens[i];

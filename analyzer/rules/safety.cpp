@@ -9,7 +9,6 @@ using S = Severity;
 namespace fn = dialects::functions;
 
 bool active(const BlockContext& b, std::string_view function) { return b.has_function(function) || b.modal_function(function); }
-bool circular(const BlockContext& b) { return active(b, fn::circular_cw) || active(b, fn::circular_ccw); }
 bool threading(const BlockContext& b) {
     return b.has_function(fn::thread_cutting) || b.has_function("thread-cutting-cycle") ||
            b.has_function("multiple-threading-cycle");
@@ -54,7 +53,7 @@ public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const ast::CodeRef& c : b.g) {
             if (!c.info || !(function_.empty() ? comp_on(c.info->function) : c.info->function == function_)) continue;
-            if (!circular(b)) return;
+            if (!circular_motion(b)) return;
             out.report(b.token(c.token).range(),
                        fmt::format("{} in an arc block: compensation must start and end on G00 or G01",
                                    b.tree().spelling(b.token(c.token))),
