@@ -24,6 +24,13 @@ inline Rule make_rule(std::string id, std::string name, Category category, Sever
     return r;
 }
 
+// make_rule with the category of a family fixed: `const auto rule = rule_maker(Category::macro);`.
+inline auto rule_maker(Category category) {
+    return [category](std::string id, std::string name, Severity s, RuleDocs docs) {
+        return make_rule(std::move(id), std::move(name), category, s, std::move(docs));
+    };
+}
+
 // A rule whose findings are the parser's diagnostics with these codes (docs/diagnostics.md).
 inline Rule diagnostic_rule(std::string id, std::string name, Severity severity, std::vector<std::string> codes,
                             RuleDocs docs) {

@@ -185,9 +185,7 @@ public:
 }  // namespace
 
 void add_dialect(Registry& r) {
-    auto rule = [](std::string id, std::string name, Severity s, RuleDocs docs) {
-        return make_rule(std::move(id), std::move(name), Category::dialect, s, std::move(docs));
-    };
+    const auto rule = rule_maker(Category::dialect);
     r.add(static_rule<UnknownCode>(rule("K2001", "unknown-code", S::error,
         {"A G or M code the dialect does not have.", "The control stops with alarm 010 (improper G code).",
          "G384 X10.", "G84 X10.", "gcode-tables.md; mcodes.md; dialects.md §1"})));

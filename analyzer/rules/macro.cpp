@@ -123,9 +123,7 @@ public:
 }  // namespace
 
 void add_macro(Registry& r) {
-    auto rule = [](std::string id, std::string name, Severity s, RuleDocs docs) {
-        return make_rule(std::move(id), std::move(name), Category::macro, s, std::move(docs));
-    };
+    const auto rule = rule_maker(Category::macro);
     r.add(static_rule<VacantLocal>(rule("K4001", "vacant-local-in-arithmetic", S::warning,
         {"A local variable #1–#33 read in arithmetic in a main program before anything assigned it.",
          "A vacant variable counts as 0 in arithmetic: the move or the count is silently wrong.",

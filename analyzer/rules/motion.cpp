@@ -164,9 +164,7 @@ public:
 }  // namespace
 
 void add_motion(Registry& r) {
-    auto rule = [](std::string id, std::string name, Severity s, RuleDocs docs) {
-        return make_rule(std::move(id), std::move(name), Category::motion, s, std::move(docs));
-    };
+    const auto rule = rule_maker(Category::motion);
     r.add(dynamic_rule<FirstOnly<NoFeed, NoFeedSay>>(rule("K5001", "feed-move-without-feed", S::error,
         {"A G01/G02/G03 move runs with no feed rate.", "The control raises alarm 011 (no feedrate commanded).",
          "G01 X10.", "G01 X10. F0.2", "semantics.md §4"})));

@@ -270,9 +270,7 @@ public:
 }  // namespace
 
 void add_references(Registry& r) {
-    auto rule = [](std::string id, std::string name, Severity s, RuleDocs docs) {
-        return make_rule(std::move(id), std::move(name), Category::references, s, std::move(docs));
-    };
+    const auto rule = rule_maker(Category::references);
     Rule missing = static_rule<LabelNotFound>(rule("K3001", "label-not-found", S::error,
         {"G70–G73 P/Q, GOTO n or M98 Q n to a sequence number the program does not have.",
          "The control stops with alarm 060 (cycles), 128 (GOTO) or 078 (M98 Q) in the middle of the job.",

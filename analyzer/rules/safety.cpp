@@ -171,9 +171,7 @@ public:
 }  // namespace
 
 void add_safety(Registry& r) {
-    auto rule = [](std::string id, std::string name, Severity s, RuleDocs docs) {
-        return make_rule(std::move(id), std::move(name), Category::motion, s, std::move(docs));
-    };
+    const auto rule = rule_maker(Category::motion);
     r.add(static_rule<CssWithoutClamp>(rule("K5011", "css-without-clamp", S::warning,
         {"G96 constant surface speed with no G50 S spindle clamp before it.",
          "Facing toward X0 the rpm rises to the machine maximum: the part or the chuck may not hold.",
