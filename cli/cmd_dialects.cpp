@@ -3,6 +3,7 @@
 
 #include <iostream>
 
+#include "analyzer/output.hpp"
 #include "cli/commands.hpp"
 #include "cli/config.hpp"
 
@@ -35,6 +36,10 @@ struct ExplainOptions {
 };
 
 int run_explain(const ExplainOptions& o) {
+    if (const analyzer::Rule* rule = analyzer::builtin_rules().find(o.code)) {   // K1001 or its name
+        std::cout << analyzer::format_rule_docs(*rule);
+        return kExitClean;
+    }
     RegistryResult reg = make_registry({o.dialect_files.begin(), o.dialect_files.end()});
     for (const std::string& e : reg.errors) std::cerr << "kerf: " << e << "\n";
     const dialects::Dialect* d = reg.registry.find(o.dialect);
@@ -95,7 +100,7 @@ Command add_dialects_command(CLI::App& app) {
 
 Command add_explain_command(CLI::App& app) {
     auto o = std::make_shared<ExplainOptions>();
-    CLI::App* cmd = app.add_subcommand("explain", "describe a G or M code of a dialect");
+    CLI::App* cmd = app.add_subcommand("explain", "describe a G or M code of a dialect, or a check rule (K1001)");
     cmd->add_option("code", o->code, "G71, M98, G12.1 ...")->required();
     cmd->add_option("--dialect", o->dialect, "dialect id (default fanuc-lathe-a)");
     cmd->add_option("--lang", o->lang, "en or ru")->check(CLI::IsMember({"en", "ru"}));

@@ -15,8 +15,6 @@ namespace kerf::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
 // Subprograms not in the file: the same folder, as O1000, O1000.nc or 1000.nc (issue 3).
 std::optional<std::pair<std::string, std::string>> load_from_folder(const fs::path& folder, std::int64_t number) {
     const std::string o = fmt::format("O{:04}", number);
@@ -30,6 +28,8 @@ std::optional<std::pair<std::string, std::string>> load_from_folder(const fs::pa
     return std::nullopt;
 }
 
+namespace {
+
 // Dialect files from the flags first, then from .kerf.toml.
 std::vector<fs::path> dialect_files(const DryRunOptions& o, const ProjectConfig& config) {
     std::vector<fs::path> files(o.dialect_files.begin(), o.dialect_files.end());
@@ -37,12 +37,16 @@ std::vector<fs::path> dialect_files(const DryRunOptions& o, const ProjectConfig&
     return files;
 }
 
+}  // namespace
+
 // --dialect, else .kerf.toml's dialect, else detection from the text.
-std::string dialect_id(const DryRunOptions& o, const ProjectConfig& config, std::string_view text) {
-    if (o.dialect != "auto") return o.dialect;
+std::string choose_dialect(const std::string& flag, const ProjectConfig& config, std::string_view text) {
+    if (flag != "auto") return flag;
     if (!config.dialect.empty() && config.dialect != "auto") return config.dialect;
     return grammar::detect_dialect(text).dialect;
 }
+
+namespace {
 
 // LoadError messages start with their source ("<file>: <key>: what is wrong"); printed as
 // file:line:col: error: <key>: what is wrong, the form of every other kerf diagnostic.
@@ -76,6 +80,8 @@ std::optional<machine::Machine> load_machine(const fs::path& file, const dialect
     return m;
 }
 
+}  // namespace
+
 // The Setup: the machine file if one is named, else the dialect's built-in machine.
 std::optional<interpreter::Setup> setup_for(const fs::path& machine_file, const dialects::Dialect& dialect) {
     if (machine_file.empty()) return interpreter::default_setup(dialect);
@@ -83,6 +89,8 @@ std::optional<interpreter::Setup> setup_for(const fs::path& machine_file, const 
     if (!m) return std::nullopt;
     return interpreter::make_setup(*m);
 }
+
+namespace {
 
 fs::path machine_file(const DryRunOptions& o, const ProjectConfig& config) {
     if (!o.machine_file.empty()) return o.machine_file;
@@ -132,7 +140,7 @@ std::variant<std::unique_ptr<DryRun>, int> prepare_dry_run(const DryRunOptions& 
     run->dialects = make_registry(dialect_files(o, config));
     for (const std::string& e : config_errors) std::cerr << "kerf: " << e << "\n";
     for (const std::string& e : run->dialects.errors) std::cerr << "kerf: " << e << "\n";
-    run->dialect_id = dialect_id(o, config, run->source->text());
+    run->dialect_id = choose_dialect(o.dialect, config, run->source->text());
     run->dialect = run->dialects.registry.find(run->dialect_id);
     if (!run->dialect) {
         std::cerr << fmt::format("kerf: unknown dialect '{}'; `kerf dialects` lists them\n", run->dialect_id);

@@ -33,6 +33,7 @@ LoadedFile::LoadedFile(std::string name, std::string text, const dialects::Diale
     programs_ = held->typed->programs();
     held_.push_back(std::move(held));
     complete_ = true;
+    owned_whole_ = true;
 }
 
 LoadedFile::LoadedFile(std::string name, std::string_view text, const dialects::Dialect& dialect,
@@ -44,8 +45,10 @@ LoadedFile::LoadedFile(std::string name, std::string_view text, const dialects::
 LoadedFile::~LoadedFile() { read_ahead_.reset(); }   // the thread stops before the slots go
 
 const ast::SyntaxTree* LoadedFile::whole_tree() const {
-    return pieces_.size() == 1 && complete_ && !held_.empty() ? &held_.front()->tree : nullptr;
+    return owned_whole_ ? &held_.front()->tree : nullptr;
 }
+const ast::TypedFile* LoadedFile::whole_typed() const { return owned_whole_ ? held_.front()->typed.get() : nullptr; }
+const ast::LineIndex* LoadedFile::whole_lines() const { return owned_whole_ ? held_.front()->lines.get() : nullptr; }
 
 // The next piece ends at the last line end within `piece_bytes`, or at the first line end after
 // it when a single line is longer: blocks never span lines (grammar/parse.cpp).

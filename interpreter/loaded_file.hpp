@@ -73,8 +73,11 @@ public:
     ast::Range file_range(const ast::BlockView& view) const;
     std::uint32_t line_of(const ast::BlockView& view, std::uint32_t hint) const;
 
-    // The whole file's tree when it was given whole (tools and tests that walk it); else null.
+    // The whole file's tree, typed file and line index when it was given whole (the analyzer and
+    // tests walk them); else null.
     const ast::SyntaxTree* whole_tree() const;
+    const ast::TypedFile* whole_typed() const;
+    const ast::LineIndex* whole_lines() const;
 
 private:
     struct Piece {            // what is kept of every piece read: a few dozen bytes per piece
@@ -112,7 +115,7 @@ private:
     void publish_programs() const;
 
     std::string name_;
-    std::string owned_text_;        // the whole text, when given as a string
+    bool owned_whole_ = false;      // given as a string: one piece, always held
     std::string_view text_;
     const dialects::Dialect& dialect_;
     StreamOptions options_;

@@ -1,0 +1,207 @@
+#include "analyzer/analyze.hpp"
+
+#include <algorithm>
+#include <unordered_set>
+
+#include "analyzer/suppress.hpp"
+#include "interpreter/interpreter.hpp"
+
+namespace kerf::analyzer {
+
+namespace {
+
+using ActiveRules = std::vector<const Rule*>;
+
+ModalState power_on_state(const dialects::Dialect& dialect) {
+    ModalState modal;
+    for (const dialects::CodeInfo& c : dialect.codes())
+        if (c.power_on_default && c.modal && !c.group.empty()) modal[c.group] = &c;
+    return modal;
+}
+
+void update_modal(ModalState& modal, std::span<const ast::CodeRef> g) {
+    for (const ast::CodeRef& ref : g)
+        if (ref.info && ref.info->modal && !ref.info->group.empty() && ref.info->group != "00")
+            modal[ref.info->group] = ref.info;
+}
+
+struct StaticRun {
+    std::unique_ptr<StaticCheck> check;
+    Reporter out;
+};
+
+// Every static check sees every code block once, in text order, with the codes computed once.
+void run_static(const FileContext& ctx, const ActiveRules& rules, std::vector<Finding>& out) {
+    std::vector<StaticRun> checks;
+    for (const Rule* r : rules)
+        if (r->make_static) checks.push_back({r->make_static(), Reporter(*r, out)});
+    if (checks.empty()) return;
+    std::vector<ast::CodeRef> g, m;
+    const std::vector<ast::Program>& programs = ctx.typed.programs();
+    for (std::size_t p = 0; p < programs.size(); ++p) {
+        ModalState modal = power_on_state(ctx.dialect);
+        for (StaticRun& c : checks) c.check->begin_program(ctx, p, c.out);
+        for (std::uint32_t b = programs[p].first_block; b < programs[p].end_block; ++b) {
+            const ast::BlockView view = ctx.typed.block(b);
+            const ast::BlockKind kind = view.block().kind;
+            if (kind != ast::BlockKind::code && kind != ast::BlockKind::program_start) continue;
+            view.collect_codes(g, m);
+            const BlockContext block{ctx, view, g, m, modal, p};
+            for (StaticRun& c : checks) c.check->block(block, c.out);
+            update_modal(modal, g);
+        }
+        for (StaticRun& c : checks) c.check->end_program(ctx, p, c.out);
+    }
+}
+
+bool active(const ActiveRules& rules, const Rule* r) { return r && std::find(rules.begin(), rules.end(), r) != rules.end(); }
+
+void map_diagnostics(const ast::SyntaxTree& tree, const std::vector<ast::Diagnostic>& diagnostics,
+                     const Registry& registry, const ActiveRules& rules, std::vector<Finding>& out) {
+    for (const ast::Diagnostic& d : diagnostics) {
+        const Rule* rule = registry.for_diagnostic(d.code);
+        if (!active(rules, rule)) continue;
+        Finding& f = Reporter(*rule, out).report(d.range, d.message, d.hint);
+        f.notes.push_back("parser diagnostic " + d.code + " (docs/diagnostics.md)");
+        if (rule->diagnostic_fix) f.fix = rule->diagnostic_fix(tree, d);
+    }
+}
+
+// The sink of the dry run: each event to every dynamic check, alarms to the rule that owns their
+// number. Findings about other files (a subprogram loaded from the folder) are dropped: that file
+// is checked on its own.
+class FanOut : public interpreter::EventSink {
+public:
+    FanOut(const RunContext& run, const Registry& registry, const ActiveRules& rules, std::vector<Finding>& out)
+        : run_(run), registry_(registry), rules_(rules), out_(out) {
+        for (const Rule* r : rules)
+            if (r->make_dynamic) checks_.push_back({r->make_dynamic(), Reporter(*r, out)});
+    }
+    void on_event(const interpreter::Event& e) override {
+        const std::size_t before = out_.size();
+        for (DynamicRun& c : checks_) c.check->event(run_, e, c.out);
+        if (e.kind == interpreter::EventKind::alarm) report_alarm(e);
+        if (e.source.file != run_.checked_file) out_.resize(before);
+    }
+    void finish() {
+        for (DynamicRun& c : checks_) c.check->finish(run_, c.out);
+    }
+
+private:
+    struct DynamicRun {
+        std::unique_ptr<DynamicCheck> check;
+        Reporter out;
+    };
+    void report_alarm(const interpreter::Event& e) {
+        const Rule* rule = registry_.for_alarm(e.code);
+        if (!active(rules_, rule)) return;
+        const ast::SyntaxTree& tree = *run_.programs.file(e.source.file).whole_tree();
+        Finding& f = Reporter(*rule, out_).report(trim_range(tree, e.source.range), e.text);
+        f.notes.push_back("found by the dry run: the control stops here with an alarm");
+    }
+    const RunContext& run_;
+    const Registry& registry_;
+    const ActiveRules& rules_;
+    std::vector<Finding>& out_;
+    std::vector<DynamicRun> checks_;
+};
+
+bool needs_run(const ActiveRules& rules) {
+    return std::any_of(rules.begin(), rules.end(), [](const Rule* r) { return r->make_dynamic || !r->alarms.empty(); });
+}
+
+void run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
+                 const interpreter::Setup& setup, const Registry& registry, const ActiveRules& rules,
+                 std::vector<Finding>& out) {
+    const std::optional<interpreter::ProgramRef> main = programs.first_program(file);
+    if (!main || !needs_run(rules)) return;
+    const RunContext run{programs, file, dialect, setup};
+    FanOut sink(run, registry, rules, out);
+    interpreter::RunOptions options;
+    options.lenient = true;   // syntax defects are the syntax rules' findings; go on and check the rest
+    interpreter::run(programs, *main, dialect, setup, sink, options);
+    sink.finish();
+}
+
+// Suppressed findings out, configured severities in, one finding per rule and line (a static rule
+// and the dry run may both see the same defect), sorted by position.
+void finalize(std::vector<Finding>& findings, const ast::SyntaxTree& tree, const ast::LineIndex& lines,
+              const Registry& registry, const CheckConfig& config) {
+    const std::vector<Suppression> suppressions = find_suppressions(tree);
+    std::erase_if(findings, [&](const Finding& f) { return suppressed(suppressions, f); });
+    for (Finding& f : findings)
+        if (const Rule* r = registry.find(f.rule)) f.severity = config.severity(*r);
+    std::stable_sort(findings.begin(), findings.end(), [](const Finding& a, const Finding& b) {
+        return a.range.begin != b.range.begin ? a.range.begin < b.range.begin : a.rule < b.rule;
+    });
+    // A static rule and the dry run may report the same defect on one line: keep the static one.
+    const auto from_run = [](const Finding& f) { return !f.notes.empty() && f.notes.front().starts_with("found by the dry run"); };
+    std::unordered_set<std::string> static_lines, seen;
+    const auto line_key = [&](const Finding& f) { return f.rule + ":" + std::to_string(lines.utf8(f.range.begin).line); };
+    for (const Finding& f : findings)
+        if (!from_run(f)) static_lines.insert(line_key(f));
+    std::erase_if(findings, [&](const Finding& f) {
+        if (from_run(f) && static_lines.count(line_key(f))) return true;
+        return !seen.insert(f.rule + ":" + std::to_string(f.range.begin)).second;
+    });
+}
+
+}  // namespace
+
+ast::Range trim_range(const ast::SyntaxTree& tree, ast::Range range) {
+    while (range.end > range.begin) {
+        const char c = tree.text[range.end - 1];
+        if (c != '\n' && c != '\r' && c != ' ' && c != '\t') break;
+        --range.end;
+    }
+    return range;
+}
+
+std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
+                                const interpreter::Setup& setup, const CheckOptions& options) {
+    const Registry& registry = options.registry ? *options.registry : builtin_rules();
+    ActiveRules rules;
+    for (const Rule& r : registry.rules())
+        if (options.config.enabled(r)) rules.push_back(&r);
+    std::vector<Finding> out;
+    // The analyzer reads files given whole (ProgramSet::add): the static rules walk every block.
+    const interpreter::LoadedFile& loaded = programs.file(file);
+    const ast::SyntaxTree& tree = *loaded.whole_tree();
+    const ast::TypedFile& typed = *loaded.whole_typed();
+    const FileContext ctx{typed, dialect, setup,
+                          [&programs, file](std::int64_t n) { return programs.find_or_load(n, file).has_value(); }};
+    run_static(ctx, rules, out);
+    map_diagnostics(tree, tree.diagnostics, registry, rules, out);
+    map_diagnostics(tree, typed.diagnostics(), registry, rules, out);
+    if (options.dry_run) run_dynamic(programs, file, dialect, setup, registry, rules, out);
+    finalize(out, tree, *loaded.whole_lines(), registry, options.config);
+    return out;
+}
+
+std::vector<Finding> check_text(std::string name, std::string text, const dialects::Dialect& dialect,
+                                const interpreter::Setup& setup, const CheckOptions& options) {
+    interpreter::ProgramSet programs;
+    const std::uint32_t file = programs.add(std::move(name), std::move(text), dialect);
+    return check_file(programs, file, dialect, setup, options);
+}
+
+Location locate(const ast::LineIndex& lines, ast::Range range) {
+    const ast::Position b = lines.utf8(range.begin);
+    const ast::Position e = lines.utf8(range.end);
+    return {b.line + 1, b.column + 1, e.line + 1, e.column + 1};
+}
+
+bool BlockContext::has_function(std::string_view function) const {
+    for (const auto* codes : {&g, &m})
+        for (const ast::CodeRef& c : *codes)
+            if (c.info && c.info->function == function) return true;
+    return false;
+}
+
+bool BlockContext::modal_function(std::string_view function) const {
+    for (const auto& [group, info] : modal)
+        if (info && info->function == function) return true;
+    return false;
+}
+
+}  // namespace kerf::analyzer

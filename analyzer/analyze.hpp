@@ -1,0 +1,35 @@
+// The analyzer: every enabled rule over one file, static rules in one pass over its blocks, the
+// parser's diagnostics mapped to rules, and one dry run (lenient: a block with a syntax error runs
+// without its defective words, the syntax rules report it) whose events go to the dynamic rules
+// and whose alarms become findings. Then inline suppressions, configured severities, one finding
+// per rule and line, sorted by position. Pure: no I/O (the program set's loader is the caller's).
+#pragma once
+
+#include <vector>
+
+#include "analyzer/config.hpp"
+#include "analyzer/finding.hpp"
+#include "analyzer/registry.hpp"
+#include "interpreter/program_set.hpp"
+#include "interpreter/setup.hpp"
+
+namespace kerf::analyzer {
+
+struct CheckOptions {
+    const Registry* registry = nullptr;   // nullptr: builtin_rules()
+    CheckConfig config;
+    bool dry_run = true;                  // run the interpreter for the dynamic rules
+};
+
+// Checks file `file` of `programs` (its first program is run as the main program).
+std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
+                                const interpreter::Setup& setup, const CheckOptions& options = {});
+
+// Convenience for tests and the language server: `text` alone (no other files).
+std::vector<Finding> check_text(std::string name, std::string text, const dialects::Dialect& dialect,
+                                const interpreter::Setup& setup, const CheckOptions& options = {});
+
+// `range` without the trailing blanks and line break (a block's range ends after its newline).
+ast::Range trim_range(const ast::SyntaxTree& tree, ast::Range range);
+
+}  // namespace kerf::analyzer

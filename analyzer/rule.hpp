@@ -1,0 +1,115 @@
+// A rule: a stable id, a short name, a category, a default severity, its documentation and its
+// check. Static checks see every block once in text order (with the text-order modal state);
+// dynamic checks see the interpreter's events (design.md "analyzer = static rules on the AST +
+// dynamic rules on the trace"). Parser diagnostics and interpreter alarms are turned into findings
+// by the rules that list their codes, so a defect the grammar already found is not detected twice.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "analyzer/finding.hpp"
+#include "ast/typed.hpp"
+#include "interpreter/events.hpp"
+#include "interpreter/program_set.hpp"
+#include "interpreter/setup.hpp"
+
+namespace kerf::analyzer {
+
+enum class Category { syntax, dialect, references, macro, motion };
+const char* to_string(Category c);
+
+struct RuleDocs {
+    std::string what;        // one sentence: what the rule finds
+    std::string why;         // what happens on the machine
+    std::string bad;         // a program fragment that fires
+    std::string good;        // the fragment corrected
+    std::string reference;   // the section of ../shared/reference (or the seed) it comes from
+};
+
+struct Rule;
+
+// Collects the findings of one rule. Severity comes from the rule (or the configuration later).
+class Reporter {
+public:
+    Reporter(const Rule& rule, std::vector<Finding>& out) : rule_(&rule), out_(&out) {}
+    Finding& report(ast::Range range, std::string message, std::string hint = {});
+
+private:
+    const Rule* rule_;
+    std::vector<Finding>* out_;
+};
+
+// What a static check sees of the whole file.
+struct FileContext {
+    const ast::TypedFile& typed;
+    const dialects::Dialect& dialect;
+    const interpreter::Setup& setup;
+    // True when program O`number` can be found (this file, then the loader: the CLI's folder).
+    std::function<bool(std::int64_t)> program_exists;
+    const ast::SyntaxTree& tree() const { return typed.tree(); }
+};
+
+// The text-order modal state before a block: group → active code (power-on defaults first). It is
+// what a reader of the listing assumes; the dynamic rules see the state as it runs.
+using ModalState = std::map<std::string, const dialects::CodeInfo*, std::less<>>;
+
+struct BlockContext {
+    const FileContext& file;
+    const ast::BlockView& view;
+    std::span<const ast::CodeRef> g;   // the block's G codes
+    std::span<const ast::CodeRef> m;   // the block's M codes
+    const ModalState& modal;           // before this block
+    std::size_t program = 0;           // index into typed.programs()
+    const ast::SyntaxTree& tree() const { return file.typed.tree(); }
+    bool has_function(std::string_view function) const;   // a G or M code of the block has it
+    bool modal_function(std::string_view function) const; // active before the block
+    const ast::Token& token(std::uint32_t i) const { return tree().tokens[i]; }
+};
+
+class StaticCheck {
+public:
+    virtual ~StaticCheck() = default;
+    virtual void begin_program(const FileContext&, std::size_t program, Reporter&) {}
+    virtual void block(const BlockContext& b, Reporter& out) = 0;
+    virtual void end_program(const FileContext&, std::size_t program, Reporter&) {}
+};
+
+// What a dynamic check sees: the run's files (events point into them) and the checked file.
+struct RunContext {
+    const interpreter::ProgramSet& programs;
+    std::uint32_t checked_file = 0;
+    const dialects::Dialect& dialect;
+    const interpreter::Setup& setup;
+};
+
+class DynamicCheck {
+public:
+    virtual ~DynamicCheck() = default;
+    virtual void event(const RunContext& run, const interpreter::Event& e, Reporter& out) = 0;
+    virtual void finish(const RunContext&, Reporter&) {}
+};
+
+struct Rule {
+    std::string id;     // K1001
+    std::string name;   // address-without-value
+    Category category = Category::syntax;
+    Severity severity = Severity::warning;
+    bool enabled = true;               // on unless configured (a few are opt-in)
+    RuleDocs docs;
+    std::vector<std::string> diagnostics;         // parser/binder codes reported as this rule ("S0101")
+    std::vector<std::pair<int, int>> alarms;      // interpreter alarm numbers [first, last]
+    bool has_fix = false;                         // documentation: the rule offers a fix
+    // A fix for a mapped diagnostic (the letter O of "MO6" becomes 0), or nullopt.
+    std::function<std::optional<Fix>(const ast::SyntaxTree&, const ast::Diagnostic&)> diagnostic_fix;
+    std::function<std::unique_ptr<StaticCheck>()> make_static;
+    std::function<std::unique_ptr<DynamicCheck>()> make_dynamic;
+};
+
+}  // namespace kerf::analyzer

@@ -1,0 +1,124 @@
+// Helpers shared by the rule families (internal to analyzer/rules/).
+#pragma once
+
+#include <fmt/format.h>
+
+#include <optional>
+#include <string>
+
+#include <array>
+#include <map>
+
+#include "analyzer/registry.hpp"
+#include "dialects/functions.hpp"
+
+namespace kerf::analyzer::rules {
+
+inline Rule make_rule(std::string id, std::string name, Category category, Severity severity, RuleDocs docs) {
+    Rule r;
+    r.id = std::move(id);
+    r.name = std::move(name);
+    r.category = category;
+    r.severity = severity;
+    r.docs = std::move(docs);
+    return r;
+}
+
+// make_rule with the category of a family fixed: `const auto rule = rule_maker(Category::macro);`.
+inline auto rule_maker(Category category) {
+    return [category](std::string id, std::string name, Severity s, RuleDocs docs) {
+        return make_rule(std::move(id), std::move(name), category, s, std::move(docs));
+    };
+}
+
+// A rule whose findings are the parser's diagnostics with these codes (docs/diagnostics.md).
+inline Rule diagnostic_rule(std::string id, std::string name, Severity severity, std::vector<std::string> codes,
+                            RuleDocs docs) {
+    Rule r = make_rule(std::move(id), std::move(name), Category::syntax, severity, std::move(docs));
+    r.diagnostics = std::move(codes);
+    return r;
+}
+
+// A rule whose findings are interpreter alarms with numbers in [first, last].
+inline Rule alarm_rule(std::string id, std::string name, Category category, Severity severity,
+                       std::vector<std::pair<int, int>> alarms, RuleDocs docs) {
+    Rule r = make_rule(std::move(id), std::move(name), category, severity, std::move(docs));
+    r.alarms = std::move(alarms);
+    return r;
+}
+
+// A static rule whose check is the class C (default-constructed per file).
+template <class C>
+Rule static_rule(Rule r) {
+    r.make_static = [] { return std::make_unique<C>(); };
+    return r;
+}
+
+template <class C>
+Rule dynamic_rule(Rule r) {
+    r.make_dynamic = [] { return std::make_unique<C>(); };
+    return r;
+}
+
+// The token's integer value (P41001, T0101) or nullopt (expressions, fractions, no value).
+inline std::optional<std::int64_t> integer_of(const ast::SyntaxTree& tree, const ast::Token& t) {
+    return ast::integer_value(tree, t);
+}
+
+// The first word with `letter` in the block that has a plain number, with its value.
+struct NumberWord {
+    std::uint32_t token;
+    double value;
+};
+inline std::optional<NumberWord> number_word(const BlockContext& b, char letter) {
+    const std::uint32_t first = b.view.first_token();
+    const auto tokens = b.view.tokens();
+    for (std::uint32_t i = 0; i < tokens.size(); ++i)
+        if (tokens[i].kind == ast::TokenKind::word && tokens[i].letter == letter && tokens[i].is_number())
+            return NumberWord{first + i, b.tree().number_value(tokens[i])};
+    return std::nullopt;
+}
+
+}  // namespace kerf::analyzer::rules
+
+namespace kerf::analyzer::rules {
+
+// N numbers of a program → how many blocks carry them (sequence numbers need not be unique:
+// dialects.md §2; they matter only where something jumps to them).
+inline std::map<std::int64_t, int> program_labels(const FileContext& file, std::size_t program) {
+    std::map<std::int64_t, int> labels;
+    const ast::Program& p = file.typed.programs()[program];
+    for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
+        if (const auto n = file.typed.block(b).sequence_number()) ++labels[static_cast<std::int64_t>(*n)];
+    return labels;
+}
+
+// The motion (group 01) function in force for the block: its own code, else the modal one.
+inline std::string_view motion_function(const BlockContext& b) {
+    for (const ast::CodeRef& c : b.g)
+        if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) return c.info->function;
+    for (const auto& [group, info] : b.modal)
+        if (info && (info->binder_traits & dialects::CodeInfo::kMotionGroup)) return info->function;
+    return {};
+}
+inline bool circular_motion(const BlockContext& b) {
+    const std::string_view f = motion_function(b);
+    return f == dialects::functions::circular_cw || f == dialects::functions::circular_ccw;
+}
+
+// A block's words from the first to the last token (no trailing line break).
+inline ast::Range block_text_range(const BlockContext& b) {
+    const auto tokens = b.view.tokens();
+    if (tokens.empty()) return b.view.range();
+    return {tokens.front().begin, tokens.back().begin + tokens.back().length};
+}
+
+// The constant value of an expression node (a number, or a bracket around one), if it is one.
+inline std::optional<double> constant_of(const ast::SyntaxTree& tree, std::int32_t expr) {
+    while (expr >= 0 && tree.exprs[static_cast<std::size_t>(expr)].kind == ast::ExprKind::bracket)
+        expr = tree.exprs[static_cast<std::size_t>(expr)].a;
+    if (expr < 0 || tree.exprs[static_cast<std::size_t>(expr)].kind != ast::ExprKind::number) return std::nullopt;
+    return tree.number_value(tree.exprs[static_cast<std::size_t>(expr)]);
+}
+
+}  // namespace kerf::analyzer::rules

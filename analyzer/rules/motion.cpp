@@ -1,0 +1,205 @@
+// Dynamic motion rules: they read the events of the dry run (docs/trace.md), so moves inside
+// subprograms, macros and (once expanded) cycles are checked as they actually run.
+#include <cmath>
+
+#include "analyzer/analyze.hpp"
+#include "analyzer/rules/common.hpp"
+
+namespace kerf::analyzer::rules {
+
+namespace {
+
+using S = Severity;
+using interpreter::Event;
+using interpreter::EventKind;
+
+bool is_feed_move(const Event& e) {
+    return e.kind == EventKind::linear || e.kind == EventKind::arc_cw || e.kind == EventKind::arc_ccw;
+}
+
+ast::Range where(const RunContext& run, const Event& e) {
+    return trim_range(*run.programs.file(e.source.file).whole_tree(), e.source.range);
+}
+
+// Reports the first event that `bad` accepts, once per run (one cause, usually many moves).
+template <class Bad, class Say>
+class FirstOnly : public DynamicCheck {
+public:
+    void event(const RunContext& run, const Event& e, Reporter& out) override {
+        if (done_ || e.source.file != run.checked_file || !Bad{}(run, e)) return;
+        done_ = true;
+        const auto [message, hint] = Say{}(e);
+        out.report(where(run, e), message, hint);
+    }
+
+private:
+    bool done_ = false;
+};
+
+struct NoFeed {
+    bool operator()(const RunContext&, const Event& e) const { return is_feed_move(e) && e.feed <= 0 && e.length_mm > 0; }
+};
+struct NoFeedSay {
+    std::pair<std::string, std::string> operator()(const Event&) const {
+        return {"feed move with no feed rate programmed (F0): the control raises alarm 011",
+                "program F before the first G01/G02/G03"};
+    }
+};
+
+struct SpindleStopped {
+    bool operator()(const RunContext&, const Event& e) const {
+        return (is_feed_move(e) || e.kind == EventKind::thread) && e.feed_per_rev && !e.spindle_running && e.length_mm > 0;
+    }
+};
+struct SpindleStoppedSay {
+    std::pair<std::string, std::string> operator()(const Event& e) const {
+        return {fmt::format("feed per revolution (F{:g}) with the spindle stopped: the axes wait forever", e.feed),
+                "start the spindle (M03/M04) before the cut, or feed per minute for a stopped spindle"};
+    }
+};
+
+struct PerRevHigh {
+    bool operator()(const RunContext&, const Event& e) const { return is_feed_move(e) && e.feed_per_rev && e.feed > 2.0; }
+};
+struct PerRevHighSay {
+    std::pair<std::string, std::string> operator()(const Event& e) const {
+        return {fmt::format("F{:g} per revolution is a feed per minute value: the tool would feed {:g} per spindle turn", e.feed,
+                            e.feed),
+                "switch to feed per minute (G98/G94) first, or write the feed per revolution"};
+    }
+};
+
+struct PerMinLow {
+    bool operator()(const RunContext&, const Event& e) const {
+        return is_feed_move(e) && !e.feed_per_rev && e.feed > 0 && e.feed < 1.0 && e.length_mm > 0;
+    }
+};
+struct PerMinLowSay {
+    std::pair<std::string, std::string> operator()(const Event& e) const {
+        return {fmt::format("F{:g} per minute is a feed per revolution value: the cut crawls", e.feed),
+                "switch to feed per revolution (G99/G95) first, or write the feed per minute"};
+    }
+};
+
+struct NoTool {
+    bool operator()(const RunContext&, const Event& e) const { return is_feed_move(e) && e.tool == 0 && e.length_mm > 0; }
+};
+struct NoToolSay {
+    std::pair<std::string, std::string> operator()(const Event&) const {
+        return {"feed move with no tool selected (T0 or no T word before it)", "select the tool before the first cut"};
+    }
+};
+
+struct NoSpeed {
+    bool operator()(const RunContext& run, const Event& e) const {
+        if (e.kind != EventKind::spindle || e.spindle_rpm > 0) return false;
+        const dialects::CodeInfo* code = run.dialect.code('M', e.code * 10);   // spindle events carry their M number
+        return code && (code->function == dialects::functions::spindle_cw || code->function == dialects::functions::spindle_ccw);
+    }
+};
+struct NoSpeedSay {
+    std::pair<std::string, std::string> operator()(const Event&) const {
+        return {"spindle started with no speed (no S word before it)", "program S with or before M03/M04"};
+    }
+};
+
+// Thread lead × rpm is the Z feed: it must stay within what the axis can do (semantics.md §4.1,
+// SPINNER: lead × rpm ≤ 4000; here the machine's Z rapid rate is the limit).
+class ThreadTooFast : public DynamicCheck {
+public:
+    void event(const RunContext& run, const Event& e, Reporter& out) override {
+        if (e.kind != EventKind::thread || e.source.file != run.checked_file) return;
+        const double limit = run.setup.rapid_mm_min[static_cast<std::size_t>(interpreter::Axis::z)];
+        const double speed = e.feed * e.spindle_rpm;
+        if (limit <= 0 || speed <= limit) return;
+        out.report(where(run, e),
+                   fmt::format("thread lead {:g} × {:g} rpm = {:g} mm/min, over the Z axis limit of {:g} mm/min", e.feed,
+                               e.spindle_rpm, speed, limit),
+                   "lower the spindle speed for the thread");
+    }
+};
+
+// Mills: a rapid that moves across the part at a depth where the program cut before.
+class RapidIntoCut : public DynamicCheck {
+public:
+    void event(const RunContext& run, const Event& e, Reporter& out) override {
+        if (run.dialect.machine != dialects::MachineKind::mill) return;
+        constexpr std::size_t x = 0, y = 1, z = 2;
+        if (is_feed_move(e)) {
+            cut_level_ = std::max(cut_level_, std::min(e.start[z], e.end[z]));
+            for (const auto& p : {e.start, e.end}) {
+                lo_x_ = std::min(lo_x_, p[x]), hi_x_ = std::max(hi_x_, p[x]);
+                lo_y_ = std::min(lo_y_, p[y]), hi_y_ = std::max(hi_y_, p[y]);
+            }
+            return;
+        }
+        if (e.kind != EventKind::rapid || e.source.file != run.checked_file || reported_) return;
+        const bool across = std::abs(e.end[x] - e.start[x]) > 1e-6 || std::abs(e.end[y] - e.start[y]) > 1e-6;
+        const bool inside = e.end[x] > lo_x_ && e.end[x] < hi_x_ && e.end[y] > lo_y_ && e.end[y] < hi_y_;
+        if (!across || !inside || std::max(e.start[z], e.end[z]) > cut_level_ + 1e-6) return;
+        reported_ = true;
+        out.report(where(run, e),
+                   fmt::format("rapid move across the part at Z{:g}, not above the level Z{:g} where the program cut", e.end[z],
+                               cut_level_),
+                   "retract Z above the part before the rapid move");
+    }
+
+private:
+    double cut_level_ = -1e300;
+    double lo_x_ = 1e300, hi_x_ = -1e300, lo_y_ = 1e300, hi_y_ = -1e300;
+    bool reported_ = false;
+};
+
+// The interpreter says which codes it could not expand yet (cycles, compensation): those parts
+// of the program are not checked by the dynamic rules.
+class NotExpanded : public DynamicCheck {
+public:
+    void event(const RunContext& run, const Event& e, Reporter& out) override {
+        if (e.kind != EventKind::message || e.source.file != run.checked_file) return;
+        // The interpreter's placeholder messages (interpreter/executor_cycles.cpp).
+        if (e.text.find("not expanded") == std::string::npos && e.text.find("not applied yet") == std::string::npos) return;
+        out.report(where(run, e), e.text, "the dry run does not check this motion yet");
+    }
+};
+
+}  // namespace
+
+void add_motion(Registry& r) {
+    const auto rule = rule_maker(Category::motion);
+    r.add(dynamic_rule<FirstOnly<NoFeed, NoFeedSay>>(rule("K5001", "feed-move-without-feed", S::error,
+        {"A G01/G02/G03 move runs with no feed rate.", "The control raises alarm 011 (no feedrate commanded).",
+         "G01 X10.", "G01 X10. F0.2", "semantics.md §4"})));
+    r.add(dynamic_rule<FirstOnly<SpindleStopped, SpindleStoppedSay>>(rule("K5002", "feed-with-spindle-stopped", S::warning,
+        {"A move with feed per revolution while the spindle is stopped.",
+         "The axes wait for spindle revolutions that never come: the program hangs, or the tool rubs when the spindle starts.",
+         "M05\nG99 G01 Z-5. F0.2", "M03 S800\nG99 G01 Z-5. F0.2", "semantics.md §4"})));
+    r.add(dynamic_rule<ThreadTooFast>(rule("K5003", "thread-lead-too-fast", S::error,
+        {"Thread lead × spindle rpm is faster than the Z axis can feed.",
+         "The thread is cut wrong (lead error) or the control alarms.", "G97 S3000\nG32 Z-20. F2.", "G97 S1000\nG32 Z-20. F2.",
+         "semantics.md §4.1"})));
+    r.add(dynamic_rule<FirstOnly<PerRevHigh, PerRevHighSay>>(rule("K5005", "feed-per-rev-too-high", S::warning,
+        {"A feed per revolution above 2 per turn: most likely a feed per minute value in G99/G95 mode.",
+         "F100 in G99 asks for 100 mm per spindle turn: the axis runs at its limit into the part.",
+         "G99 G01 Z-5. F100.", "G98 G01 Z-5. F100.", "semantics.md §4"})));
+    r.add(dynamic_rule<FirstOnly<PerMinLow, PerMinLowSay>>(rule("K5006", "feed-per-min-too-low", S::warning,
+        {"A feed per minute below 1 per minute: most likely a feed per revolution value in G98/G94 mode.",
+         "F0.2 in G98 is 0.2 mm/min: the cut takes hours and the tool rubs.", "G98 G01 Z-5. F0.2", "G99 G01 Z-5. F0.2",
+         "semantics.md §4"})));
+    r.add(dynamic_rule<RapidIntoCut>(rule("K5007", "rapid-at-cut-depth", S::warning,
+        {"A rapid move across the part at or below a depth where the program cut before (mills).",
+         "G00 at cutting depth crosses material: a crash.", "G01 Z-5. F100.\nG00 X50.", "G01 Z-5. F100.\nG00 Z5.\nX50.",
+         "semantics.md §2; gcode-tables.md §5 G00"})));
+    r.add(dynamic_rule<FirstOnly<NoTool, NoToolSay>>(rule("K5008", "cut-without-tool", S::warning,
+        {"A feed move before any tool is selected.", "The control cuts with whatever tool is in the spindle or turret.",
+         "G01 X10. F0.2", "T0101\nG01 X10. F0.2", "dialects.md §3.5"})));
+    Rule nx = dynamic_rule<NotExpanded>(rule("K5009", "not-checked-by-dry-run", S::info,
+        {"A cycle or compensation the dry run does not expand yet, so its motion is not checked.",
+         "Nothing on the machine: a note about kerf's coverage (opt-in).", "G112\nG01 X10. C5. F0.2", "", "docs/trace.md"}));
+    nx.enabled = false;
+    r.add(std::move(nx));
+    r.add(dynamic_rule<FirstOnly<NoSpeed, NoSpeedSay>>(rule("K5010", "spindle-without-speed", S::warning,
+        {"M03/M04 with no spindle speed programmed.", "The spindle does not turn (S0) and the first cut breaks the tool.",
+         "M03\nG01 X10. F0.2", "S800 M03\nG01 X10. F0.2", "semantics.md §4.1"})));
+}
+
+}  // namespace kerf::analyzer::rules

@@ -1,0 +1,206 @@
+// Number and word-form rules read from the tokens of each block.
+#include <cmath>
+
+#include "analyzer/rules/common.hpp"
+
+namespace kerf::analyzer::rules {
+
+namespace {
+
+using S = Severity;
+
+bool is_axis(const ast::Token& t) {
+    return t.role() == ast::Role::axis_absolute || t.role() == ast::Role::axis_incremental;
+}
+
+// X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm.
+class MissingDecimalPoint : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        if (b.file.setup.calculator_decimal) return;
+        const bool arc = circular_motion(b);
+        const auto tokens = b.view.tokens();
+        for (std::uint32_t i = 0; i < tokens.size(); ++i) {
+            const ast::Token& t = tokens[i];
+            if (t.kind != ast::TokenKind::word || !t.is_number() || t.has(ast::token_flags::has_point)) continue;
+            const bool arc_word = arc && t.role() == ast::Role::parameter && std::string_view("IJKR").find(t.letter) != std::string_view::npos;
+            if (!is_axis(t) && !arc_word) continue;
+            const double value = b.tree().number_value(t);
+            if (value == 0) continue;   // X0 is zero either way
+            const std::string_view spelling = b.tree().spelling(t);
+            out.report(t.range(),
+                       fmt::format("'{}' has no decimal point: the control reads {} increments = {:g} mm, not {:g} mm",
+                                   spelling, value, value * b.file.setup.increment_mm, value),
+                       fmt::format("write '{}.' if {:g} mm is meant", spelling, value))
+                .notes.push_back("the machine reads integers as least input increments (calculator-type input off)");
+        }
+    }
+};
+
+bool takes_arguments(const BlockContext& b) {
+    for (const ast::CodeRef& c : b.g)
+        if (c.info && (c.info->binder_traits & dialects::CodeInfo::kTakesArguments)) return true;
+    return false;
+}
+
+// Two F words (or two X words ...) in one block: the control takes the last one, or alarms.
+class DuplicateAddress : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        if (takes_arguments(b)) return;   // G65 argument specification II repeats I J K on purpose
+        const auto tokens = b.view.tokens();
+        std::array<int, 26> first;
+        first.fill(-1);
+        for (std::uint32_t i = 0; i < tokens.size(); ++i) {
+            const ast::Token& t = tokens[i];
+            if (t.kind != ast::TokenKind::word || t.letter < 'A' || t.letter > 'Z') continue;
+            if (t.letter == 'G' || t.letter == 'M' || t.letter == 'N' || t.letter == 'O') continue;
+            int& seen = first[static_cast<std::size_t>(t.letter - 'A')];
+            if (seen < 0) {
+                seen = static_cast<int>(i);
+                continue;
+            }
+            report(b, tokens[static_cast<std::size_t>(seen)], t, out);
+        }
+    }
+
+private:
+    static void report(const BlockContext& b, const ast::Token& a, const ast::Token& t, Reporter& out) {
+        Finding& f = out.report(t.range(),
+                                fmt::format("'{}' repeats address {} of '{}' in the same block", b.tree().spelling(t), t.letter,
+                                            b.tree().spelling(a)),
+                                "keep one of the two words");
+        if (!a.is_number() || !t.is_number() || b.tree().number_value(a) != b.tree().number_value(t)) return;
+        // Same value twice: dropping the second word (and the blanks before it) changes nothing.
+        std::uint32_t begin = t.begin;
+        while (begin > a.begin + a.length && (b.tree().text[begin - 1] == ' ' || b.tree().text[begin - 1] == '\t')) --begin;
+        f.fix = Fix{"remove the repeated word", {{{begin, t.begin + t.length}, ""}}};
+    }
+};
+
+// M08. T0101. N10.: a decimal point on an address that takes whole numbers.
+class PointOnInteger : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        for (const ast::Token& t : b.view.tokens()) {
+            if (t.kind != ast::TokenKind::word || !t.is_number() || !t.has(ast::token_flags::has_point)) continue;
+            const std::string_view spelling = b.tree().spelling(t);
+            const bool integer_address = std::string_view("MTNOLHD").find(t.letter) != std::string_view::npos;
+            if (!(integer_address || (t.letter == 'G' && spelling.ends_with('.')))) continue;
+            Finding& f = out.report(t.range(), fmt::format("'{}': address {} takes a whole number", spelling, t.letter),
+                                    "remove the decimal point");
+            if (spelling.ends_with('.'))
+                f.fix = Fix{"remove the decimal point", {{{t.begin + t.length - 1, t.begin + t.length}, ""}}};
+        }
+    }
+};
+
+class ByteOrderMark : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        if (program != 0 || file.tree().tokens.empty()) return;
+        const ast::Token& t = file.tree().tokens[0];
+        if (t.kind != ast::TokenKind::bom) return;
+        out.report(t.range(), "the file starts with a UTF-8 byte order mark", "save the file without BOM")
+            .fix = Fix{"remove the byte order mark", {{t.range(), ""}}};
+    }
+    void block(const BlockContext&, Reporter&) override {}
+};
+
+// Tokens of a kind in every block (comments are often in comment-only blocks, which the static
+// pass skips, so these rules walk the tree themselves once per file).
+template <class F>
+void for_each_comment(const FileContext& file, std::size_t program, F&& f) {
+    const ast::Program& p = file.typed.programs()[program];
+    const ast::SyntaxTree& tree = file.tree();
+    const std::uint32_t end = p.end_block < tree.block_count() ? tree.block_first_token(p.end_block)
+                                                               : static_cast<std::uint32_t>(tree.tokens.size());
+    for (std::uint32_t i = tree.block_first_token(p.first_block); i < end; ++i)
+        if (tree.tokens[i].kind == ast::TokenKind::comment) f(tree.tokens[i]);
+}
+
+class EmptyComment : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        for_each_comment(file, program, [&](const ast::Token& t) {
+            std::string_view s = file.tree().spelling(t);
+            if (s.find_first_not_of("() \t") != std::string_view::npos) return;
+            out.report(t.range(), "empty comment", "remove it").fix = Fix{"remove the empty comment", {{t.range(), ""}}};
+        });
+    }
+    void block(const BlockContext&, Reporter&) override {}
+};
+
+class NonAsciiComment : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        for_each_comment(file, program, [&](const ast::Token& t) {
+            const std::string_view s = file.tree().spelling(t);
+            for (const char c : s)
+                if (static_cast<unsigned char>(c) >= 0x80) {
+                    out.report(t.range(), "comment with characters outside ASCII",
+                               "write comments in ASCII for controls that read ISO/EIA tape code");
+                    return;
+                }
+        });
+    }
+    void block(const BlockContext&, Reporter&) override {}
+};
+
+class LowerCase : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        for (const ast::Token& t : b.view.tokens()) {
+            if (t.kind != ast::TokenKind::word || !t.has(ast::token_flags::lower_case)) continue;
+            out.report({t.begin, t.begin + 1}, fmt::format("lower-case address '{}'", b.tree().text[t.begin]),
+                       fmt::format("write '{}'", t.letter))
+                .fix = Fix{"upper-case the address letter", {{{t.begin, t.begin + 1}, std::string(1, t.letter)}}};
+        }
+    }
+};
+
+}  // namespace
+
+void add_numbers(Registry& r) {
+    r.add(static_rule<MissingDecimalPoint>(make_rule("K1020", "missing-decimal-point", Category::syntax, S::warning,
+        {"An axis or arc value without decimal point on a machine that reads integers as least increments.",
+         "X10 moves to 0.010 mm, not 10 mm: the tool goes somewhere else than the drawing says.",
+         "G01 X10 Y10 F100.", "G01 X10. Y10. F100.", "dialects.md §2 Numbers; cycles.md §0"})));
+    Rule dup = static_rule<DuplicateAddress>(make_rule("K1021", "duplicate-address", Category::syntax, S::warning,
+        {"The same address twice in one block (two F words).",
+         "The control takes one of them or raises alarm 'address duplicated'; the other value is lost.",
+         "G01 X10. F0.010 F.010", "G01 X10. F0.010", "corpus Steady_rest_maker.nc; [FANUC]"}));
+    dup.has_fix = true;
+    r.add(std::move(dup));
+    Rule point = static_rule<PointOnInteger>(make_rule("K1022", "point-on-integer-address", Category::syntax, S::warning,
+        {"A decimal point on an address that takes whole numbers (M08., T0101., N10.).",
+         "Many controls raise a format alarm for a point on M, T, N or O.",
+         "M08.", "M08", "dialects.md §2 Numbers; corpus 1003.NC"}));
+    point.has_fix = true;
+    r.add(std::move(point));
+    Rule bom = static_rule<ByteOrderMark>(make_rule("K1023", "byte-order-mark", Category::syntax, S::info,
+        {"The file starts with a UTF-8 byte order mark.",
+         "A control reading the file over RS-232 or from a card sees three unknown bytes before '%' or 'O'.",
+         "<BOM>O0001", "O0001", "corpus O0001.txt, O0005.nc"}));
+    bom.has_fix = true;
+    r.add(std::move(bom));
+    Rule empty = static_rule<EmptyComment>(make_rule("K1024", "empty-comment", Category::syntax, S::hint,
+        {"An empty comment '()'.", "Harmless on the control; noise for the reader (style, off by default).",
+         "N01 G00 X0. ()", "N01 G00 X0.", "corpus O3380"}));
+    empty.enabled = false;
+    empty.has_fix = true;
+    r.add(std::move(empty));
+    Rule ascii = static_rule<NonAsciiComment>(make_rule("K1025", "non-ascii-comment", Category::syntax, S::info,
+        {"A comment with bytes outside ASCII (Cyrillic, a Latin-1 degree sign).",
+         "ISO/EIA tape code has no such characters: some controls reject the block or show garbage (opt-in).",
+         "(ТОКАРНЫЙ 90°)", "(TOKARNYJ 90 DEG)", "dialects.md §2 Characters"}));
+    ascii.enabled = false;
+    r.add(std::move(ascii));
+    Rule lower = static_rule<LowerCase>(make_rule("K1026", "lower-case-address", Category::syntax, S::info,
+        {"An address letter in lower case.", "FANUC ISO code has upper-case addresses; some controls reject lower case.",
+         "g01 z-18.5", "G01 Z-18.5", "dialects.md §2; corpus p2g"}));
+    lower.has_fix = true;
+    r.add(std::move(lower));
+}
+
+}  // namespace kerf::analyzer::rules

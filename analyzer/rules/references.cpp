@@ -1,0 +1,315 @@
+// Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
+// §3.6, §3.7; cycles.md; semantics.md §1.2).
+#include <set>
+
+#include "analyzer/rules/common.hpp"
+
+namespace kerf::analyzer::rules {
+
+namespace {
+
+using S = Severity;
+namespace fn = dialects::functions;
+
+// The P/Q of G70–G73: the first and last N of the contour (cycles.md §5).
+bool has_contour_labels(const dialects::CodeInfo& c) {
+    return c.function == "rough-turning-cycle" || c.function == "rough-facing-cycle" ||
+           c.function == "pattern-repeating-cycle" || c.function == "finishing-cycle";
+}
+
+struct Target {
+    std::uint32_t token;
+    std::int64_t label;
+};
+
+// Where a block jumps to in its own program: G70–G73 P/Q, GOTO n, M98 Q without P.
+std::vector<Target> local_targets(const BlockContext& b) {
+    std::vector<Target> out;
+    for (const ast::CodeRef& c : b.g)
+        if (c.info && has_contour_labels(*c.info))
+            for (const char letter : {'P', 'Q'})
+                if (const auto w = number_word(b, letter)) out.push_back({w->token, static_cast<std::int64_t>(w->value)});
+    if (b.has_function(fn::subprogram_call) && !number_word(b, 'P'))
+        if (const auto q = number_word(b, 'Q')) out.push_back({q->token, static_cast<std::int64_t>(q->value)});
+    for (const std::uint32_t s : b.view.statements()) {
+        const ast::Statement& st = b.tree().statements[static_cast<std::size_t>(b.token(s).payload)];
+        if (st.kind != ast::StatementKind::goto_ && st.kind != ast::StatementKind::if_goto) continue;
+        if (const auto label = constant_of(b.tree(), st.label))
+            out.push_back({s, static_cast<std::int64_t>(*label)});
+    }
+    return out;
+}
+
+class LabelCheck : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
+        labels_ = program_labels(file, program);
+    }
+
+protected:
+    std::map<std::int64_t, int> labels_;
+};
+
+class LabelNotFound : public LabelCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        for (const Target& t : local_targets(b))
+            if (!labels_.count(t.label))
+                out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
+                           fmt::format("add N{} to the block meant, or correct the number", t.label));
+    }
+};
+
+class AmbiguousLabel : public LabelCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        for (const Target& t : local_targets(b))
+            if (const auto it = labels_.find(t.label); it != labels_.end() && it->second > 1)
+                out.report(b.token(t.token).range(),
+                           fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label,
+                                       it->second),
+                           "give each target block a number of its own");
+    }
+};
+
+// M98 P / G65 P / G66 P: the program must exist (this file, or the folder: O1000, 1000.nc).
+class ProgramNotFound : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        std::optional<std::int64_t> program;
+        std::uint32_t token = 0;
+        if (b.has_function(fn::subprogram_call))
+            if (const auto call = b.view.subprogram_call(); call && number_word(b, 'P')) {
+                program = call->program;
+                token = call->p_token;
+            }
+        if (!program && (b.has_function(fn::macro_call) || b.has_function(fn::modal_macro_call)))
+            if (const auto p = number_word(b, 'P')) {
+                program = static_cast<std::int64_t>(p->value);
+                token = p->token;
+            }
+        if (!program || b.file.program_exists(*program)) return;
+        out.report(b.token(token).range(), fmt::format("program O{:04} is not in this file or its folder (alarm 078)", *program),
+                   fmt::format("put O{:04} into this file or next to it as O{:04} or {:04}.nc", *program, *program, *program));
+    }
+};
+
+// DO m / END m pairs and their depth (dialects.md §3.7; alarms 124 and 126).
+class Loops : public StaticCheck {
+public:
+    explicit Loops(bool depth) : depth_(depth) {}
+    void begin_program(const FileContext&, std::size_t, Reporter&) override { open_.clear(); }
+    void block(const BlockContext& b, Reporter& out) override {
+        for (const std::uint32_t s : b.view.statements()) {
+            const ast::Statement& st = b.tree().statements[static_cast<std::size_t>(b.token(s).payload)];
+            const bool opens = st.kind == ast::StatementKind::while_do || st.kind == ast::StatementKind::do_;
+            if (!opens && st.kind != ast::StatementKind::end) continue;
+            const auto m = constant_of(b.tree(), st.label);
+            if (!m) continue;
+            const int label = static_cast<int>(*m);
+            if (opens) open(b, s, label, out);
+            else close(b, s, label, out);
+        }
+    }
+    void end_program(const FileContext& file, std::size_t, Reporter& out) override {
+        if (depth_) return;
+        for (const auto& [token, label] : open_)
+            out.report(file.tree().tokens[token].range(), fmt::format("DO {} has no END {} (alarm 124)", label, label),
+                       fmt::format("close the loop with END {}", label));
+    }
+
+private:
+    void open(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
+        if (!depth_ && (label < 1 || label > 3))
+            out.report(b.token(s).range(), fmt::format("DO {}: the loop number must be 1, 2 or 3 (alarm 126)", label),
+                       "number loops 1 to 3");
+        open_.push_back({s, label});
+        if (depth_ && open_.size() == 4)
+            out.report(b.token(s).range(), "WHILE/DO nested deeper than 3 (alarm 124)",
+                       "move the inner loop into a macro (G65) or a subprogram");
+    }
+    void close(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
+        for (std::size_t i = open_.size(); i-- > 0;)
+            if (open_[i].second == label) {
+                if (!depth_ && i + 1 != open_.size())
+                    out.report(b.token(s).range(), fmt::format("END {} closes DO {} before the inner loops end", label, label),
+                               "close the inner loops first");
+                open_.resize(i);
+                return;
+            }
+        if (!depth_)
+            out.report(b.token(s).range(), fmt::format("END {} without its DO (alarm 124)", label),
+                       fmt::format("add WHILE [...] DO {} before it, or remove it", label));
+    }
+    bool depth_;
+    std::vector<std::pair<std::uint32_t, int>> open_;
+};
+
+struct LoopsDepth : Loops {
+    LoopsDepth() : Loops(true) {}
+};
+struct LoopsPairs : Loops {
+    LoopsPairs() : Loops(false) {}
+};
+
+bool ends_program(const BlockContext& b) {
+    return b.has_function(fn::program_end) || b.has_function(fn::program_end_rewind) ||
+           b.has_function(fn::subprogram_return);
+}
+
+class MissingEnd : public StaticCheck {
+public:
+    void begin_program(const FileContext&, std::size_t, Reporter&) override {
+        ended_ = false;
+        code_ = false;
+    }
+    void block(const BlockContext& b, Reporter&) override {
+        ended_ = ended_ || ends_program(b);
+        code_ = code_ || b.view.block().kind == ast::BlockKind::code;
+    }
+    void end_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        const auto& programs = file.typed.programs();
+        const ast::Program& p = programs[program];
+        if (ended_ || !code_ || (!p.number && program + 1 < programs.size())) return;   // a header before O
+        const ast::Range at = p.o_token >= 0 ? file.tree().tokens[static_cast<std::size_t>(p.o_token)].range()
+                                             : trimmed_block(file, p.first_block);
+        out.report(at, p.number ? fmt::format("program O{:04} has no M30, M02 or M99", *p.number)
+                                : std::string("the program has no M30, M02 or M99"),
+                   "end a main program with M30 (or M02), a subprogram with M99");
+    }
+
+private:
+    static ast::Range trimmed_block(const FileContext& file, std::uint32_t b) {
+        ast::Range r = file.tree().block_range(b);
+        while (r.end > r.begin && std::string_view(" \t\r\n").find(file.tree().text[r.end - 1]) != std::string_view::npos) --r.end;
+        return r;
+    }
+    bool ended_ = false, code_ = false;
+};
+
+// Blocks after M30/M02 or an unconditional GOTO that nothing jumps to (the control never runs them).
+class Unreachable : public LabelCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        LabelCheck::begin_program(file, program, out);
+        targets_ = all_targets(file, program, computed_);
+        dead_ = false;
+        reported_ = false;
+    }
+    void block(const BlockContext& b, Reporter& out) override {
+        if (computed_) return;   // GOTO #1 may reach any label
+        const auto n = b.view.sequence_number();
+        if (n && targets_.count(static_cast<std::int64_t>(*n))) dead_ = false;
+        if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted)) {
+            out.report(block_text_range(b), "no path reaches this block: it follows the end of the program or a GOTO",
+                       "remove the dead blocks, or give them a label that a GOTO or M98 Q jumps to");
+            reported_ = true;
+        }
+        if (b.has_function(fn::program_end) || b.has_function(fn::program_end_rewind) || unconditional_goto(b)) dead_ = true;
+    }
+
+private:
+    static bool unconditional_goto(const BlockContext& b) {
+        if (b.view.block().has(ast::block_flags::deleted)) return false;
+        for (const std::uint32_t s : b.view.statements())
+            if (b.tree().statements[static_cast<std::size_t>(b.token(s).payload)].kind == ast::StatementKind::goto_) return true;
+        return false;
+    }
+    // Every N that something in the file can jump to; `computed` when a GOTO target is an expression.
+    static std::set<std::int64_t> all_targets(const FileContext& file, std::size_t program, bool& computed) {
+        std::set<std::int64_t> out;
+        computed = false;
+        const ast::SyntaxTree& tree = file.tree();
+        for (std::size_t s = 0; s < tree.statements.size(); ++s) {
+            const ast::Statement& st = tree.statements[s];
+            if (st.label < 0) continue;
+            if (const auto v = constant_of(tree, st.label)) out.insert(static_cast<std::int64_t>(*v));
+            else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
+        }
+        for (std::size_t t = 0; t < tree.tokens.size(); ++t) {   // P/Q/L of calls and cycles: any number
+            const ast::Token& tok = tree.tokens[t];
+            if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
+                out.insert(static_cast<std::int64_t>(tree.number_value(tok)));
+        }
+        (void)program;
+        return out;
+    }
+    std::set<std::int64_t> targets_;
+    bool computed_ = false, dead_ = false, reported_ = false;
+};
+
+class ProgramNumbers : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        const ast::Program& p = file.typed.programs()[program];
+        if (!p.number || p.o_token < 0) return;
+        const ast::Range at = file.tree().tokens[static_cast<std::size_t>(p.o_token)].range();
+        for (std::size_t i = 0; i < program; ++i)
+            if (file.typed.programs()[i].number == p.number) {
+                out.report(at, fmt::format("program O{:04} is defined twice in this file: calls reach the first one", *p.number),
+                           "renumber one of them");
+                return;
+            }
+    }
+    void block(const BlockContext&, Reporter&) override {}
+};
+
+class ProtectedNumber : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        const ast::Program& p = file.typed.programs()[program];
+        if (!p.number || p.o_token < 0 || *p.number < 8000 || *p.number > 9999) return;
+        out.report(file.tree().tokens[static_cast<std::size_t>(p.o_token)].range(),
+                   fmt::format("O{:04} is in the range {} that the control can protect from editing and loading",
+                               *p.number, *p.number < 9000 ? "O8000-O8999" : "O9000-O9999"),
+                   "use a number below O8000 unless this is a protected macro on purpose");
+    }
+    void block(const BlockContext&, Reporter&) override {}
+};
+
+}  // namespace
+
+void add_references(Registry& r) {
+    const auto rule = rule_maker(Category::references);
+    Rule missing = static_rule<LabelNotFound>(rule("K3001", "label-not-found", S::error,
+        {"G70–G73 P/Q, GOTO n or M98 Q n to a sequence number the program does not have.",
+         "The control stops with alarm 060 (cycles), 128 (GOTO) or 078 (M98 Q) in the middle of the job.",
+         "G71 P100 Q200 U0.5 W0.1 F0.3\nN100 G00 X20.\nN210 G01 Z-10.", "G71 P100 Q200 U0.5 W0.1 F0.3\nN100 G00 X20.\nN200 G01 Z-10.",
+         "cycles.md §5; dialects.md §3.6, §3.7"}));
+    missing.alarms = {{60, 60}, {128, 128}};
+    r.add(std::move(missing));
+    r.add(static_rule<AmbiguousLabel>(rule("K3002", "ambiguous-label", S::warning,
+        {"A jump (P/Q, GOTO, M98 Q) to a sequence number that several blocks carry.",
+         "The control searches from the top and takes the first block: maybe not the one you meant.",
+         "GOTO 10\nN10 X1.\nN10 X2.", "GOTO 10\nN10 X1.\nN20 X2.", "dialects.md §2 Sequence number"})));
+    r.add(static_rule<ProgramNotFound>(rule("K3003", "program-not-found", S::error,
+        {"M98 P, G65 P or G66 P to a program that is neither in the file nor in its folder.",
+         "The control stops with alarm 078 when the call is reached.", "M98 P1234", "M98 P1000 (O1000 in the folder)",
+         "dialects.md §3.6"})));
+    Rule loops = static_rule<LoopsPairs>(rule("K3004", "loop-mismatch", S::error,
+        {"DO m without END m, END m without DO m, loops crossing, or a loop number other than 1–3.",
+         "The control stops with alarm 124 or 126.", "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 2",
+         "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "dialects.md §3.7"}));
+    loops.alarms = {{124, 124}, {126, 126}};
+    r.add(std::move(loops));
+    r.add(static_rule<LoopsDepth>(rule("K3005", "loop-nesting-too-deep", S::error,
+        {"WHILE/DO loops nested more than 3 deep.", "The control stops with alarm 124.",
+         "DO1 DO2 DO3 DO1 (four levels)", "three levels, the fourth in a G65 macro", "dialects.md §3.7"})));
+    r.add(static_rule<MissingEnd>(rule("K3006", "missing-program-end", S::warning,
+        {"A program without M30, M02 or M99.",
+         "The control runs off the end of the memory of the program: no rewind, no reset of modal state.",
+         "O0001\nG00 X0.", "O0001\nG00 X0.\nM30", "dialects.md §3.4"})));
+    r.add(static_rule<Unreachable>(rule("K3007", "unreachable-block", S::warning,
+        {"Blocks after M30/M02 or an unconditional GOTO that nothing jumps to.",
+         "They never run: a forgotten operation, or a label that was renumbered.",
+         "M30\nG00 X100.", "G00 X100.\nM30", "dialects.md §3.4, §3.7"})));
+    r.add(static_rule<ProgramNumbers>(rule("K3008", "duplicate-program-number", S::error,
+        {"The same O number twice in one file.", "Calls reach only the first; loading the file may overwrite a program.",
+         "O0100\nM30\nO0100\nM99", "O0100\nM30\nO0101\nM99", "corpus O0100"})));
+    r.add(static_rule<ProtectedNumber>(rule("K3009", "protected-program-number", S::info,
+        {"An O number in O8000–O9999, the ranges FANUC parameter 3202 can protect.",
+         "A protected program cannot be edited or loaded over; macro makers use these numbers on purpose.",
+         "O9001", "O1001", "[FANUC] parameter 3202 NE8/NE9"})));
+}
+
+}  // namespace kerf::analyzer::rules

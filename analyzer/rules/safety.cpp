@@ -1,0 +1,213 @@
+// Static safety rules read in text order with the modal state of the listing (semantics.md §4–§7).
+#include "analyzer/rules/common.hpp"
+
+namespace kerf::analyzer::rules {
+
+namespace {
+
+using S = Severity;
+namespace fn = dialects::functions;
+
+bool active(const BlockContext& b, std::string_view function) { return b.has_function(function) || b.modal_function(function); }
+bool threading(const BlockContext& b) {
+    return b.has_function(fn::thread_cutting) || b.has_function("thread-cutting-cycle") ||
+           b.has_function("multiple-threading-cycle");
+}
+const ast::Token* code_with(const BlockContext& b, std::string_view function) {
+    for (const auto* codes : {&b.g, &b.m})
+        for (const ast::CodeRef& c : *codes)
+            if (c.info && c.info->function == function) return &b.token(c.token);
+    return nullptr;
+}
+
+// G96 before any G50 S clamp (semantics.md §4.1: SPINNER always programs it before G96).
+class CssWithoutClamp : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        if (b.has_function(fn::coordinate_system_setting) && number_word(b, 'S')) clamped_ = true;
+        const ast::Token* css = code_with(b, fn::css_on);
+        if (!css || clamped_ || b.has_function(fn::coordinate_system_setting)) return;
+        out.report(css->range(), "constant surface speed without a spindle clamp (G50 S) before it",
+                   "program G50 S<max rpm> in a block before G96: near X0 the rpm climbs to the machine limit");
+        clamped_ = true;   // once per file
+    }
+
+private:
+    bool clamped_ = false;
+};
+
+class ThreadInCss : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        if (!threading(b) || !active(b, fn::css_on) || b.has_function(fn::css_off)) return;
+        out.report(b.token(b.g.front().token).range(), "threading in constant surface speed mode (G96)",
+                   "switch to G97 with a fixed rpm before threading: the lead needs a constant speed per pass");
+    }
+};
+
+bool comp_on(std::string_view f) { return f == "radius-comp-left" || f == "radius-comp-right"; }
+
+class CompOnArc : public StaticCheck {
+public:
+    explicit CompOnArc(std::string_view function) : function_(function) {}
+    void block(const BlockContext& b, Reporter& out) override {
+        for (const ast::CodeRef& c : b.g) {
+            if (!c.info || !(function_.empty() ? comp_on(c.info->function) : c.info->function == function_)) continue;
+            if (!circular_motion(b)) return;
+            out.report(b.token(c.token).range(),
+                       fmt::format("{} in an arc block: compensation must start and end on G00 or G01",
+                                   b.tree().spelling(b.token(c.token))),
+                       "start or cancel the compensation on a straight move before or after the arc");
+        }
+    }
+
+private:
+    std::string_view function_;
+};
+struct CompStartOnArc : CompOnArc {
+    CompStartOnArc() : CompOnArc("") {}
+};
+struct CompCancelOnArc : CompOnArc {
+    CompCancelOnArc() : CompOnArc("radius-comp-cancel") {}
+};
+
+class CompAtEnd : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        if (!b.has_function(fn::program_end) && !b.has_function(fn::program_end_rewind)) return;
+        for (const auto& [group, info] : b.modal)
+            if (info && comp_on(info->function) && !b.has_function("radius-comp-cancel"))
+                out.report(block_text_range(b), fmt::format("the program ends with {} still active", info->spelling),
+                           "cancel with G40 on a move away from the part before M30");
+    }
+};
+
+// T0100 on a lathe: tool 1 with offset 0 = no geometry and wear (dialects.md §3.5).
+class ToolWithoutOffset : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        if (b.file.dialect.lexical.tool_word != "mmnn") return;
+        const auto t = number_word(b, 'T');
+        if (!t || t->value < 100 || t->value > 9999 || static_cast<std::int64_t>(t->value) % 100 != 0) return;
+        out.report(b.token(t->token).range(),
+                   fmt::format("{} selects tool {} with offset 00: no geometry or wear offset", b.tree().spelling(b.token(t->token)),
+                               static_cast<std::int64_t>(t->value) / 100),
+                   fmt::format("write T{:02}{:02} (the offset of the tool)", static_cast<std::int64_t>(t->value) / 100,
+                               static_cast<std::int64_t>(t->value) / 100));
+    }
+};
+
+// Mill: G43 H2 after T1 M06 applies the length of another tool.
+class LengthOffsetMismatch : public StaticCheck {
+public:
+    void begin_program(const FileContext&, std::size_t, Reporter&) override { tool_.reset(); }
+    void block(const BlockContext& b, Reporter& out) override {
+        if (b.file.dialect.lexical.tool_word != "number") return;
+        if (const auto t = number_word(b, 'T')) tool_ = static_cast<std::int64_t>(t->value);
+        if (!b.has_function("tool-length-comp-plus") && !b.has_function("tool-length-comp-minus")) return;
+        const auto h = number_word(b, 'H');
+        if (!h || !tool_ || static_cast<std::int64_t>(h->value) == *tool_) return;
+        out.report(b.token(h->token).range(),
+                   fmt::format("H{} is not the length of the tool T{} in the spindle", static_cast<std::int64_t>(h->value), *tool_),
+                   fmt::format("write H{} unless the offset numbering differs on purpose", *tool_));
+    }
+
+private:
+    std::optional<std::int64_t> tool_;
+};
+
+// G28 X0 Z0 in absolute mode goes through the work zero (the part) on its way home.
+class G28Absolute : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        if (!b.has_function(fn::reference_return) || active(b, fn::incremental_programming)) return;
+        for (const ast::AxisWord& a : b.view.axis_words()) {
+            if (a.incremental) continue;
+            const ast::Token& t = b.token(a.token);
+            out.report(t.range(),
+                       fmt::format("G28 in absolute mode moves first to the work position {}: through the part if it is in the way",
+                                   b.tree().spelling(t)),
+                       b.file.dialect.lexical.incremental_letters.empty()
+                           ? "write G91 G28 with 0 for the axis (no intermediate move)"
+                           : "write the incremental letter with 0 (G28 U0. W0.)");
+            return;
+        }
+    }
+};
+
+class SpindleOverLimit : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        const double limit = b.file.setup.max_rpm;
+        if (limit <= 0 || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
+        const auto s = number_word(b, 'S');
+        if (!s || s->value <= limit) return;
+        out.report(b.token(s->token).range(), fmt::format("S{:g} rpm is over the machine's spindle limit of {:g} rpm", s->value, limit),
+                   "lower the speed; the control clamps it or alarms");
+    }
+};
+
+bool peck_cycle(std::string_view f) {
+    return f == "peck-drilling-cycle" || f == "high-speed-peck-drilling-cycle" || f == "face-peck-drilling-cycle";
+}
+
+class CycleParameter : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        for (const ast::CodeRef& c : b.g) {
+            if (!c.info) continue;
+            if (c.info->function == fn::dwell)
+                for (const char letter : {'X', 'U', 'P'})
+                    if (const auto w = number_word(b, letter); w && w->value < 0)
+                        out.report(b.token(w->token).range(), "negative dwell time", "a dwell time is 0 or more");
+            if (peck_cycle(c.info->function))
+                if (const auto q = number_word(b, 'Q'); q && q->value <= 0)
+                    out.report(b.token(q->token).range(), fmt::format("peck depth Q{:g}: must be more than 0", q->value),
+                               "give the depth of one peck as a positive Q");
+        }
+    }
+};
+
+}  // namespace
+
+void add_safety(Registry& r) {
+    const auto rule = rule_maker(Category::motion);
+    r.add(static_rule<CssWithoutClamp>(rule("K5011", "css-without-clamp", S::warning,
+        {"G96 constant surface speed with no G50 S spindle clamp before it.",
+         "Facing toward X0 the rpm rises to the machine maximum: the part or the chuck may not hold.",
+         "G96 S200 M03", "G50 S2500\nG96 S200 M03", "semantics.md §4.1"})));
+    r.add(static_rule<ThreadInCss>(rule("K5012", "thread-in-css", S::warning,
+        {"Threading (G32, G76, G92) while G96 is active.",
+         "The rpm changes with the diameter between passes: the passes do not land in the same groove.",
+         "G96 S150\nG76 X18. Z-20. P1000 Q300 F1.5", "G97 S800\nG76 X18. Z-20. P1000 Q300 F1.5", "semantics.md §4.1"})));
+    r.add(static_rule<CompStartOnArc>(rule("K5013", "compensation-start-on-arc", S::error,
+        {"G41/G42 programmed in an arc block.", "The control raises an alarm or gouges: compensation starts on G00/G01 only.",
+         "G02 G41 X20. Z-5. R5.", "G01 G41 X20. Z-1.\nG02 X20. Z-5. R5.", "semantics.md §5, §6"})));
+    r.add(static_rule<CompCancelOnArc>(rule("K5016", "compensation-cancel-on-arc", S::error,
+        {"G40 programmed in an arc block.", "The control raises an alarm or gouges: compensation ends on G00/G01 only.",
+         "G03 G40 X30. Z-10. R5.", "G03 X30. Z-10. R5.\nG00 G40 X40.", "semantics.md §5, §6"})));
+    r.add(static_rule<CompAtEnd>(rule("K5017", "compensation-active-at-end", S::warning,
+        {"The program ends with G41/G42 still active.",
+         "The next program starts with the compensation of this one (or the control alarms at M30).",
+         "G42 G01 X20.\nM30", "G42 G01 X20.\nG40 G00 X100.\nM30", "semantics.md §5, §6"})));
+    r.add(static_rule<ToolWithoutOffset>(rule("K5018", "tool-without-offset", S::warning,
+        {"A lathe tool word with offset 00 (T0100).", "The tool cuts with no geometry or wear offset: off by the tool's length.",
+         "T0100", "T0101", "dialects.md §3.5"})));
+    r.add(static_rule<LengthOffsetMismatch>(rule("K5019", "length-offset-mismatch", S::warning,
+        {"G43 H with a number other than the tool in the spindle (mills).",
+         "The length of another tool is applied: the tool goes too deep or cuts air.", "T1 M06\nG43 H2 Z50.",
+         "T1 M06\nG43 H1 Z50.", "semantics.md §7"})));
+    r.add(static_rule<G28Absolute>(rule("K5020", "g28-absolute-intermediate", S::warning,
+        {"G28 with an intermediate point in absolute work coordinates.",
+         "The tool first moves to that work position (G28 X0 Z0: the centre of the part) before going home.",
+         "G28 X0. Z0.", "G28 U0. W0.", "semantics.md §2.8"})));
+    r.add(static_rule<SpindleOverLimit>(rule("K5021", "spindle-over-limit", S::warning,
+        {"A spindle speed over the machine's maximum rpm.", "The control clamps it or alarms; the cut is not what was planned.",
+         "G97 S9000 M03", "G97 S3000 M03", "machine/SCHEMA.md; semantics.md §4.1"})));
+    r.add(static_rule<CycleParameter>(rule("K5022", "cycle-parameter-out-of-range", S::error,
+        {"A cycle or dwell parameter outside its range (negative dwell, peck depth Q of 0 or less).",
+         "The control alarms, or the cycle drills in one plunge.", "G83 X0. Z-20. Q0 R1. F0.1", "G83 X0. Z-20. Q3000 R1. F0.1",
+         "cycles.md §0; semantics.md §8.2"})));
+}
+
+}  // namespace kerf::analyzer::rules

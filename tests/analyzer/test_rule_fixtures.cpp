@@ -1,0 +1,86 @@
+// Every rule of the registry has a fixture tests/golden/check/<ID>-<name>/ with bad.nc (fires),
+// good.nc (does not) and expected.txt (the findings of that rule in bad.nc, checked by hand: see
+// REVIEW.md there). Every fix is applied, the result re-parsed, and the rule must no longer fire.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <sstream>
+
+#include "analyzer/fix.hpp"
+#include "tests/analyzer/check_fixture.hpp"
+#include "tests/shared_files.hpp"
+
+namespace fs = std::filesystem;
+using namespace kerf;
+
+namespace {
+
+const fs::path kFixtures = fs::path(KERF_SOURCE_DIR) / "tests/golden/check";
+
+struct Expected {
+    std::string dialect = "fanuc-lathe-a";
+    std::vector<std::string> findings;
+    test::SoftLimit limit;
+};
+
+// "# dialect ID" sets the dialect; other lines are "line:col severity ID".
+Expected read_expected(const fs::path& file) {
+    Expected e;
+    std::istringstream in(test::read_text(file));
+    for (std::string line; std::getline(in, line);) {
+        if (line.starts_with("# dialect ")) e.dialect = line.substr(10);
+        else if (line.starts_with("# soft-limit ")) {
+            std::istringstream words(line.substr(13));
+            words >> e.limit.axis >> e.limit.min >> e.limit.max;
+        }
+        else if (!line.empty() && line[0] != '#') e.findings.push_back(line);
+    }
+    return e;
+}
+
+fs::path fixture_of(const analyzer::Rule& r) { return kFixtures / (r.id + "-" + r.name); }
+
+}  // namespace
+
+TEST_CASE("every rule has a fixture with bad.nc, good.nc and expected.txt") {
+    for (const analyzer::Rule& r : analyzer::builtin_rules().rules()) {
+        INFO(r.id << " " << r.name);
+        for (const char* f : {"bad.nc", "good.nc", "expected.txt"}) CHECK(fs::is_regular_file(fixture_of(r) / f));
+    }
+    CHECK(fs::is_regular_file(kFixtures / "REVIEW.md"));
+}
+
+TEST_CASE("each rule fires on its bad program as expected and not on its good one") {
+    for (const analyzer::Rule& r : analyzer::builtin_rules().rules()) {
+        const fs::path dir = fixture_of(r);
+        if (!fs::is_regular_file(dir / "expected.txt")) continue;   // the test above fails for it
+        INFO(r.id << " " << r.name);
+        const Expected expected = read_expected(dir / "expected.txt");
+        REQUIRE(!expected.findings.empty());
+        const auto options = test::all_rules_on();
+        CHECK(test::summary(test::check(test::read_text(dir / "bad.nc"), expected.dialect, options, expected.limit), r.id) ==
+              expected.findings);
+        CHECK(test::summary(test::check(test::read_text(dir / "good.nc"), expected.dialect, options, expected.limit), r.id).empty());
+    }
+}
+
+TEST_CASE("each fix applies, re-parses and the rule no longer fires") {
+    std::size_t fixes = 0;
+    for (const analyzer::Rule& r : analyzer::builtin_rules().rules()) {
+        if (!r.has_fix) continue;
+        INFO(r.id << " " << r.name);
+        const fs::path dir = fixture_of(r);
+        const Expected expected = read_expected(dir / "expected.txt");
+        const std::string bad = test::read_text(dir / "bad.nc");
+        std::vector<analyzer::Finding> mine;
+        for (const analyzer::Finding& f : test::check(bad, expected.dialect).findings)
+            if (f.rule == r.id) mine.push_back(f);
+        REQUIRE(!mine.empty());
+        const analyzer::FixResult fixed = analyzer::apply_fixes(bad, mine);
+        CHECK(fixed.applied > 0);
+        CHECK(fixed.text != bad);
+        CHECK(test::summary(test::check(fixed.text, expected.dialect), r.id).empty());
+        ++fixes;
+    }
+    CHECK(fixes >= 8);
+}

@@ -1,0 +1,3 @@
+O0001
+(ROUGH - OD - PASS)
+M30
