@@ -17,19 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Subprograms not in the file: the same folder, as O1000, O1000.nc or 1000.nc (issue 3).
-std::optional<std::pair<std::string, std::string>> load_from_folder(const fs::path& folder, std::int64_t number) {
-    const std::string o = fmt::format("O{:04}", number);
-    for (const std::string& name : {o, o + ".nc", fmt::format("{:04}.nc", number), fmt::format("{}.nc", number)}) {
-        const fs::path p = folder / name;
-        std::error_code ec;
-        if (!fs::is_regular_file(p, ec)) continue;
-        std::string error;
-        if (auto text = read_file(p, error)) return std::make_pair(p.string(), std::move(*text));
-    }
-    return std::nullopt;
-}
-
 // Dialect files from the flags first, then from .kerf.toml.
 std::vector<fs::path> dialect_files(const DryRunOptions& o, const ProjectConfig& config) {
     std::vector<fs::path> files(o.dialect_files.begin(), o.dialect_files.end());
@@ -37,12 +24,6 @@ std::vector<fs::path> dialect_files(const DryRunOptions& o, const ProjectConfig&
     return files;
 }
 
-// --dialect, else .kerf.toml's dialect, else detection from the text.
-std::string dialect_id(const DryRunOptions& o, const ProjectConfig& config, const std::string& text) {
-    if (o.dialect != "auto") return o.dialect;
-    if (!config.dialect.empty() && config.dialect != "auto") return config.dialect;
-    return grammar::detect_dialect(text).dialect;
-}
 
 // LoadError messages start with their source ("<file>: <key>: what is wrong"); printed as
 // file:line:col: error: <key>: what is wrong, the form of every other kerf diagnostic.
@@ -76,14 +57,6 @@ std::optional<machine::Machine> load_machine(const fs::path& file, const dialect
     return m;
 }
 
-// The Setup: the machine file if one is named, else the dialect's built-in machine.
-std::optional<interpreter::Setup> setup_for(const fs::path& machine_file, const dialects::Dialect& dialect) {
-    if (machine_file.empty()) return interpreter::default_setup(dialect);
-    const std::optional<machine::Machine> m = load_machine(machine_file, dialect);
-    if (!m) return std::nullopt;
-    return interpreter::make_setup(*m);
-}
-
 fs::path machine_file(const DryRunOptions& o, const ProjectConfig& config) {
     if (!o.machine_file.empty()) return o.machine_file;
     return config.machine_file.value_or(fs::path{});
@@ -104,6 +77,34 @@ int load_program(DryRun& run, const std::string& file, std::string text) {
 }
 
 }  // namespace
+
+// Subprograms not in the file: the same folder, as O1000, O1000.nc or 1000.nc (issue 3).
+std::optional<std::pair<std::string, std::string>> load_from_folder(const fs::path& folder, std::int64_t number) {
+    const std::string o = fmt::format("O{:04}", number);
+    for (const std::string& name : {o, o + ".nc", fmt::format("{:04}.nc", number), fmt::format("{}.nc", number)}) {
+        const fs::path p = folder / name;
+        std::error_code ec;
+        if (!fs::is_regular_file(p, ec)) continue;
+        std::string error;
+        if (auto text = read_file(p, error)) return std::make_pair(p.string(), std::move(*text));
+    }
+    return std::nullopt;
+}
+
+// --dialect, else .kerf.toml's dialect, else detection from the text.
+std::string choose_dialect(const std::string& flag, const ProjectConfig& config, std::string_view text) {
+    if (flag != "auto") return flag;
+    if (!config.dialect.empty() && config.dialect != "auto") return config.dialect;
+    return grammar::detect_dialect(text).dialect;
+}
+
+// The Setup: the machine file if one is named, else the dialect's built-in machine.
+std::optional<interpreter::Setup> setup_for(const fs::path& machine_file, const dialects::Dialect& dialect) {
+    if (machine_file.empty()) return interpreter::default_setup(dialect);
+    const std::optional<machine::Machine> m = load_machine(machine_file, dialect);
+    if (!m) return std::nullopt;
+    return interpreter::make_setup(*m);
+}
 
 void add_dry_run_options(CLI::App& command, DryRunOptions& o) {
     command.add_option("file", o.file, "program file")->required();
@@ -126,7 +127,7 @@ std::variant<std::unique_ptr<DryRun>, int> prepare_dry_run(const DryRunOptions& 
     run->dialects = make_registry(dialect_files(o, config));
     for (const std::string& e : config_errors) std::cerr << "kerf: " << e << "\n";
     for (const std::string& e : run->dialects.errors) std::cerr << "kerf: " << e << "\n";
-    run->dialect_id = dialect_id(o, config, *text);
+    run->dialect_id = choose_dialect(o.dialect, config, *text);
     run->dialect = run->dialects.registry.find(run->dialect_id);
     if (!run->dialect) {
         std::cerr << fmt::format("kerf: unknown dialect '{}'; `kerf dialects` lists them\n", run->dialect_id);

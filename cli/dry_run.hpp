@@ -5,6 +5,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <filesystem>
+#include <optional>
+#include <string_view>
 #include <memory>
 #include <string>
 #include <variant>
@@ -22,6 +25,14 @@ struct DryRunOptions {
     std::string machine_file;   // "" = .kerf.toml's `machine`, else the dialect's built-in machine
     bool lenient = false;
 };
+
+// The pieces `kerf fmt --verify` shares with the dry run:
+// subprograms not in the file, from its folder (O1000, O1000.nc, 1000.nc);
+std::optional<std::pair<std::string, std::string>> load_from_folder(const std::filesystem::path& folder, std::int64_t number);
+// the dialect id: the flag unless "auto", else .kerf.toml's, else detection from the text;
+std::string choose_dialect(const std::string& flag, const ProjectConfig& config, std::string_view text);
+// the Setup of a machine file, or of the dialect's built-in machine for an empty path (errors on stderr).
+std::optional<interpreter::Setup> setup_for(const std::filesystem::path& machine_file, const dialects::Dialect& dialect);
 
 // FILE, --dialect, --dialect-file, --machine, --lenient.
 void add_dry_run_options(CLI::App& command, DryRunOptions& options);

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     add("explain", kerf::cli::add_explain_command(app));
     add("run", kerf::cli::add_run_command(app));
     add("plot", kerf::cli::add_plot_command(app));
+    add("fmt", kerf::cli::add_fmt_command(app));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
