@@ -33,6 +33,22 @@ constexpr int bom = 0, block_delete = 1, program = 2, sequence = 3, g_code = 4, 
               comma = 8, feed = 9, speed = 10, tool = 11, m_code = 12, eob = 14;
 }
 
+// Inside a rank, axis words go in the control's order and I/J/K/R alphabetically; others keep theirs.
+int subrank(const Token& t, int rank_value) {
+    const std::string_view order = rank_value == rank::axis ? "XYZUVWABC" : rank_value == rank::arc ? "IJKR" : "";
+    const std::size_t at = order.find(t.letter);
+    return at == std::string_view::npos ? static_cast<int>(order.size()) : static_cast<int>(at);
+}
+
+int rank_of(const Token& t);
+
+// The sort key of a piece: its rank, then its subrank.
+constexpr int key_of(int rank, int subrank = 0) { return rank * 16 + subrank; }
+int order_key(const Token& t) {
+    const int r = rank_of(t);
+    return key_of(r, subrank(t, r));
+}
+
 int rank_of(const Token& t) {
     switch (t.kind) {
         case TokenKind::bom:
@@ -124,6 +140,7 @@ private:
     std::string& out_;
     std::vector<Piece> pieces_;
     std::vector<std::uint32_t> slots_;   // reused by reorder()
+    std::vector<Piece> words_;
     int blank_run_ = 0;
     bool line_start_ = true;
     std::uint32_t number_token_ = kNewNumber;   // the N word printed with new_number_
@@ -224,14 +241,16 @@ private:
                 number_token_ = i;
                 new_number_ = planned->second;
             }
-            pieces_.push_back({i, t.kind == TokenKind::comment ? -1 : rank_of(t)});
+            pieces_.push_back({i, t.kind == TokenKind::comment ? -1 : order_key(t)});
         }
         if (renumbered && !number_seen && planned->second != Renumbering::kRemove) {
             new_number_ = planned->second;
-            const auto at = std::find_if(pieces_.begin(), pieces_.end(), [](const Piece& p) { return p.rank > rank::block_delete; });
-            pieces_.insert(at, Piece{kNewNumber, rank::sequence});
+            // The new N goes first, after a '%', a byte order mark or a block delete.
+            const auto at = std::find_if(pieces_.begin(), pieces_.end(),
+                                         [](const Piece& p) { return p.rank < 0 || p.rank >= key_of(rank::program); });
+            pieces_.insert(at, Piece{kNewNumber, key_of(rank::sequence)});
         }
-        if (wants_eob(block)) pieces_.push_back({kNewEob, rank::eob});
+        if (wants_eob(block)) pieces_.push_back({kNewEob, key_of(rank::eob)});
         if (style_.word_order == WordOrder::canonical && reorderable(b)) reorder();
     }
 
@@ -253,23 +272,28 @@ private:
     // Word order matters in blocks with macro statements, and for G65/G66 arguments (argument
     // specification II counts repeated I J K in order; dialects.md §3.7).
     bool reorderable(std::size_t b) const {
-        for (const Token& t : tree_.block_tokens(b))
+        for (const Token& t : tree_.block_tokens(b)) {
             if (t.kind == TokenKind::statement || t.kind == TokenKind::error) return false;
-        return !file_.block(b).macro_call().has_value();
+            if (t.kind != TokenKind::word || t.role() != Role::g_code || !t.is_number()) continue;
+            const auto key = dialects::code_key(tree_.number_value(t));
+            const dialects::CodeInfo* info = key ? file_.dialect().fast_code('G', *key) : nullptr;
+            if (info && (info->binder_traits & dialects::CodeInfo::kTakesArguments)) return false;
+        }
+        return true;
     }
 
     // Comments keep their slots; the other pieces fill the remaining slots in rank order (stable:
     // two G codes of one group keep their order, the last wins; semantics.md §1.1).
     void reorder() {
         slots_.clear();
-        std::vector<Piece> words;
+        words_.clear();
         for (std::uint32_t i = 0; i < pieces_.size(); ++i) {
             if (pieces_[i].rank < 0) continue;
             slots_.push_back(i);
-            words.push_back(pieces_[i]);
+            words_.push_back(pieces_[i]);
         }
-        std::stable_sort(words.begin(), words.end(), [](const Piece& a, const Piece& b) { return a.rank < b.rank; });
-        for (std::size_t k = 0; k < slots_.size(); ++k) pieces_[slots_[k]] = words[k];
+        std::stable_sort(words_.begin(), words_.end(), [](const Piece& a, const Piece& b) { return a.rank < b.rank; });
+        for (std::size_t k = 0; k < slots_.size(); ++k) pieces_[slots_[k]] = words_[k];
     }
 
     void print_pieces() {
