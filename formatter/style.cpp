@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <tuple>
 #include <charconv>
 #include <toml++/toml.h>
 
@@ -134,6 +136,9 @@ StyleResult style_from_toml(std::string_view toml_text, std::string_view source_
         else error = o->set(r.style, o->info.values, *value);
         if (error) r.errors.push_back({fmt::format("{}: format.{}: {}", source_name, key.str(), *error), line, column});
     }
+    // In the order of the file (a TOML table iterates by key).
+    std::sort(r.errors.begin(), r.errors.end(),
+              [](const StyleError& a, const StyleError& b) { return std::tie(a.line, a.column) < std::tie(b.line, b.column); });
     return r;
 }
 
