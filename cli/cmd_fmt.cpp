@@ -114,14 +114,14 @@ bool report_syntax_errors(const std::string& name, const ast::SyntaxTree& tree, 
     return true;
 }
 
-void verify_result(const std::string& name, const std::string& text, const dialects::Dialect& dialect,
+void verify_result(const std::string& name, std::string text, const dialects::Dialect& dialect,
                    const interpreter::Setup& setup, FileResult& r) {
     formatter::VerifyOptions v;
     v.dialect = &dialect;
     v.setup = setup;
     const fs::path folder = fs::path(name).parent_path();
     v.loader = [folder](std::int64_t n) { return load_from_folder(folder, n); };
-    const formatter::VerifyResult result = formatter::verify(name, text, *r.formatted, v);
+    const formatter::VerifyResult result = formatter::verify(name, std::move(text), *r.formatted, v);
     if (!result.difference) return;
     const formatter::Difference& d = *result.difference;
     r.messages += fmt::format(
@@ -129,6 +129,23 @@ void verify_result(const std::string& name, const std::string& text, const diale
         "the file is left as it is (a kerf bug: please report it with the file)\n",
         name, d.input_line, d.event, d.output_line, d.what);
     r.formatted.reset();
+}
+
+// Parses, refuses a text with syntax errors, formats; fills r.formatted and r.changed.
+void format_tree(const std::string& name, std::string text, const dialects::Dialect& dialect, const formatter::Style& style,
+                 const interpreter::Setup& setup, FileResult& r) {
+    ast::SyntaxTree tree = grammar::parse(std::move(text), dialect.lexical);
+    const ast::TypedFile typed = ast::TypedFile::bind(tree, dialect);
+    const ast::LineIndex lines(tree.text);
+    if (report_syntax_errors(name, tree, lines, r)) return;
+    formatter::FormatResult f = formatter::format(typed, style, {setup.calculator_decimal});
+    for (const ast::Diagnostic& d : f.diagnostics) r.messages += diagnostic_line(name, lines, d);
+    if (!f.text) {
+        r.messages += fmt::format("{}: not formatted; the file is left as it is\n", name);
+        return;
+    }
+    r.changed = *f.text != tree.text;
+    r.formatted = std::move(f.text);
 }
 
 FileResult format_text(const std::string& name, std::string text, const Project& p, const FmtOptions& o) {
@@ -145,20 +162,10 @@ FileResult format_text(const std::string& name, std::string text, const Project&
         r.io_error = kExitUsage;
         return r;
     }
-    const std::string original = o.verify ? text : std::string();
-    ast::SyntaxTree tree = grammar::parse(std::move(text), dialect->lexical);
-    const ast::TypedFile typed = ast::TypedFile::bind(tree, *dialect);
-    const ast::LineIndex lines(tree.text);
-    if (report_syntax_errors(name, tree, lines, r)) return r;
-    formatter::FormatResult f = formatter::format(typed, p.style, {setup->calculator_decimal});
-    for (const ast::Diagnostic& d : f.diagnostics) r.messages += diagnostic_line(name, lines, d);
-    if (!f.text) {
-        r.messages += fmt::format("{}: not formatted; the file is left as it is\n", name);
-        return r;
-    }
-    r.changed = *f.text != tree.text;
-    r.formatted = std::move(f.text);
-    if (o.verify && r.changed) verify_result(name, original, *dialect, *setup, r);
+    std::string original = o.verify ? text : std::string();
+    format_tree(name, std::move(text), *dialect, p.style, *setup, r);
+    // The tree is gone by now: --verify parses both texts again, and a 100 MB file's tree is 360 MB.
+    if (o.verify && r.changed) verify_result(name, std::move(original), *dialect, *setup, r);
     return r;
 }
 

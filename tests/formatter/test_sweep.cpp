@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <initializer_list>
+#include <utility>
 #include <string>
 
 #include "grammar/detect.hpp"
@@ -19,48 +21,33 @@ using formatter::Style;
 
 namespace {
 
-Style compact_style() {
+// A style from option names and values (formatter::set_option, as .kerf.toml and the flags set them).
+Style style_of(std::initializer_list<std::pair<const char*, const char*>> settings) {
     Style s;
-    s.spacing = formatter::Spacing::compact;
-    s.word_order = formatter::WordOrder::canonical;
-    s.code_digits = formatter::CodeDigits::two;
-    s.decimal_point = formatter::DecimalPoint::add;
-    s.block_end = formatter::BlockEnd::semicolon;
-    s.line_ending = formatter::LineEnding::lf;
-    s.percent = formatter::Percent::ensure;
-    s.program_number = formatter::ProgramNumber::four_digits;
-    s.max_blank_lines = 0;
-    s.comment_inside = formatter::CommentInside::tight;
-    s.comment_gap = formatter::CommentGap::none;
-    s.block_numbers = formatter::BlockNumbers::renumber;
-    s.number_start = 1;   // the CAM files have up to 99 999 blocks (dialects.md §2: N has 5 digits)
-    s.number_step = 1;
+    for (const auto& [key, value] : settings) {
+        INFO(key << " = " << value);
+        REQUIRE_FALSE(formatter::set_option(s, key, value).has_value());
+    }
     return s;
+}
+
+// Everything changed that can be: the CAM files have up to 99 999 blocks, hence 1/1 numbering
+// (dialects.md §2: N has 5 digits).
+Style compact_style() {
+    return style_of({{"spacing", "compact"}, {"word_order", "canonical"}, {"code_digits", "two"}, {"decimal_point", "add"},
+                     {"block_end", "semicolon"}, {"line_ending", "lf"}, {"percent", "ensure"},
+                     {"program_number", "four_digits"}, {"blank_lines", "0"}, {"comment_inside", "tight"},
+                     {"comment_gap", "none"}, {"block_numbers", "renumber"}, {"number_start", "1"}, {"number_step", "1"}});
 }
 
 Style spread_style() {
-    Style s;
-    s.letter_case = formatter::LetterCase::lower;
-    s.word_order = formatter::WordOrder::canonical;
-    s.code_digits = formatter::CodeDigits::minimal;
-    s.block_end = formatter::BlockEnd::none;
-    s.line_ending = formatter::LineEnding::crlf;
-    s.comment_inside = formatter::CommentInside::padded;
-    s.comment_gap = formatter::CommentGap::one;
-    s.block_numbers = formatter::BlockNumbers::referenced;
-    s.number_start = 1;
-    s.number_step = 1;
-    s.max_blank_lines = 2;
-    return s;
+    return style_of({{"letter_case", "lower"}, {"word_order", "canonical"}, {"code_digits", "minimal"},
+                     {"block_end", "none"}, {"line_ending", "crlf"}, {"comment_inside", "padded"}, {"comment_gap", "one"},
+                     {"block_numbers", "referenced"}, {"number_start", "1"}, {"number_step", "1"}, {"blank_lines", "2"}});
 }
 
 Style keep_style() {
-    Style s;
-    s.letter_case = formatter::LetterCase::keep;
-    s.spacing = formatter::Spacing::keep;
-    s.max_blank_lines = -1;
-    s.block_numbers = formatter::BlockNumbers::remove;
-    return s;
+    return style_of({{"letter_case", "keep"}, {"spacing", "keep"}, {"blank_lines", "-1"}, {"block_numbers", "remove"}});
 }
 
 struct Named {
