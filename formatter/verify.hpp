@@ -1,7 +1,9 @@
 // The formatter's proof: the interpreter runs the program before and after formatting and the two
 // traces must be the same event for event — same kinds, codes, tools and texts, positions, centres,
 // lengths, times, feeds and speeds equal to 1e-9 (issue 6, "meaning-preserving"). Events carry
-// source lines, which formatting may move, so sources are not compared.
+// source lines, which formatting may move, so sources are not compared; alarm and call texts quote
+// sequence numbers, which renumbering changes, so their codes are compared instead. Two endless
+// programs are compared up to the first step-limit alarm (blank lines count as steps).
 #pragma once
 
 #include <cstdint>
@@ -28,7 +30,7 @@ struct Difference {
 };
 
 struct VerifyResult {
-    std::size_t events = 0;                 // events of the input's run
+    std::size_t events = 0;                 // events of the input's run that were read
     std::optional<Difference> difference;   // nullopt: the traces are equal
 };
 
