@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <mutex>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -52,6 +53,16 @@ struct Project {
     formatter::Style style;
     fs::path machine_file;
     std::vector<std::string> errors;
+
+    // The machine's Setup for a dialect, read once per dialect (a bad machine file is reported once).
+    std::optional<interpreter::Setup> setup(const dialects::Dialect& dialect) const {
+        std::lock_guard lock(setups_mutex);
+        auto it = setups.find(dialect.id);
+        if (it == setups.end()) it = setups.emplace(dialect.id, setup_for(machine_file, dialect)).first;
+        return it->second;
+    }
+    mutable std::mutex setups_mutex;
+    mutable std::map<std::string, std::optional<interpreter::Setup>> setups;
 };
 
 // [format] of the .kerf.toml (formatter::style_from_toml), then the flags over it.
@@ -73,8 +84,10 @@ void read_style(Project& p, const FmtOptions& o) {
                 p.errors.push_back(fmt::format("--{}: {}", option->get_name().substr(2), *error));
 }
 
-Project make_project(const fs::path& start, const FmtOptions& o) {
-    Project p;
+// Held by pointer: the workers share it, and its setup cache has a mutex.
+std::unique_ptr<Project> make_project(const fs::path& start, const FmtOptions& o) {
+    auto owned = std::make_unique<Project>();
+    Project& p = *owned;
     p.config = find_config(start, p.errors);
     std::vector<fs::path> files(o.dialect_files.begin(), o.dialect_files.end());
     files.insert(files.end(), p.config.dialect_files.begin(), p.config.dialect_files.end());
@@ -82,7 +95,7 @@ Project make_project(const fs::path& start, const FmtOptions& o) {
     p.errors.insert(p.errors.end(), p.dialects.errors.begin(), p.dialects.errors.end());
     p.machine_file = !o.machine_file.empty() ? fs::path(o.machine_file) : p.config.machine_file.value_or(fs::path{});
     read_style(p, o);
-    return p;
+    return owned;
 }
 
 // One file's outcome; printed by the main thread in file order.
@@ -157,7 +170,7 @@ FileResult format_text(const std::string& name, std::string text, const Project&
         r.io_error = kExitUsage;
         return r;
     }
-    const std::optional<interpreter::Setup> setup = setup_for(p.machine_file, *dialect);
+    const std::optional<interpreter::Setup> setup = p.setup(*dialect);
     if (!setup) {
         r.io_error = kExitUsage;
         return r;
@@ -191,7 +204,8 @@ std::optional<std::string> write_atomic(const fs::path& path, const std::string&
 
 int run_stdin(const FmtOptions& o) {
     std::string text(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>{});
-    const Project p = make_project(fs::current_path(), o);
+    const std::unique_ptr<Project> project = make_project(fs::current_path(), o);
+    const Project& p = *project;
     for (const std::string& e : p.errors) std::cerr << "kerf: " << e << "\n";
     if (!p.errors.empty()) return kExitUsage;
     FileResult r = format_text("<stdin>", text, p, o);
@@ -249,7 +263,7 @@ int run_fmt(const FmtOptions& o) {
         const auto key = find_config(sources.files[i], ignored).path;
         auto& slot = projects[key];
         if (!slot) {
-            slot = std::make_unique<Project>(make_project(sources.files[i], o));
+            slot = make_project(sources.files[i], o);
             for (const std::string& e : slot->errors) std::cerr << "kerf: " << e << "\n";
         }
         if (!slot->errors.empty()) return kExitUsage;
