@@ -15,19 +15,6 @@ namespace kerf::cli {
 
 namespace fs = std::filesystem;
 
-// Subprograms not in the file: the same folder, as O1000, O1000.nc or 1000.nc (issue 3).
-std::optional<std::pair<std::string, std::string>> load_from_folder(const fs::path& folder, std::int64_t number) {
-    const std::string o = fmt::format("O{:04}", number);
-    for (const std::string& name : {o, o + ".nc", fmt::format("{:04}.nc", number), fmt::format("{}.nc", number)}) {
-        const fs::path p = folder / name;
-        std::error_code ec;
-        if (!fs::is_regular_file(p, ec)) continue;
-        std::string error;
-        if (auto text = read_file(p, error)) return std::make_pair(p.string(), std::move(*text));
-    }
-    return std::nullopt;
-}
-
 namespace {
 
 // Dialect files from the flags first, then from .kerf.toml.
@@ -36,17 +23,6 @@ std::vector<fs::path> dialect_files(const DryRunOptions& o, const ProjectConfig&
     files.insert(files.end(), config.dialect_files.begin(), config.dialect_files.end());
     return files;
 }
-
-}  // namespace
-
-// --dialect, else .kerf.toml's dialect, else detection from the text.
-std::string choose_dialect(const std::string& flag, const ProjectConfig& config, std::string_view text) {
-    if (flag != "auto") return flag;
-    if (!config.dialect.empty() && config.dialect != "auto") return config.dialect;
-    return grammar::detect_dialect(text).dialect;
-}
-
-namespace {
 
 // LoadError messages start with their source ("<file>: <key>: what is wrong"); printed as
 // file:line:col: error: <key>: what is wrong, the form of every other kerf diagnostic.
@@ -80,18 +56,6 @@ std::optional<machine::Machine> load_machine(const fs::path& file, const dialect
     return m;
 }
 
-}  // namespace
-
-// The Setup: the machine file if one is named, else the dialect's built-in machine.
-std::optional<interpreter::Setup> setup_for(const fs::path& machine_file, const dialects::Dialect& dialect) {
-    if (machine_file.empty()) return interpreter::default_setup(dialect);
-    const std::optional<machine::Machine> m = load_machine(machine_file, dialect);
-    if (!m) return std::nullopt;
-    return interpreter::make_setup(*m);
-}
-
-namespace {
-
 fs::path machine_file(const DryRunOptions& o, const ProjectConfig& config) {
     if (!o.machine_file.empty()) return o.machine_file;
     return config.machine_file.value_or(fs::path{});
@@ -117,6 +81,34 @@ int load_program(DryRun& run, const std::string& file) {
 }
 
 }  // namespace
+
+// Subprograms not in the file: the same folder, as O1000, O1000.nc or 1000.nc (issue 3).
+std::optional<std::pair<std::string, std::string>> load_from_folder(const fs::path& folder, std::int64_t number) {
+    const std::string o = fmt::format("O{:04}", number);
+    for (const std::string& name : {o, o + ".nc", fmt::format("{:04}.nc", number), fmt::format("{}.nc", number)}) {
+        const fs::path p = folder / name;
+        std::error_code ec;
+        if (!fs::is_regular_file(p, ec)) continue;
+        std::string error;
+        if (auto text = read_file(p, error)) return std::make_pair(p.string(), std::move(*text));
+    }
+    return std::nullopt;
+}
+
+// --dialect, else .kerf.toml's dialect, else detection from the text.
+std::string choose_dialect(const std::string& flag, const ProjectConfig& config, std::string_view text) {
+    if (flag != "auto") return flag;
+    if (!config.dialect.empty() && config.dialect != "auto") return config.dialect;
+    return grammar::detect_dialect(text).dialect;
+}
+
+// The Setup: the machine file if one is named, else the dialect's built-in machine.
+std::optional<interpreter::Setup> setup_for(const fs::path& machine_file, const dialects::Dialect& dialect) {
+    if (machine_file.empty()) return interpreter::default_setup(dialect);
+    const std::optional<machine::Machine> m = load_machine(machine_file, dialect);
+    if (!m) return std::nullopt;
+    return interpreter::make_setup(*m);
+}
 
 void add_dry_run_options(CLI::App& command, DryRunOptions& o) {
     command.add_option("file", o.file, "program file")->required();

@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <optional>
+#include <string_view>
 #include <memory>
 #include <optional>
 #include <string>
@@ -25,6 +27,14 @@ struct DryRunOptions {
     std::string machine_file;   // "" = .kerf.toml's `machine`, else the dialect's built-in machine
     bool lenient = false;
 };
+
+// The pieces `kerf fmt --verify` shares with the dry run:
+// subprograms not in the file, from its folder (O1000, O1000.nc, 1000.nc);
+std::optional<std::pair<std::string, std::string>> load_from_folder(const std::filesystem::path& folder, std::int64_t number);
+// the dialect id: the flag unless "auto", else .kerf.toml's, else detection from the text;
+std::string choose_dialect(const std::string& flag, const ProjectConfig& config, std::string_view text);
+// the Setup of a machine file, or of the dialect's built-in machine for an empty path (errors on stderr).
+std::optional<interpreter::Setup> setup_for(const std::filesystem::path& machine_file, const dialects::Dialect& dialect);
 
 // FILE, --dialect, --dialect-file, --machine, --lenient.
 void add_dry_run_options(CLI::App& command, DryRunOptions& options);
@@ -47,14 +57,6 @@ std::variant<std::unique_ptr<DryRun>, int> prepare_dry_run(const DryRunOptions& 
 
 // emit_state: a `state` event after every block (RunOptions::emit_state).
 interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink, bool emit_state = false);
-
-// Pieces `kerf check` shares with the dry run.
-// Subprograms not in the file: the same folder, as O1000, O1000.nc or 1000.nc (issue 3).
-std::optional<std::pair<std::string, std::string>> load_from_folder(const std::filesystem::path& folder, std::int64_t number);
-// `flag` unless "auto", else .kerf.toml's dialect, else detection from the text.
-std::string choose_dialect(const std::string& flag, const ProjectConfig& config, std::string_view text);
-// The machine file's Setup (errors on stderr, nullopt), or the dialect's built-in machine for "".
-std::optional<interpreter::Setup> setup_for(const std::filesystem::path& machine_file, const dialects::Dialect& dialect);
 
 // Alarms on stderr as `file:line: error: alarm N: text`; the exit code: 0 without alarms, 1 with.
 int report_alarms(const DryRun& run, const interpreter::RunResult& result);

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     add("run", kerf::cli::add_run_command(app));
     add("plot", kerf::cli::add_plot_command(app));
     add("check", kerf::cli::add_check_command(app));
+    add("fmt", kerf::cli::add_fmt_command(app));
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

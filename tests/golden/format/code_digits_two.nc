@@ -1,0 +1,6 @@
+G0 X1 (G1 in a comment)
+G1 X2 M8
+M3 S1000
+G65 P9000 M3
+G17 G90 G12.1
+M30
