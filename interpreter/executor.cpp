@@ -53,6 +53,12 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
         if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group] = &c;
     classify_codes();
     update_flags();
+    for (char letter = 'A'; letter <= 'Z'; ++letter) {
+        const auto axis = axis_of_letter(letter);
+        const std::size_t i = static_cast<std::size_t>(letter - 'A');
+        axis_of_[i] = axis ? static_cast<std::int8_t>(*axis) : std::int8_t{-1};
+        if (axis && dialect_.lexical.is_axis(letter)) axis_letters_ |= 1u << i;
+    }
 }
 
 void Executor::update_flags() {
@@ -61,7 +67,7 @@ void Executor::update_flags() {
     f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
     for (const auto& [group, code] : modal_) {
         if (!code) continue;
-        const std::uint8_t c = code_class_of(*code);
+        const std::uint16_t c = code_class_of(*code);
         const bool motion_group = (code->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
         if (motion_group) {
             f.motion = code->function;
@@ -235,7 +241,8 @@ void Executor::execute_block(Frame& frame) {
         }
         return;
     }
-    BlockWords words;
+    BlockWords& words = block_words_;
+    words.clear();
     if (!evaluate_words(view, words)) return;
     const SourceRef where = source(frame, view);
     const bool moved = apply_block_words(frame, view, words);
@@ -262,9 +269,11 @@ void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {
     view.collect_codes(scan_.g, scan_.m);
     scan_.data_letters = 0;
     scan_.macro_call = false;
+    scan_.classes = 0;
     for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
         for (const ast::CodeRef& c : *codes) {
             if (!c.info) continue;
+            scan_.classes |= code_class_of(*c.info);
             scan_.data_letters |= c.info->parameter_mask;
             scan_.macro_call |= (c.info->binder_traits & dialects::CodeInfo::kTakesArguments) != 0;
         }

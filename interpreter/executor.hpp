@@ -58,6 +58,8 @@ public:
     iterator end() const { return {this, 26}; }
     iterator find(char c) const { return count(c) ? iterator(this, c - 'A') : end(); }
     std::size_t count(char c) const { return c >= 'A' && c <= 'Z' && (mask_ >> (c - 'A') & 1u) ? 1 : 0; }
+    std::uint32_t mask() const { return mask_; }   // bit i: letter 'A' + i is present
+    void clear() { mask_ = 0; }                     // the words stay as garbage, unreachable
     const Word& at(char c) const { return words_[static_cast<std::size_t>(c - 'A')]; }
     void set(char c, const Word& w) {
         words_[static_cast<std::size_t>(c - 'A')] = w;
@@ -74,6 +76,10 @@ struct BlockWords {
     LetterMap words;         // the last word of each letter (the analyzer reports duplicates)
     LetterMap incremental;   // U/W/H written for X/Z/C (system A), keyed by the axis
     const Word* get(char letter) const { return words.count(letter) ? &words.at(letter) : nullptr; }
+    void clear() {
+        words.clear();
+        incremental.clear();
+    }
 };
 
 // What the executor reads of a block's tokens, collected once per block (executor.cpp scan_block).
@@ -85,6 +91,7 @@ struct BlockScan {
     bool comma_words = false;
     bool direct_drawing = false;
     bool macro_call = false;          // G65/G66
+    std::uint16_t classes = 0;        // the union of its codes' classes (Executor::kCycleCode ...)
     std::optional<double> sequence;   // N
     std::uint32_t block = 0;          // its index in the file
     SourceRef source;
@@ -170,6 +177,10 @@ private:
     RunResult result_;
 
     BlockScan scan_;             // the block being executed
+    BlockWords block_words_;     // its words (reused: no 1 KB zeroing per block)
+    // Letter → axis index for the dialect's axis letters (axis_letters_: the mask of them).
+    std::array<std::int8_t, 26> axis_of_{};
+    std::uint32_t axis_letters_ = 0;
     mutable std::uint32_t line_hint_ = 0;        // source(): the last line found, per file
     mutable std::uint32_t line_hint_file_ = ~0u;
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
@@ -232,11 +243,12 @@ private:
     static bool is_cycle_function(std::string_view function);
     void classify_codes();
     bool is_cycle(const dialects::CodeInfo& code) const;
-    std::uint8_t code_class_of(const dialects::CodeInfo& code) const;
-    static constexpr std::uint8_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
+    std::uint16_t code_class_of(const dialects::CodeInfo& code) const;
+    static constexpr std::uint16_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
                                   kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
-                                  kPlaneYZCode = 192;   // the plane: two bits
-    std::vector<std::uint8_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
+                                  kPlaneYZCode = 192,   // the plane: two bits
+                                  kOneShotCode = 256;   // group 00 (G04, G10, G28, G53 ...)
+    std::vector<std::uint16_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);

@@ -51,6 +51,7 @@ void Executor::classify_codes() {
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
         // The modal flags update_flags() derives (executor.cpp).
+        if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;
         if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;
         if (f == fn::feed_per_revolution) code_class_[i] |= kPerRevolutionCode;
         if (f == fn::css_on) code_class_[i] |= kCssCode;
@@ -63,7 +64,7 @@ void Executor::classify_codes() {
 
 bool Executor::is_cycle(const dialects::CodeInfo& code) const { return code_class_of(code) & kCycleCode; }
 
-std::uint8_t Executor::code_class_of(const dialects::CodeInfo& code) const {
+std::uint16_t Executor::code_class_of(const dialects::CodeInfo& code) const {
     const auto codes = dialect_.codes();
     const std::size_t i = static_cast<std::size_t>(&code - codes.data());
     return i < code_class_.size() ? code_class_[i] : (is_cycle_function(code.function) ? kCycleCode : 0);
@@ -174,9 +175,11 @@ private:
 
 const dialects::CodeInfo* Executor::cycle_of_block(bool has_axis_words) const {
     const dialects::CodeInfo* cycle = nullptr;
-    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
-        for (const ast::CodeRef& c : *codes)
-            if (c.info && is_cycle(*c.info)) cycle = c.info;
+    if (scan_.classes & kCycleCode) {   // the block names a cycle (most blocks do not)
+        for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+            for (const ast::CodeRef& c : *codes)
+                if (c.info && is_cycle(*c.info)) cycle = c.info;
+    }
     if (cycle || !has_axis_words) return cycle;
     // A block with axis words repeats the modal cycle: G81 X Y a new hole, G90 X a new pass.
     return flags_.motion_cycle ? flags_.motion_cycle : flags_.modal_cycle;

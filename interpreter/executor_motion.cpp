@@ -1,6 +1,8 @@
 // Steps 7-9 of a block: motion, dwell, M codes (with calls and returns).
 #include <fmt/format.h>
 
+#include <bit>
+
 #include <algorithm>
 #include <cmath>
 
@@ -50,10 +52,13 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
     const Position start = to_program(position_);
     Position to = start;
     moves = false;
-    for (const auto& [letter, w] : words.words) {
-        const auto axis = axis_of_letter(letter);
-        if (!axis || !dialect_.lexical.is_axis(letter) || w.data) continue;
-        const std::size_t a = static_cast<std::size_t>(*axis);
+    // Only the letters that are axes of the dialect (a table built once: this runs every block).
+    for (std::uint32_t mask = words.words.mask() & axis_letters_; mask != 0; mask &= mask - 1) {
+        const int i = std::countr_zero(mask);
+        const char letter = static_cast<char>('A' + i);
+        const Word& w = words.words.at(letter);
+        if (w.data) continue;
+        const std::size_t a = static_cast<std::size_t>(axis_of_[static_cast<std::size_t>(i)]);
         const double v = axis_value(w, letter);
         to[a] = flags_.incremental ? to[a] + v : v;
         moves = true;
@@ -197,7 +202,7 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
 }
 
 void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) {
-    if (!has_function(view, fn::dwell)) return;
+    if (!(scan_.classes & kOneShotCode) || !has_function(view, fn::dwell)) return;
     // X and U in seconds, P in milliseconds (ADV400: P in seconds); `G4 F1` seconds with the
     // machine's dwell_f_word switch (semantics.md §8.2, §12.15).
     double seconds = 0;

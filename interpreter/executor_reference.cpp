@@ -23,6 +23,7 @@ bool programmed(const BlockWords& words, std::size_t axis) {
 
 // nullopt: the block has none of these codes; otherwise whether the tool moved.
 std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view, const BlockWords& words) {
+    if (!(scan_.classes & kOneShotCode)) return std::nullopt;   // the common block: no group-00 code
     const Frame& f = *frame_;
     const bool g53 = has_function(view, fn::machine_coordinate_select) || has_function(view, fn::machine_coordinate_select_g0_g1);
     const bool g28 = has_function(view, fn::reference_return);

@@ -26,7 +26,7 @@
 namespace kerf::interpreter {
 
 struct StreamOptions {
-    std::size_t piece_bytes = std::size_t{1} << 20;   // lines are not cut: a piece ends at a line end
+    std::size_t piece_bytes = std::size_t{256} << 10;   // lines are not cut: a piece ends at a line end
     std::size_t pieces_held = 4;                      // besides the pinned one
     // Parse the pieces ahead of the run on a second thread (the run on one core, the grammar on
     // the other); the pieces and every event are the same either way.
