@@ -47,6 +47,7 @@ struct DrillModal {
     double dwell_s = 0;         // P at the bottom
     double r_dwell_s = 0;       // ADV400 G84 Q: dwell at the R level after the exit (cycles.md §11.2)
     double shift = 0;           // G76 fine boring Q
+    std::optional<int> clamp;   // lathe: the C-axis clamp M code, kept for the repeat blocks [inference]
 };
 
 struct Profile {

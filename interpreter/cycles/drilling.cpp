@@ -241,7 +241,12 @@ bool drilling(Context& ctx) {
     Hole h{*form, m.start[form->axis], m.r_level, m.bottom, m.peck, 0, s.high_speed_retract * k, s.peck_clearance * k,
            m.dwell_s, m.r_dwell_s, m.shift, ctx.return_to_r_level(), s.tapping_reverses, std::nullopt};
     h.first_peck_only = !ctx.takes('Q') && s.adv400_k_first_peck_only;
-    if (form->lathe) h.clamp = ctx.m_word();
+    // The clamp M of the first block holds for the holes of later C-only blocks too (§10 alternative
+    // program: "G83 ... M20" then "C90" [inference]; FANUC issues M and M+1 per hole).
+    if (form->lathe) {
+        if (const auto clamp = ctx.m_word()) m.clamp = clamp;
+        h.clamp = m.clamp;
+    }
     const Positions where = positions(ctx, *form);
     const long count = repeats(ctx, *form);
     for (long i = 0; i < count; ++i) {

@@ -213,12 +213,18 @@ TEST_CASE("lathe G87 side drilling pecks along X in radius steps") {
 }
 
 // Lathe G83 without H: a block with only C repeats the cycle at that C (§10 alternative program);
-// no Q: one feed to the bottom. R−1 from the initial Z2 → R level Z1.
+// no Q: one feed to the bottom. R−1 from the initial Z2 → R level Z1. The clamp M20 of the cycle
+// block clamps the repeat hole too (M20 before, M21 after) [inference, cycles.md §10].
 TEST_CASE("lathe G83 repeats on a C block; no Q is one feed") {
-    const Run r = run_bare("O1\nG98\nG0 X90. Z2. C0\nG83 Z-10. R-1. F80\nC90.\nG80\nM30\n", "fanuc-lathe-a");
+    const Run r = run_bare("O1\nG98\nG0 X90. Z2. C0\nG83 Z-10. R-1. M20 F80\nC90.\nG80\nM30\n", "fanuc-lathe-a");
     require_clean(r);
     check_path3(r, 4, kXZC, {rapid3(90, 1, 0), feed3(90, -10, 0), rapid3(90, 2, 0)});
     check_path3(r, 5, kXZC, {rapid3(90, 2, 90), rapid3(90, 1, 90), feed3(90, -10, 90), rapid3(90, 2, 90)});
+    for (const std::uint32_t line : {4u, 5u}) {
+        std::vector<int> m_codes;
+        for (const Event& e : texts_of_line(r, line, EventKind::message)) m_codes.push_back(e.code);
+        CHECK(m_codes == std::vector<int>{20, 21});
+    }
 }
 
 // System B/C: G98/G99 are the return levels (gcode-tables.md §3): G99 stays at R1; system A has no
