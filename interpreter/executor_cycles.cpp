@@ -81,6 +81,17 @@ public:
     std::string_view function() const override { return code_.function; }
     std::string spelling() const override { return code_.spelling; }
     bool has(char letter) const override { return words_.get(letter) != nullptr; }
+    bool takes(char letter) const override { return code_.takes_word(std::string_view(&letter, 1)); }
+    std::optional<double> increment(char axis) const override {
+        if (!words_.incremental.count(axis)) return std::nullopt;
+        return ex_.axis_value(words_.incremental.at(axis), axis);
+    }
+    std::optional<int> m_word() const override {
+        if (const auto* w = words_.get('M')) return static_cast<int>(std::lround(w->value));   // a parameter M (G384)
+        for (const ast::CodeRef& c : ex_.scan_.m)
+            if (c.key) return static_cast<int>(*c.key / 10);
+        return std::nullopt;
+    }
     std::optional<double> raw(char letter) const override {
         const auto* w = words_.get(letter);
         return w ? std::optional<double>(w->value) : std::nullopt;
@@ -124,6 +135,7 @@ public:
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
     cycles::SingleCycleModal& single_cycle() override { return ex_.single_cycle_; }
+    cycles::DrillModal& drill() override { return ex_.drill_modal_; }
     std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, code_.spelling, p, q); }
 
     bool rapid(const Position& to) override { return move(EventKind::rapid, to); }
@@ -204,6 +216,26 @@ bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, 
         cycle_profile_blocks_->first >= frame->block)
         frame->block = cycle_profile_blocks_->last + 1;
     return true;
+}
+
+void Executor::cancel_cycle_by_motion_code() {
+    if (flags_.modal_cycle) {
+        bool motion = false, cycle = false;
+        for (const ast::CodeRef& c : scan_.g) {
+            if (!c.info) continue;
+            motion |= (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
+            cycle |= is_cycle(*c.info);
+        }
+        if (motion && !cycle) {
+            const std::string group = flags_.modal_cycle->group;
+            const dialects::CodeInfo* cancel = nullptr;
+            for (const dialects::CodeInfo& c : dialect_.codes())
+                if (c.group == group && c.function == fn::canned_cycle_cancel) cancel = &c;
+            modal_[group] = cancel;
+            update_flags();
+        }
+    }
+    if (!flags_.modal_cycle) drill_modal_.active = false;
 }
 
 // --- profile blocks -----------------------------------------------------------------------------

@@ -126,6 +126,7 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
         }
     }
     if (changed) update_flags();
+    cancel_cycle_by_motion_code();   // drilling cycles (executor_cycles.cpp)
 }
 
 // What #4102..#4120 read: the last B D E F H M N O S T (FANUC "modal information").

@@ -122,6 +122,7 @@ struct Switches {
     G76Infeed g76_infeed = G76Infeed::flank;                  // cycles.md §7 step 3, §21.4
     double thread_chamfer = 1.0;                              // × lead; G92/M23 run-out (cycles.md §8.2, parameter 5130) [inference]
     double peck_clearance = 0.5;                              // mm; G83/G87 re-approach (cycles.md §10) [inference]
+    double high_speed_retract = 0.1;                          // mm; G73 retract d ([FANUC] parameter 5114)
     double homing_feed = 0;                                   // mm/min, 0 = rapid; ADV400 G74 (cycles.md §11.4)
     SixDigitWord adv400_g76_mra = SixDigitWord::p;            // cycles.md §7, §21.6
     Adv400G83K adv400_g83_k = Adv400G83K::peck;               // cycles.md §11.3, §21.7

@@ -222,6 +222,9 @@ std::vector<SwitchDef> make_defs() {
                        "G92 / M23 thread run-out length in leads"));
     d.push_back(number("peck_clearance", &S::peck_clearance, 0, 100, "cycles.md §10 ('default e.g. 0.1–1 mm')",
                        "mm above the previous depth where G83/G87 (and ADV400 G83) switch from rapid to feed"));
+    d.push_back(number("high_speed_retract", &S::high_speed_retract, 0, 100,
+                       "[FANUC] parameter 5114 (cycles.md §11 names G73 without its d)",
+                       "mm the mill G73 high-speed peck cycle retracts after each peck"));
     d.push_back(number("homing_feed", &S::homing_feed, 0, 1e6, "cycles.md §11.4 ('configurable homing feed')",
                        "mm/min of the ADV400 G74 homing move; 0 = rapid"));
     d.push_back(choice<SixDigitWord>("adv400_g76_mra", &S::adv400_g76_mra,

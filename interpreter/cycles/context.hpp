@@ -34,6 +34,22 @@ struct SingleCycleModal {
     double r = 0;
 };
 
+// The modal data of a drilling cycle (cycles.md §10, §11; [FANUC] canned cycles): the levels and
+// words a later block with only a new hole position reuses until G80 or a group-01 code cancels
+// the cycle mode (Executor::cancel_cycle_by_motion_code resets `active`).
+struct DrillModal {
+    bool active = false;        // a drilling cycle ran since the last cancel
+    Position start{};           // where the tool was when the cycle mode began: the initial level
+    double r_level = 0;         // absolute, on the drilling axis (program units)
+    double bottom = 0;          // absolute hole bottom
+    bool has_bottom = false;
+    double peck = 0;            // Q (K on ADV400 G83), mm along the axis; 0 = one feed
+    double dwell_s = 0;         // P at the bottom
+    double r_dwell_s = 0;       // ADV400 G84 Q: dwell at the R level after the exit (cycles.md §11.2)
+    double shift = 0;           // G76 fine boring Q
+    std::optional<int> clamp;   // lathe: the C-axis clamp M code, kept for the repeat blocks [inference]
+};
+
 struct Profile {
     Position start{};                       // the cycle start point A
     std::vector<ProfileMove> moves;         // ns … nf in order; moves[0] is A → A′
@@ -48,6 +64,9 @@ public:
     virtual std::string_view function() const = 0;         // function id (docs/functions.md)
     virtual std::string spelling() const = 0;              // "G71", for messages
     virtual bool has(char letter) const = 0;
+    virtual bool takes(char letter) const = 0;             // the code's word list names `letter` (dialect table)
+    virtual std::optional<double> increment(char axis) const = 0;   // U/W/H written for X/Z/C (system A), mm/deg
+    virtual std::optional<int> m_word() const = 0;         // the block's M code (G83 M20: the C-axis clamp, §10)
     virtual std::optional<double> raw(char letter) const = 0;   // the value as written (P100 = 100)
     virtual std::optional<double> mm(char letter) const = 0;    // a distance (no point: increments, §0)
     virtual std::optional<double> pq(char letter) const = 0;    // P/Q of G74–G76/G83/G87 (§0)
@@ -65,6 +84,7 @@ public:
     virtual const Settings& settings() const = 0;
     virtual Parameters& parameters() = 0;                  // persistent across the run (§0)
     virtual SingleCycleModal& single_cycle() = 0;          // G90/G92/G94 values for repeat blocks
+    virtual DrillModal& drill() = 0;                       // drilling cycle values for repeat blocks
 
     // Profile N P .. N Q of the current program; nullopt after an alarm (not found, bad block).
     virtual std::optional<Profile> profile(double p, double q) = 0;
@@ -89,6 +109,8 @@ void lathe_profile(Context& ctx);   // G70–G73, cycles.md §1–§4 (lathe_pro
 void lathe_peck(Context& ctx);      // G74/G75, §5–§6 (lathe_peck.cpp)
 void lathe_thread(Context& ctx);    // G76, G92 (lathe_thread.cpp)
 void lathe_single(Context& ctx);    // G90/G94, §8 (lathe_single.cpp)
+bool drilling(Context& ctx);        // mill G73–G89, lathe G83–G89, ADV400 G81/G83/G84, §10–§11 (drilling.cpp);
+                                    // false when the function is no drilling cycle
 
 // The end point and R of a single cycle block: a repeat block takes the coordinate it omits and R
 // from the last cycle (lathe_single.cpp).

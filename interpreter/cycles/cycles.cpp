@@ -19,7 +19,7 @@ bool expand(Context& ctx) {
     else if (f == fn::turning_cycle || f == fn::facing_cycle)
         lathe_single(ctx);
     else
-        return false;
+        return drilling(ctx);
     return true;
 }
 

@@ -68,6 +68,7 @@ const std::vector<Expectation>& expectations() {
         {"g76_infeed", "flank", "flank", {}},                            // cycles.md §7
         {"thread_chamfer", "1", "1", {}},                                // cycles.md §8.2
         {"peck_clearance", "0.5", "0.5", {}},                            // cycles.md §10
+        {"high_speed_retract", "0.1", "0.1", {}},                        // [FANUC] parameter 5114 (G73 d)
         {"homing_feed", "0", "0", {}},                                   // cycles.md §11.4
         {"adv400_g76_mra", "P", "P", {}},                                // cycles.md §21.6
         {"adv400_g83_k", "peck", "peck", {}},                            // cycles.md §21.7
