@@ -232,8 +232,9 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
         if (block.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
         view_ = nullptr;
         scan_block(f, block);
+        scan_.block = b;
         view_ = &block;
-        ok = read_profile_block(block, motion, profile);
+        ok = read_profile_block(block, motion, profile, *last);
     }
     scan_ = saved_scan;
     position_ = saved_position;
@@ -245,14 +246,17 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
 
 // One profile block: its end point from the running profile point, G00/G01/G02/G03 (modal within
 // the profile), the arc's centre and sweep, its F (G70, cycles.md §1). Blocks without an end point
-// (a direct-drawing angle alone) add no move: the programmed points are the profile.
-bool Executor::read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile) {
+// with direct-drawing words go through the same resolver as a running program
+// (executor_drawing.cpp), so a profile's corners are those of semantics.md §10.
+bool Executor::read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile,
+                                  std::uint32_t last) {
     BlockWords words;
     if (!evaluate_words(block, words)) return false;
     for (const ast::CodeRef& c : scan_.g)
         if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) motion = c.info->function;
     bool moves = false;
     const Position to = target_position(words, moves);
+    if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(block, words, to, profile, last);
     if (!moves) return true;
     cycles::ProfileMove m;
     m.end = to;
@@ -274,6 +278,27 @@ bool Executor::read_profile_block(const ast::BlockView& block, std::string_view&
     }
     profile.moves.push_back(m);
     position_ = to;
+    return true;
+}
+
+// A direct-drawing block of a profile: the resolver's lines and fillet arcs, from the end of the
+// last profile move (past a corner) and the programmed point position_.
+bool Executor::read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
+                                    cycles::Profile& profile, std::uint32_t last) {
+    const Position tool = profile.moves.empty() ? profile.start : profile.moves.back().end;
+    const auto r = resolve_drawing(block, words, position_, tool, to, last);
+    if (!r) return false;
+    for (const drawing::Move& piece : r->moves) {
+        cycles::ProfileMove m;
+        m.end = plane_position(piece.end, to);
+        m.kind = !piece.arc ? EventKind::linear : piece.sweep < 0 ? EventKind::arc_cw : EventKind::arc_ccw;
+        m.center = plane_position(piece.center, to);
+        m.sweep = piece.sweep;
+        if (const auto* w = words.get('F'); w && !w->data) m.feed = w->value;
+        m.x_word = m.z_word = true;   // a drawn line moves both axes in general
+        profile.moves.push_back(m);
+    }
+    position_ = plane_position(r->end, to);
     return true;
 }
 
@@ -304,9 +329,10 @@ void Executor::note_path_changers(const ast::BlockView& view) {
             emit(e);
         }
     }
-    if (scan_.comma_words || scan_.direct_drawing) {
+    if (drawing_words(view)) {
+        // Direct drawing is a G01 feature (semantics.md §10.1); G01 blocks never come here.
         Event e = event_at(EventKind::message, *frame_, view);
-        e.text = "direct drawing (,A ,C ,R or plain A R) is not expanded yet (next issue): the block runs to its programmed end point";
+        e.text = "direct drawing (,A ,C ,R) in a block that is not G01: the words are ignored (semantics.md §10.1)";
         emit(e);
     }
 }
