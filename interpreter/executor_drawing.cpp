@@ -63,7 +63,11 @@ drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWo
         if (token.letter == 'A') b.angle = value;
         if (token.letter == 'C') b.corner = drawing::CornerKind::chamfer;
         if (token.letter == 'R') b.corner = drawing::CornerKind::fillet;
-        if (token.letter == 'C' || token.letter == 'R') b.corner_size = value * unit_scale();
+        // A corner size is a distance: without a decimal point it counts least input increments
+        // like an axis word (dialects.md §2); the angle is in degrees.
+        const bool point = token.has(ast::token_flags::has_point) || token.has(ast::token_flags::value_expr);
+        const double mm = point || setup_.calculator_decimal ? value : value * setup_.increment_mm;
+        if (token.letter == 'C' || token.letter == 'R') b.corner_size = mm * unit_scale();
     }
     b.moves = b.named() || b.angle.has_value();
     return b;
@@ -83,7 +87,8 @@ std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::opt
         view_ = nullptr;
         scan_block(f, next);
         view_ = &next;
-        std::string_view motion = flags_.motion;
+        // The chain is G01 (only G01 blocks are drawn): the next block is G01 unless it says otherwise.
+        std::string_view motion = fn::linear;
         for (const ast::CodeRef& c : scan_.g)
             if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) motion = c.info->function;
         BlockWords words;
