@@ -238,6 +238,7 @@ private:
                                   kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
                                   kPlaneYZCode = 192;   // the plane: two bits
     std::vector<std::uint8_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
+    std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
     void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
@@ -323,6 +324,13 @@ private:
     // A G01 block with direct-drawing words, run: its line, chamfer or fillet (executor_drawing.cpp).
     bool draw_block(const ast::BlockView& view, const BlockWords& words, const Position& start, const Position& to);
     Position programmed_target(const BlockWords& words, bool& moves);   // target_position from programmed_
+    // --- G45–G48 position offsets (executor_offsets.cpp, semantics.md §9.3) ----------------------
+    std::optional<int> position_offset_factor() const;   // ±1 / ±2 when the block has G45–G48
+    double d_register() const;                             // the modal D's value, program units
+    bool position_offset_move(const ast::BlockView& view, const BlockWords& words, int factor, const Position& start,
+                              const Position& to);
+    bool position_offset_arc(const ast::BlockView& view, const BlockWords& words, bool cw, double change,
+                             const Position& start, const Position& to);
     bool drawing_words(const ast::BlockView& view) const { return scan_.comma_words || scan_.direct_drawing; }
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;

@@ -11,6 +11,7 @@
 #include <iterator>
 
 #include "dialects/functions.hpp"
+#include "interpreter/compensation/position_offset.hpp"
 #include "interpreter/executor.hpp"
 
 namespace kerf::interpreter {
@@ -27,8 +28,7 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "tailsto
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
     "radius-comp-left", "radius-comp-right", "polar-interpolation-on", "cylindrical-interpolation",
-    "position-offset-increase", "position-offset-decrease", "position-offset-double-increase",
-    "position-offset-double-decrease", "corner-slowdown", "arc-approach", "arc-exit",
+    "corner-slowdown", "arc-approach", "arc-exit",
     "tool-length-comp-plus", "tool-length-comp-minus", "polar-coordinate-command", "scaling", "mirror",
 };
 
@@ -45,9 +45,11 @@ bool Executor::is_cycle_function(std::string_view f) {
 void Executor::classify_codes() {
     const auto codes = dialect_.codes();
     code_class_.assign(codes.size(), 0);
+    position_offset_.assign(codes.size(), 0);
     for (std::size_t i = 0; i < codes.size(); ++i) {
         const std::string_view f = codes[i].function;
         if (is_cycle_function(f)) code_class_[i] |= kCycleCode;
+        position_offset_[i] = static_cast<std::int8_t>(compensation::position_offset_factor(f).value_or(0));
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
         // The modal flags update_flags() derives (executor.cpp).

@@ -171,6 +171,8 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
     if (apply_cycle(view, words, moves, to)) return false;
     if (drawing_words(view) && flags_.motion == fn::linear) return draw_block(view, words, programmed_.value_or(position_), to);
+    if (const auto factor = position_offset_factor(); factor && moves)
+        return position_offset_move(view, words, *factor, programmed_.value_or(position_), to);
     if (moves) programmed_.reset();
     note_path_changers(view);
     const std::string_view motion = flags_.motion;
