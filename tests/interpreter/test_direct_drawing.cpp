@@ -170,22 +170,21 @@ TEST_CASE("direct drawing on a mill (fanuc-mill G17): ,R between two lines") {
 // The alarms of §10.1 ("a missing intersection or a corner larger than the adjacent segments is
 // an error"), with FANUC's numbers.
 TEST_CASE("direct drawing alarms: parallel lines, corners that do not fit, a bad next block") {
-    SECTION("parallel: an angle-only line at 180° and a next line at 180° never meet (057)") {
-        require_alarm(run("O1\nG99 F0.1\nG0 X20. Z0.\nG1 ,A180\nX30. Z-20. ,A180\nM30\n", "fanuc-lathe-a"), 57);
-    }
-    SECTION("a chamfer longer than the line before it (055)") {
-        require_alarm(run("O1\nG99 F0.1\nG0 X20. Z0.\nG1 Z-2. ,C5.\nX40.\nM30\n", "fanuc-lathe-a"), 55);
-    }
-    SECTION("a fillet longer than the line after it (055)") {
-        require_alarm(run("O1\nG99 F0.1\nG0 X20. Z0.\nG1 Z-20. ,R5.\nX22.\nM30\n", "fanuc-lathe-a"), 55);
-    }
-    SECTION("an angle-only block followed by a block without an angle (056)") {
-        require_alarm(run("O1\nG99 F0.1\nG0 X20. Z0.\nG1 ,A150\nX30. Z-20.\nM30\n", "fanuc-lathe-a"), 56);
-    }
-    SECTION("a corner followed by a rapid (052)") {
-        require_alarm(run("O1\nG99 F0.1\nG0 X20. Z0.\nG1 Z-20. ,C1.\nG0 X40.\nM30\n", "fanuc-lathe-a"), 52);
-    }
-    SECTION("a corner at the end of the program (051)") {
-        require_alarm(run("O1\nG99 F0.1\nG0 X20. Z0.\nG1 Z-20. ,C1.\n", "fanuc-lathe-a"), 51);
+    struct Case {
+        const char* what;
+        const char* blocks;   // after G0 X20. Z0. (r10 Z0)
+        int alarm;
+    };
+    const Case cases[] = {
+        {"parallel: an angle-only line at 180° and a next line at 180° never meet", "G1 ,A180\nX30. Z-20. ,A180\n", 57},
+        {"a chamfer of 5 on a line of 2", "G1 Z-2. ,C5.\nX40.\n", 55},
+        {"a fillet of 5 (setback 5 at 90°) before a line of 1 (X20 -> X22 is r10 -> r11)", "G1 Z-20. ,R5.\nX22.\n", 55},
+        {"an angle-only block followed by a block without an angle", "G1 ,A150\nX30. Z-20.\n", 56},
+        {"a corner followed by a rapid", "G1 Z-20. ,C1.\nG0 X40.\n", 52},
+        {"a corner followed by a block without a move (M30)", "G1 Z-20. ,C1.\n", 51},
+    };
+    for (const Case& c : cases) {
+        INFO(c.what);
+        require_alarm(run(std::string("O1\nG99 F0.1\nG0 X20. Z0.\n") + c.blocks + "M30\n", "fanuc-lathe-a"), c.alarm);
     }
 }
