@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "interpreter/cycles/context.hpp"
+#include "interpreter/direct_drawing.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/macro/evaluate.hpp"
 #include "interpreter/macro/variables.hpp"
@@ -249,6 +250,7 @@ private:
                                   kPlaneYZCode = 192,   // the plane: two bits
                                   kOneShotCode = 256;   // group 00 (G04, G10, G28, G53 ...)
     std::vector<std::uint16_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
+    std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
     void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
@@ -315,8 +317,37 @@ private:
     bool apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to);
     const dialects::CodeInfo* cycle_of_block(bool has_axis_words) const;
     std::optional<cycles::Profile> cycle_profile(const ast::BlockView& view, std::string_view spelling, double p, double q);
-    bool read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile);
+    bool read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile, std::uint32_t last);
+    bool read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
+                              cycles::Profile& profile, std::uint32_t last);
     bool cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view);
+    // --- direct drawing (executor_drawing.cpp; the resolver is direct_drawing.hpp) ---------------
+    // The programmed point when the tool stands elsewhere (past a corner of direct drawing): the
+    // next block's coordinates are measured from it (semantics.md §10.1).
+    std::optional<Position> programmed_;
+    motion::P2 plane_point(const Position& p) const;
+    Position plane_position(motion::P2 p, const Position& like) const;
+    // The resolver's view of a block whose words are `words`, programmed from `start` to `to`.
+    drawing::Block drawing_block(const ast::BlockView& view, const BlockWords& words, bool linear, const Position& start,
+                                 const Position& to);
+    // The next code block after block `after` (up to block `last` when given) as the resolver
+    // sees it, programmed from `from`; nullopt when there is none. Restores the running scan.
+    std::optional<drawing::Block> look_ahead(std::uint32_t after, std::optional<std::uint32_t> last, const Position& from);
+    // The moves of a direct-drawing block from the programmed point `start` (the tool at `tool`);
+    // nullopt after an alarm. `last`: the end of a cycle profile the look-ahead stays in.
+    std::optional<drawing::Result> resolve_drawing(const ast::BlockView& view, const BlockWords& words, const Position& start,
+                                                   const Position& tool, const Position& to, std::optional<std::uint32_t> last);
+    // A G01 block with direct-drawing words, run: its line, chamfer or fillet (executor_drawing.cpp).
+    bool draw_block(const ast::BlockView& view, const BlockWords& words, const Position& start, const Position& to);
+    Position programmed_target(const BlockWords& words, bool& moves);   // target_position from programmed_
+    // --- G45–G48 position offsets (executor_offsets.cpp, semantics.md §9.3) ----------------------
+    std::optional<int> position_offset_factor() const;   // ±1 / ±2 when the block has G45–G48
+    double d_register() const;                             // the modal D's value, program units
+    bool position_offset_move(const ast::BlockView& view, const BlockWords& words, int factor, const Position& start,
+                              const Position& to);
+    bool position_offset_arc(const ast::BlockView& view, const BlockWords& words, bool cw, double change,
+                             const Position& start, const Position& to);
+    bool drawing_words(const ast::BlockView& view) const { return scan_.comma_words || scan_.direct_drawing; }
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);

@@ -11,6 +11,7 @@
 #include <iterator>
 
 #include "dialects/functions.hpp"
+#include "interpreter/compensation/position_offset.hpp"
 #include "interpreter/executor.hpp"
 
 namespace kerf::interpreter {
@@ -27,8 +28,7 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "tailsto
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
     "radius-comp-left", "radius-comp-right", "polar-interpolation-on", "cylindrical-interpolation",
-    "position-offset-increase", "position-offset-decrease", "position-offset-double-increase",
-    "position-offset-double-decrease", "corner-slowdown", "arc-approach", "arc-exit",
+    "corner-slowdown", "arc-approach", "arc-exit",
     "tool-length-comp-plus", "tool-length-comp-minus", "polar-coordinate-command", "scaling", "mirror",
 };
 
@@ -45,9 +45,11 @@ bool Executor::is_cycle_function(std::string_view f) {
 void Executor::classify_codes() {
     const auto codes = dialect_.codes();
     code_class_.assign(codes.size(), 0);
+    position_offset_.assign(codes.size(), 0);
     for (std::size_t i = 0; i < codes.size(); ++i) {
         const std::string_view f = codes[i].function;
         if (is_cycle_function(f)) code_class_[i] |= kCycleCode;
+        position_offset_[i] = static_cast<std::int8_t>(compensation::position_offset_factor(f).value_or(0));
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
         // The modal flags update_flags() derives (executor.cpp).
@@ -267,8 +269,9 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
         if (block.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
         view_ = nullptr;
         scan_block(f, block);
+        scan_.block = b;
         view_ = &block;
-        ok = read_profile_block(block, motion, profile);
+        ok = read_profile_block(block, motion, profile, *last);
     }
     scan_ = saved_scan;
     position_ = saved_position;
@@ -280,14 +283,17 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
 
 // One profile block: its end point from the running profile point, G00/G01/G02/G03 (modal within
 // the profile), the arc's centre and sweep, its F (G70, cycles.md §1). Blocks without an end point
-// (a direct-drawing angle alone) add no move: the programmed points are the profile.
-bool Executor::read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile) {
+// with direct-drawing words go through the same resolver as a running program
+// (executor_drawing.cpp), so a profile's corners are those of semantics.md §10.
+bool Executor::read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile,
+                                  std::uint32_t last) {
     BlockWords words;
     if (!evaluate_words(block, words)) return false;
     for (const ast::CodeRef& c : scan_.g)
         if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) motion = c.info->function;
     bool moves = false;
     const Position to = target_position(words, moves);
+    if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(block, words, to, profile, last);
     if (!moves) return true;
     cycles::ProfileMove m;
     m.end = to;
@@ -309,6 +315,27 @@ bool Executor::read_profile_block(const ast::BlockView& block, std::string_view&
     }
     profile.moves.push_back(m);
     position_ = to;
+    return true;
+}
+
+// A direct-drawing block of a profile: the resolver's lines and fillet arcs, from the end of the
+// last profile move (past a corner) and the programmed point position_.
+bool Executor::read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
+                                    cycles::Profile& profile, std::uint32_t last) {
+    const Position tool = profile.moves.empty() ? profile.start : profile.moves.back().end;
+    const auto r = resolve_drawing(block, words, position_, tool, to, last);
+    if (!r) return false;
+    for (const drawing::Move& piece : r->moves) {
+        cycles::ProfileMove m;
+        m.end = plane_position(piece.end, to);
+        m.kind = !piece.arc ? EventKind::linear : piece.sweep < 0 ? EventKind::arc_cw : EventKind::arc_ccw;
+        m.center = plane_position(piece.center, to);
+        m.sweep = piece.sweep;
+        if (const auto* w = words.get('F'); w && !w->data) m.feed = w->value;
+        m.x_word = m.z_word = true;   // a drawn line moves both axes in general
+        profile.moves.push_back(m);
+    }
+    position_ = plane_position(r->end, to);
     return true;
 }
 
@@ -339,9 +366,10 @@ void Executor::note_path_changers(const ast::BlockView& view) {
             emit(e);
         }
     }
-    if (scan_.comma_words || scan_.direct_drawing) {
+    if (drawing_words(view)) {
+        // Direct drawing is a G01 feature (semantics.md §10.1); G01 blocks never come here.
         Event e = event_at(EventKind::message, *frame_, view);
-        e.text = "direct drawing (,A ,C ,R or plain A R) is not expanded yet (next issue): the block runs to its programmed end point";
+        e.text = "direct drawing (,A ,C ,R) in a block that is not G01: the words are ignored (semantics.md §10.1)";
         emit(e);
     }
 }

@@ -166,10 +166,19 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
 }
 
 bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
-    if (const auto reference = apply_reference_motion(view, words)) return *reference;
+    if (const auto reference = apply_reference_motion(view, words)) {
+        programmed_.reset();
+        return *reference;
+    }
     bool moves = false;
-    const Position to = target_position(words, moves);
+    // [path changers] After a corner of direct drawing the tool stands off the programmed point,
+    // which the block's coordinates are measured from (executor_drawing.cpp).
+    const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
     if (apply_cycle(view, words, moves, to)) return false;
+    if (drawing_words(view) && flags_.motion == fn::linear) return draw_block(view, words, programmed_.value_or(position_), to);
+    if (const auto factor = position_offset_factor(); factor && moves)
+        return position_offset_move(view, words, *factor, programmed_.value_or(position_), to);
+    if (moves) programmed_.reset();
     note_path_changers(view);
     const std::string_view motion = flags_.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).

@@ -1,0 +1,86 @@
+// G45–G48 one-block position offsets (reference semantics.md §9.3), the executor's side: the D
+// register is modal for these codes ("the data of D08 given in N6 apply to N6–N8"); the tool's
+// move is the programmed move (from the programmed point, G90 or G91) changed by the rule of
+// interpreter/compensation/position_offset.hpp, started from where the tool stands. The
+// programmed point is kept apart (programmed_), so the next block measures from it.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dialects/functions.hpp"
+#include "interpreter/compensation/position_offset.hpp"
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+
+std::optional<int> Executor::position_offset_factor() const {
+    // Per-code factors computed once (classify_codes): no string compare per block.
+    const auto codes = dialect_.codes();
+    for (const ast::CodeRef& c : scan_.g) {
+        const std::size_t i = c.info ? static_cast<std::size_t>(c.info - codes.data()) : position_offset_.size();
+        if (i < position_offset_.size() && position_offset_[i] != 0) return position_offset_[i];
+    }
+    return std::nullopt;
+}
+
+double Executor::d_register() const {
+    const auto& d = last_words_[static_cast<std::size_t>('D' - 'A')];
+    if (!d) return 0;
+    const auto it = tools_.find(static_cast<int>(std::lround(*d)));
+    return it == tools_.end() ? 0 : (it->second.radius + it->second.radius_wear) / unit_scale();
+}
+
+bool Executor::position_offset_move(const ast::BlockView& view, const BlockWords& words, int factor, const Position& start,
+                                    const Position& to) {
+    const double d = d_register();
+    const std::string_view motion = flags_.motion;
+    // An arc needs its centre words: seed 004 N11 `G45 Y0.` and N12 follow the G02 of N10 and
+    // still move straight, "10 mm in Y" (semantics.md §9.3 table) [inference: the seed's intent].
+    const bool centre = words.get('I') || words.get('J') || words.get('K') || words.get('R');
+    if ((motion == fn::circular_cw || motion == fn::circular_ccw) && centre) {
+        if (!position_offset_arc(view, words, motion == fn::circular_cw, factor * d, start, to)) return false;
+    } else {
+        Position end = position_;
+        const auto offset_axis = [&](char letter) {
+            const auto axis = axis_of_letter(letter);
+            if (!axis) return;
+            const std::size_t a = static_cast<std::size_t>(*axis);
+            end[a] = position_[a] + compensation::offset_move(to[a] - start[a], factor, d);
+        };
+        for (const auto& [letter, w] : words.words)
+            if (!w.data && dialect_.lexical.is_axis(letter)) offset_axis(letter);
+        for (const auto& [letter, w] : words.incremental) offset_axis(letter);
+        move(motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+    }
+    programmed_ = position_ == to ? std::nullopt : std::optional<Position>(to);
+    return true;
+}
+
+// An arc under G45–G48: the radius grows by `change` (R40 → R50 for G45 D10), the centre and the
+// end point scaled about the tool's start by the same ratio (semantics.md §9.3, N7 and N10).
+bool Executor::position_offset_arc(const ast::BlockView& view, const BlockWords& words, bool cw, double change,
+                                   const Position& start, const Position& to) {
+    const motion::ArcResult arc = arc_geometry(cw, start, to, words);
+    if (!arc) {
+        alarm(*frame_, view, arc.error().fanuc_alarm, fmt::format("arc: {}", motion::describe(arc.error().code)));
+        return false;
+    }
+    const double scale = unit_scale();
+    const double k = arc.arc().radius > 0 ? (arc.arc().radius + change * scale) / arc.arc().radius : 1.0;
+    const motion::Vec3 tool = geometric_mm(position_, setup_.diameter_x, scale);
+    const motion::Vec3 from = arc.arc().start;
+    const motion::Vec3 normal = motion::plane_normal(plane());
+    const auto scaled = [&](motion::Vec3 p) {
+        const motion::Vec3 v = p - from;
+        const motion::Vec3 along_normal = normal * motion::dot(v, normal);
+        return tool + (v - along_normal) * k + along_normal;
+    };
+    const Position end = from_geometric(scaled(arc.arc().end), to, setup_.diameter_x, scale);
+    const Position center = from_geometric(scaled(arc.arc().center), to, setup_.diameter_x, scale);
+    cycle_arc(cw, end, center, view);
+    return !stopped_;
+}
+
+}  // namespace kerf::interpreter
