@@ -53,6 +53,7 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
         if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group] = &c;
     classify_codes();
     update_flags();
+    for (const SoftLimit& limit : setup_.soft_limits) any_soft_limit_ |= limit.min.has_value() || limit.max.has_value();
     for (char letter = 'A'; letter <= 'Z'; ++letter) {
         const auto axis = axis_of_letter(letter);
         const std::size_t i = static_cast<std::size_t>(letter - 'A');

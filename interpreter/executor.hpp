@@ -182,6 +182,7 @@ private:
     // Letter → axis index for the dialect's axis letters (axis_letters_: the mask of them).
     std::array<std::int8_t, 26> axis_of_{};
     std::uint32_t axis_letters_ = 0;
+    bool any_soft_limit_ = false;   // the machine has a stored stroke limit on some axis
     mutable std::uint32_t line_hint_ = 0;        // source(): the last line found, per file
     mutable std::uint32_t line_hint_file_ = ~0u;
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
@@ -248,7 +249,9 @@ private:
     static constexpr std::uint16_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
                                   kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
                                   kPlaneYZCode = 192,   // the plane: two bits
-                                  kOneShotCode = 256;   // group 00 (G04, G10, G28, G53 ...)
+                                  kOneShotCode = 256,   // group 00 (G04, G10, G28, G53 ...)
+                                  kMotionCode = 512,    // group 01 (G00–G03, G32, modal cycles)
+                                  kPositionOffsetCode = 1024;   // G45–G48
     std::vector<std::uint16_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
     void note_path_changers(const ast::BlockView& view);

@@ -50,6 +50,8 @@ void Executor::classify_codes() {
         const std::string_view f = codes[i].function;
         if (is_cycle_function(f)) code_class_[i] |= kCycleCode;
         position_offset_[i] = static_cast<std::int8_t>(compensation::position_offset_factor(f).value_or(0));
+        if (position_offset_[i] != 0) code_class_[i] |= kPositionOffsetCode;
+        if (codes[i].binder_traits & dialects::CodeInfo::kMotionGroup) code_class_[i] |= kMotionCode;
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
         // The modal flags update_flags() derives (executor.cpp).

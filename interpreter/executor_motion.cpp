@@ -79,7 +79,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
 // start when its end (or an arc's extreme) lies past a limit.
 bool Executor::within_soft_limits(const Position& low, const Position& high, const Frame& f,
                                   const ast::BlockView& view) {
-    if (!soft_limits_on_) return true;
+    if (!soft_limits_on_ || !any_soft_limit_) return true;
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         const SoftLimit& limit = setup_.soft_limits[a];

@@ -17,6 +17,7 @@ namespace fn = dialects::functions;
 
 std::optional<int> Executor::position_offset_factor() const {
     // Per-code factors computed once (classify_codes): no string compare per block.
+    if (!(scan_.classes & kPositionOffsetCode)) return std::nullopt;
     const auto codes = dialect_.codes();
     for (const ast::CodeRef& c : scan_.g) {
         const std::size_t i = c.info ? static_cast<std::size_t>(c.info - codes.data()) : position_offset_.size();

@@ -161,7 +161,7 @@ Position Executor::tool_offset() const {
 
 bool Executor::apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words) {
     for (const ast::CodeRef& c : scan_.g) {
-        if (!c.info) continue;
+        if (!c.info || (code_class_of(*c.info) & kMotionCode)) continue;   // G00/G01...: none of these
         const std::string& f = c.info->function;
         if (f.rfind(fn::work_coordinate_prefix, 0) == 0) {
             const int n = f.back() - '1';

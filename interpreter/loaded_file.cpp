@@ -166,6 +166,7 @@ private:
 
 bool LoadedFile::read_next_piece() const {
     if (complete_) return false;
+    last_held_ = nullptr;   // a held slot may be replaced below
     if (options_.read_ahead && !read_ahead_ && text_.size() > options_.piece_bytes)
         read_ahead_ = std::make_unique<ReadAhead>(*this);
     const std::size_t slot = slot_index();
@@ -229,6 +230,7 @@ const LoadedFile::Held& LoadedFile::hold(std::size_t index) const {
     const std::size_t slot = slot_index();
     if (slot == held_.size()) held_.push_back(std::make_unique<Held>());
     Held& held = *held_[slot];
+    last_held_ = nullptr;   // the slot may be the one block() remembered
     parse_again(pieces_[index], held);
     held.piece = index;
     held.last_use = clock_;
@@ -248,8 +250,13 @@ const LoadedFile::Held& LoadedFile::held_for(std::uint32_t block) const {
 }
 
 ast::BlockView LoadedFile::block(std::uint32_t index) const {
+    if (last_held_ && index >= last_first_ && index < last_end_) return last_held_->typed->block(index - last_first_);
     const Held& held = held_for(index);
-    return held.typed->block(index - pieces_[held.piece].first_block);
+    const Piece& piece = pieces_[held.piece];
+    last_held_ = &held;
+    last_first_ = piece.first_block;
+    last_end_ = piece.end_block;
+    return held.typed->block(index - piece.first_block);
 }
 
 bool LoadedFile::has_block(std::uint32_t index) const {
@@ -259,6 +266,10 @@ bool LoadedFile::has_block(std::uint32_t index) const {
 }
 
 void LoadedFile::pin(std::uint32_t index) const {
+    if (last_held_ && index >= last_first_ && index < last_end_) {
+        pinned_piece_ = last_held_->piece;
+        return;
+    }
     if (has_block(index)) pinned_piece_ = piece_of(index);
 }
 

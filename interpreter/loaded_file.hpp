@@ -123,6 +123,9 @@ private:
     mutable std::vector<Piece> pieces_;
     mutable std::vector<std::unique_ptr<Held>> held_;
     mutable std::size_t pinned_piece_ = 0;
+    // The last piece a block was found in (the run reads blocks in order: nearly always a hit).
+    mutable const Held* last_held_ = nullptr;
+    mutable std::uint32_t last_first_ = 0, last_end_ = 0;
     mutable std::uint64_t clock_ = 0;
     mutable Cursor cursor_;          // the next piece, when read on this thread
     mutable std::unique_ptr<ReadAhead> read_ahead_;
