@@ -59,6 +59,7 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
         const std::size_t i = static_cast<std::size_t>(letter - 'A');
         axis_of_[i] = axis ? static_cast<std::int8_t>(*axis) : std::int8_t{-1};
         if (axis && dialect_.lexical.is_axis(letter)) axis_letters_ |= 1u << i;
+        if (dialect_.lexical.is_axis(letter)) dialect_axes_ |= 1u << i;
     }
 }
 

@@ -183,6 +183,8 @@ private:
     std::array<std::int8_t, 26> axis_of_{};
     std::uint32_t axis_letters_ = 0;
     bool any_soft_limit_ = false;   // the machine has a stored stroke limit on some axis
+    std::uint32_t dialect_axes_ = 0;   // letters that are axes of the dialect (LexicalRules::is_axis)
+    const dialects::CodeInfo** motion_slot_ = nullptr;   // modal_[group 01], once known
     mutable std::uint32_t line_hint_ = 0;        // source(): the last line found, per file
     mutable std::uint32_t line_hint_file_ = ~0u;
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid

@@ -27,7 +27,6 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
     // Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words)
     // do not move the tool and do not set the modal F, S or T (the codes' parameter_words).
     const std::uint32_t data = scan_.data_letters;
-    const macro::Options options = macro_options(true);
     const auto tokens = view.tokens();
     for (std::uint32_t i = 0; i < tokens.size(); ++i) {
         const ast::Token& t = tokens[i];
@@ -39,9 +38,10 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
         w.token = view.first_token() + i;
         w.has_point = t.has(ast::token_flags::has_point);
         const bool letter = t.letter >= 'A' && t.letter <= 'Z';
-        w.data = (letter && (data >> (t.letter - 'A')) & 1u) || (t.role() == ast::Role::parameter && rules.is_axis(t.letter));
+        const std::uint32_t bit = letter ? 1u << (t.letter - 'A') : 0u;
+        w.data = (data & bit) != 0 || (t.role() == ast::Role::parameter && (dialect_axes_ & bit) != 0);
         if (t.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(tree, t.payload, variables_, options);
+            const macro::Result r = macro::evaluate(tree, t.payload, variables_, macro_options(true));
             if (r.error) {
                 alarm(*frame_, view, r.error->alarm, r.error->message);
                 return false;
@@ -114,8 +114,12 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
     // Several codes of one group in a block: the last one wins (semantics.md §1.1).
     bool changed = false;          // a group other than motion changed: derive every flag again
     for (const ast::CodeRef& c : scan_.g) {
-        if (!c.info || c.info->group == "00" || c.info->group.empty()) continue;
-        const dialects::CodeInfo*& slot = modal_[c.info->group];
+        if (!c.info || (c.info->binder_traits & dialects::CodeInfo::kOneShot) || c.info->group.empty()) continue;
+        // The motion group's slot is found once (map nodes do not move): nearly every block has
+        // a G00/G01/G02/G03 and most repeat the active one.
+        const bool motion_group = (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
+        if (motion_group && !motion_slot_) motion_slot_ = &modal_[c.info->group];
+        const dialects::CodeInfo*& slot = motion_group ? *motion_slot_ : modal_[c.info->group];
         if (slot == c.info) continue;
         slot = c.info;
         if (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) {

@@ -296,6 +296,7 @@ std::optional<std::uint32_t> LoadedFile::first_program() const {
 }
 
 const LoadedFile::Held* LoadedFile::owner(const ast::BlockView& view) const {
+    if (last_held_ && &last_held_->tree == &view.tree()) return last_held_;
     for (const auto& h : held_)
         if (&h->tree == &view.tree()) return h.get();
     return nullptr;
