@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <deque>
 #include <functional>
 #include <map>
@@ -48,7 +49,8 @@ public:
 
     private:
         void skip() {
-            while (i_ < 26 && !(map_->mask_ >> i_ & 1u)) ++i_;
+            const std::uint32_t rest = i_ < 26 ? map_->mask_ >> i_ : 0u;
+            i_ = rest ? i_ + std::countr_zero(rest) : 26;
             if (i_ < 26) current_ = {static_cast<char>('A' + i_), map_->words_[static_cast<std::size_t>(i_)]};
         }
         const LetterMap* map_;

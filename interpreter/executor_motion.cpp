@@ -64,12 +64,14 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         moves = true;
     }
     // U W H: incremental in system A; "the later-specified word is used" with X/U together (§3.2).
-    for (const auto& [axis_letter, w] : words.incremental) {
-        const auto axis = axis_of_letter(axis_letter);
-        if (!axis) continue;
-        const std::size_t a = static_cast<std::size_t>(*axis);
-        const auto absolute = words.words.find(axis_letter);
-        if (absolute == words.words.end() || absolute->second.token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
+    for (std::uint32_t mask = words.incremental.mask(); mask != 0; mask &= mask - 1) {
+        const int i = std::countr_zero(mask);
+        const char axis_letter = static_cast<char>('A' + i);
+        const Word& w = words.incremental.at(axis_letter);
+        if (axis_of_[static_cast<std::size_t>(i)] < 0) continue;
+        const std::size_t a = static_cast<std::size_t>(axis_of_[static_cast<std::size_t>(i)]);
+        const Word* absolute = words.get(axis_letter);
+        if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
         moves = true;
     }
     return from_program(to);
