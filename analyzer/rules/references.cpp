@@ -1,5 +1,6 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
+#include <algorithm>
 #include <set>
 
 #include "analyzer/rules/common.hpp"
@@ -171,6 +172,7 @@ public:
         const auto& programs = file.typed.programs();
         const ast::Program& p = programs[program];
         if (ended_ || !code_ || (!p.number && program + 1 < programs.size())) return;   // a header before O
+        if (fragment(file, p)) return;
         const ast::Range at = p.o_token >= 0 ? file.tree().tokens[static_cast<std::size_t>(p.o_token)].range()
                                              : trimmed_block(file, p.first_block);
         out.report(at, p.number ? fmt::format("program O{:04} has no M30, M02 or M99", *p.number)
@@ -179,6 +181,21 @@ public:
     }
 
 private:
+    // A listing fragment is not a program, so it needs no end (reference/README.md "Example files":
+    // the seeds print excerpts). It is one when blocks are marked as left out (a "..." line, S0113,
+    // reported by K1013), or when nothing makes it a program: no O number and no '%' in the file
+    // (dialects.md §3.4 starts a program with its O number; tape files with '%').
+    static bool fragment(const FileContext& file, const ast::Program& p) {
+        const ast::SyntaxTree& tree = file.tree();
+        const std::uint32_t begin = tree.blocks[p.first_block].begin;
+        const std::uint32_t end = p.end_block < tree.block_count() ? tree.blocks[p.end_block].begin
+                                                                    : static_cast<std::uint32_t>(tree.text.size());
+        for (const ast::Diagnostic& d : tree.diagnostics)
+            if (d.code == "S0113" && d.range.begin >= begin && d.range.begin < end) return true;
+        if (p.number) return false;
+        return std::none_of(tree.blocks.begin(), tree.blocks.end(),
+                            [](const ast::Block& b) { return b.kind == ast::BlockKind::percent; });
+    }
     static ast::Range trimmed_block(const FileContext& file, std::uint32_t b) {
         ast::Range r = file.tree().block_range(b);
         while (r.end > r.begin && std::string_view(" \t\r\n").find(file.tree().text[r.end - 1]) != std::string_view::npos) --r.end;
@@ -296,7 +313,7 @@ void add_references(Registry& r) {
         {"WHILE/DO loops nested more than 3 deep.", "The control stops with alarm 124.",
          "DO1 DO2 DO3 DO1 (four levels)", "three levels, the fourth in a G65 macro", "dialects.md §3.7"})));
     r.add(static_rule<MissingEnd>(rule("K3006", "missing-program-end", S::warning,
-        {"A program without M30, M02 or M99.",
+        {"A program without M30, M02 or M99 (a listing fragment is not a program: one with '...' for left-out blocks, or without O number and '%').",
          "The control runs off the end of the memory of the program: no rewind, no reset of modal state.",
          "O0001\nG00 X0.", "O0001\nG00 X0.\nM30", "dialects.md §3.4"})));
     r.add(static_rule<Unreachable>(rule("K3007", "unreachable-block", S::warning,
