@@ -89,6 +89,7 @@ public:
         if (b.file.dialect.lexical.tool_word != "mmnn") return;
         const auto t = number_word(b, 'T');
         if (!t || t->value < 100 || t->value > 9999 || static_cast<std::int64_t>(t->value) % 100 != 0) return;
+        if (code_parameter(b, 'T')) return;   // G138 T300 is a thrust limit, not a tool (gcode-tables.md §1 G138)
         out.report(b.token(t->token).range(),
                    fmt::format("{} selects tool {} with offset 00: no geometry or wear offset", b.tree().spelling(b.token(t->token)),
                                static_cast<std::int64_t>(t->value) / 100),
