@@ -84,16 +84,6 @@ inline std::optional<NumberWord> number_word(const BlockContext& b, char letter)
 
 namespace kerf::analyzer::rules {
 
-// N numbers of a program → how many blocks carry them (sequence numbers need not be unique:
-// dialects.md §2; they matter only where something jumps to them).
-inline std::map<std::int64_t, int> program_labels(const FileContext& file, std::size_t program) {
-    std::map<std::int64_t, int> labels;
-    const ast::Program& p = file.typed.programs()[program];
-    for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
-        if (const auto n = file.typed.block(b).sequence_number()) ++labels[static_cast<std::int64_t>(*n)];
-    return labels;
-}
-
 // The motion (group 01) function in force for the block: its own code, else the modal one.
 inline std::string_view motion_function(const BlockContext& b) {
     for (const ast::CodeRef& c : b.g)

@@ -1,6 +1,7 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
 #include <algorithm>
+#include <optional>
 #include <set>
 
 #include "analyzer/rules/common.hpp"
@@ -43,19 +44,17 @@ std::vector<Target> local_targets(const BlockContext& b) {
 
 class LabelCheck : public StaticCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
-        labels_ = program_labels(file, program);
-    }
+    void begin_program(const FileContext& file, std::size_t program, Reporter&) override { labels_ = &file.labels(program); }
 
 protected:
-    std::map<std::int64_t, int> labels_;
+    const LabelTable* labels_ = nullptr;
 };
 
 class LabelNotFound : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (!labels_.count(t.label))
+            if (labels_->count(t.label) == 0)
                 out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
                            fmt::format("add N{} to the block meant, or correct the number", t.label));
     }
@@ -65,10 +64,9 @@ class AmbiguousLabel : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (const auto it = labels_.find(t.label); it != labels_.end() && it->second > 1)
+            if (const int n = labels_->count(t.label); n > 1)
                 out.report(b.token(t.token).range(),
-                           fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label,
-                                       it->second),
+                           fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                            "give each target block a number of its own");
     }
 };
@@ -205,18 +203,17 @@ private:
 };
 
 // Blocks after M30/M02 or an unconditional GOTO that nothing jumps to (the control never runs them).
-class Unreachable : public LabelCheck {
+class Unreachable : public StaticCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
-        LabelCheck::begin_program(file, program, out);
-        targets_ = all_targets(file, program, computed_);
+    void begin_program(const FileContext& file, std::size_t, Reporter&) override {
+        if (!targets_) targets_ = all_targets(file, computed_);   // the same for every program of the file
         dead_ = false;
         reported_ = false;
     }
     void block(const BlockContext& b, Reporter& out) override {
         if (computed_) return;   // GOTO #1 may reach any label
         const auto n = b.view.sequence_number();
-        if (n && targets_.count(static_cast<std::int64_t>(*n))) dead_ = false;
+        if (n && std::binary_search(targets_->begin(), targets_->end(), static_cast<std::int64_t>(*n))) dead_ = false;
         if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted)) {
             out.report(block_text_range(b), "no path reaches this block: it follows the end of the program or a GOTO",
                        "remove the dead blocks, or give them a label that a GOTO or M98 Q jumps to");
@@ -233,25 +230,25 @@ private:
         return false;
     }
     // Every N that something in the file can jump to; `computed` when a GOTO target is an expression.
-    static std::set<std::int64_t> all_targets(const FileContext& file, std::size_t program, bool& computed) {
-        std::set<std::int64_t> out;
+    static std::vector<std::int64_t> all_targets(const FileContext& file, bool& computed) {
+        std::vector<std::int64_t> out;
         computed = false;
         const ast::SyntaxTree& tree = file.tree();
         for (std::size_t s = 0; s < tree.statements.size(); ++s) {
             const ast::Statement& st = tree.statements[s];
             if (st.label < 0) continue;
-            if (const auto v = constant_of(tree, st.label)) out.insert(static_cast<std::int64_t>(*v));
+            if (const auto v = constant_of(tree, st.label)) out.push_back(static_cast<std::int64_t>(*v));
             else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
         }
         for (std::size_t t = 0; t < tree.tokens.size(); ++t) {   // P/Q/L of calls and cycles: any number
             const ast::Token& tok = tree.tokens[t];
             if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
-                out.insert(static_cast<std::int64_t>(tree.number_value(tok)));
+                out.push_back(static_cast<std::int64_t>(tree.number_value(tok)));
         }
-        (void)program;
+        std::sort(out.begin(), out.end());
         return out;
     }
-    std::set<std::int64_t> targets_;
+    std::optional<std::vector<std::int64_t>> targets_;   // sorted
     bool computed_ = false, dead_ = false, reported_ = false;
 };
 
