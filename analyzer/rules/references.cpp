@@ -44,17 +44,25 @@ std::vector<Target> local_targets(const BlockContext& b) {
 
 class LabelCheck : public StaticCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter&) override { labels_ = &file.labels(program); }
+    void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
+        file_ = &file;
+        program_ = program;
+    }
 
 protected:
-    const LabelTable* labels_ = nullptr;
+    // Built on the first jump that needs it: most CAM programs have none (FileContext shares it).
+    const LabelTable& labels() const { return file_->labels(program_); }
+
+private:
+    const FileContext* file_ = nullptr;
+    std::size_t program_ = 0;
 };
 
 class LabelNotFound : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (labels_->count(t.label) == 0)
+            if (labels().count(t.label) == 0)
                 out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
                            fmt::format("add N{} to the block meant, or correct the number", t.label));
     }
@@ -64,7 +72,7 @@ class AmbiguousLabel : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (const int n = labels_->count(t.label); n > 1)
+            if (const int n = labels().count(t.label); n > 1)
                 out.report(b.token(t.token).range(),
                            fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                            "give each target block a number of its own");
