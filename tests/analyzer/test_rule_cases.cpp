@@ -46,3 +46,9 @@ TEST_CASE("K1020 missing-decimal-point: by the dialect's decimal mode, and K of 
     CHECK(test::summary(test::check(corner, "iso-legacy-mill"), "K1020").empty());
     CHECK(test::summary(test::check("G17 G90 G02 X10. Y0. R5 F100.\nM02\n", "iso-legacy-mill"), "K1020") == Findings{"1:22 warning K1020"});
 }
+
+// corpus MechatronicsCherepanovMA__CNCLearn__1002.NC:37 (MANIFEST: "T0000 (no offset)").
+TEST_CASE("K5018 tool-without-offset: T0000 in the mmnn form, not the short T0 cancel") {
+    CHECK(test::summary(test::check("O0001\nT0000(THREAD)\nG32 Z-10. F1.\nM30\n", "fanuc-lathe-a"), "K5018") == Findings{"2:1 warning K5018"});
+    CHECK(test::summary(test::check("O0001\nT0101\nG01 Z-10. F0.2\nG28 U0. W0. T0\nM30\n", "fanuc-lathe-a"), "K5018").empty());
+}
