@@ -12,17 +12,11 @@ namespace {
 
 using ActiveRules = std::vector<const Rule*>;
 
-ModalState power_on_state(const dialects::Dialect& dialect) {
-    ModalState modal;
-    for (const dialects::CodeInfo& c : dialect.codes())
-        if (c.power_on_default && c.modal && !c.group.empty()) modal[c.group] = &c;
-    return modal;
-}
+bool modal_code(const dialects::CodeInfo& c) { return c.modal && !c.group.empty() && c.group != "00"; }
 
 void update_modal(ModalState& modal, std::span<const ast::CodeRef> g) {
     for (const ast::CodeRef& ref : g)
-        if (ref.info && ref.info->modal && !ref.info->group.empty() && ref.info->group != "00")
-            modal[ref.info->group] = ref.info;
+        if (ref.info && modal_code(*ref.info)) modal.set(*ref.info);
 }
 
 struct StaticRun {
@@ -39,7 +33,7 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, std::vector<Fi
     std::vector<ast::CodeRef> g, m;
     const std::vector<ast::Program>& programs = ctx.typed.programs();
     for (std::size_t p = 0; p < programs.size(); ++p) {
-        ModalState modal = power_on_state(ctx.dialect);
+        ModalState modal(ctx.dialect);
         for (StaticRun& c : checks) c.check->begin_program(ctx, p, c.out);
         for (std::uint32_t b = programs[p].first_block; b < programs[p].end_block; ++b) {
             const ast::BlockView view = ctx.typed.block(b);
@@ -185,17 +179,48 @@ std::vector<Finding> check_text(std::string name, std::string text, const dialec
     return check_file(programs, file, dialect, setup, options);
 }
 
+ModalState::ModalState(const dialects::Dialect& dialect) {
+    for (const dialects::CodeInfo& c : dialect.codes()) {
+        if (!modal_code(c)) continue;
+        const auto slot = std::find_if(slots_.begin(), slots_.end(), [&](const Slot& s) { return s.first == c.group; });
+        const dialects::CodeInfo* active = c.power_on_default ? &c : nullptr;
+        if (slot == slots_.end()) slots_.emplace_back(c.group, active);
+        else if (active) slot->second = active;
+    }
+}
+
+void ModalState::set(const dialects::CodeInfo& code) {
+    for (Slot& s : slots_)
+        if (s.first == code.group) {
+            s.second = &code;
+            return;
+        }
+    slots_.emplace_back(code.group, &code);   // a code of a group the dialect table did not list (user dialect)
+}
+
+LabelTable::LabelTable(std::vector<std::int64_t> numbers) : sorted_(std::move(numbers)) {
+    // Most programs number their blocks in ascending order: then there is nothing to sort.
+    if (!std::is_sorted(sorted_.begin(), sorted_.end())) std::sort(sorted_.begin(), sorted_.end());
+}
+
+int LabelTable::count(std::int64_t n) const {
+    const auto [lo, hi] = std::equal_range(sorted_.begin(), sorted_.end(), n);
+    return static_cast<int>(hi - lo);
+}
+
+const LabelTable& FileContext::labels(std::size_t program) const {
+    if (const auto it = labels_.find(program); it != labels_.end()) return it->second;
+    std::vector<std::int64_t> numbers;
+    const ast::Program& p = typed.programs()[program];
+    for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
+        if (const auto n = typed.block(b).sequence_number()) numbers.push_back(static_cast<std::int64_t>(*n));
+    return labels_.emplace(program, LabelTable(std::move(numbers))).first->second;
+}
+
 Location locate(const ast::LineIndex& lines, ast::Range range) {
     const ast::Position b = lines.utf8(range.begin);
     const ast::Position e = lines.utf8(range.end);
     return {b.line + 1, b.column + 1, e.line + 1, e.column + 1};
-}
-
-bool BlockContext::has_function(std::string_view function) const {
-    for (const auto* codes : {&g, &m})
-        for (const ast::CodeRef& c : *codes)
-            if (c.info && c.info->function == function) return true;
-    return false;
 }
 
 bool BlockContext::modal_function(std::string_view function) const {

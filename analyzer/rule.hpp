@@ -46,19 +46,49 @@ private:
     std::vector<Finding>* out_;
 };
 
+// The N numbers of one program, sorted (sequence numbers need not be unique: dialects.md §2; they
+// matter only where something jumps to them). Built once per program for all rules that ask.
+class LabelTable {
+public:
+    explicit LabelTable(std::vector<std::int64_t> numbers);
+    int count(std::int64_t n) const;   // how many blocks carry N`n`
+
+private:
+    std::vector<std::int64_t> sorted_;
+};
+
 // What a static check sees of the whole file.
 struct FileContext {
+    FileContext(const ast::TypedFile& t, const dialects::Dialect& d, const interpreter::Setup& s,
+                std::function<bool(std::int64_t)> exists)
+        : typed(t), dialect(d), setup(s), program_exists(std::move(exists)) {}
     const ast::TypedFile& typed;
     const dialects::Dialect& dialect;
     const interpreter::Setup& setup;
     // True when program O`number` can be found (this file, then the loader: the CLI's folder).
     std::function<bool(std::int64_t)> program_exists;
     const ast::SyntaxTree& tree() const { return typed.tree(); }
+    // The labels of program `program` (typed.programs() index), computed on first use.
+    const LabelTable& labels(std::size_t program) const;
+
+private:
+    mutable std::map<std::size_t, LabelTable> labels_;
 };
 
-// The text-order modal state before a block: group → active code (power-on defaults first). It is
-// what a reader of the listing assumes; the dynamic rules see the state as it runs.
-using ModalState = std::map<std::string, const dialects::CodeInfo*, std::less<>>;
+// The text-order modal state before a block: one slot per modal group (power-on defaults first),
+// in a flat array because every rule walks it on every block. It is what a reader of the listing
+// assumes; the dynamic rules see the state as it runs.
+class ModalState {
+public:
+    using Slot = std::pair<std::string_view, const dialects::CodeInfo*>;   // group, active code (or none)
+    explicit ModalState(const dialects::Dialect& dialect);
+    void set(const dialects::CodeInfo& code);   // `code` becomes the active code of its group
+    std::vector<Slot>::const_iterator begin() const { return slots_.begin(); }
+    std::vector<Slot>::const_iterator end() const { return slots_.end(); }
+
+private:
+    std::vector<Slot> slots_;
+};
 
 struct BlockContext {
     const FileContext& file;
@@ -68,7 +98,14 @@ struct BlockContext {
     const ModalState& modal;           // before this block
     std::size_t program = 0;           // index into typed.programs()
     const ast::SyntaxTree& tree() const { return file.typed.tree(); }
-    bool has_function(std::string_view function) const;   // a G or M code of the block has it
+    // A G or M code of the block has `function`. Inline: every rule asks it of every block.
+    bool has_function(std::string_view function) const {
+        for (const ast::CodeRef& c : g)
+            if (c.info && c.info->function == function) return true;
+        for (const ast::CodeRef& c : m)
+            if (c.info && c.info->function == function) return true;
+        return false;
+    }
     bool modal_function(std::string_view function) const; // active before the block
     const ast::Token& token(std::uint32_t i) const { return tree().tokens[i]; }
 };

@@ -3,9 +3,12 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cctype>
+#include <optional>
 #include <map>
 
 #include "ast/source.hpp"
+#include "dialects/dialect.hpp"
 #include "grammar/parse.hpp"
 
 namespace kerf::grammar {
@@ -42,6 +45,44 @@ struct Evidence {
     }
 };
 
+// "(DIALECT: spinner-lathe-a - live tools)" → "spinner-lathe-a": the id after the tag, up to the
+// first character that cannot be part of an id.
+std::string_view id_after_tag(std::string_view comment) {
+    constexpr std::string_view tag = "DIALECT:";
+    if (comment.starts_with('(')) comment.remove_prefix(1);
+    while (!comment.empty() && comment.front() == ' ') comment.remove_prefix(1);
+    if (comment.size() < tag.size()) return {};
+    for (std::size_t i = 0; i < tag.size(); ++i)
+        if (std::toupper(static_cast<unsigned char>(comment[i])) != tag[i]) return {};
+    comment.remove_prefix(tag.size());
+    while (!comment.empty() && comment.front() == ' ') comment.remove_prefix(1);
+    std::size_t n = 0;
+    while (n < comment.size() && (std::isalnum(static_cast<unsigned char>(comment[n])) || comment[n] == '-')) ++n;
+    return comment.substr(0, n);
+}
+
+// A header comment naming a known dialect id decides (the reference examples carry one:
+// reference/README.md "Example files", `(DIALECT: <dialect id> [- machine options])`). Only the
+// comment-only blocks before the first word count: a comment further down is about something else.
+std::optional<Detection> header_dialect(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
+    for (std::size_t bi = 0; bi < tree.block_count(); ++bi) {
+        for (const ast::Token& t : tree.block_tokens(bi)) {
+            if (t.kind == ast::TokenKind::word) return std::nullopt;
+            if (t.kind != ast::TokenKind::comment) continue;
+            const std::string_view id = id_after_tag(tree.spelling(t));
+            if (id.empty() || !dialects::builtin_registry().find(id)) continue;
+            const ast::Position p = lines.utf8(t.begin);
+            Detection d;
+            d.dialect = std::string(id);
+            d.confidence = 100;
+            d.reasons.push_back(fmt::format("header comment at {}:{} names the dialect {} (decisive)", p.line + 1,
+                                            p.column + 1, id));
+            return d;
+        }
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 Detection detect_dialect(std::string_view text) {
@@ -54,6 +95,7 @@ Detection detect_dialect(std::string_view text) {
     }
     const ast::SyntaxTree tree = parse(std::string(text), permissive_rules());
     const ast::LineIndex lines(tree.text);
+    if (std::optional<Detection> header = header_dialect(tree, lines)) return *std::move(header);
     Evidence ev;
     bool has_y = false;
     for (std::size_t bi = 0; bi < tree.block_count(); ++bi) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include <array>
+#include <cctype>
 #include <map>
 
 #include "analyzer/registry.hpp"
@@ -83,16 +84,6 @@ inline std::optional<NumberWord> number_word(const BlockContext& b, char letter)
 
 namespace kerf::analyzer::rules {
 
-// N numbers of a program → how many blocks carry them (sequence numbers need not be unique:
-// dialects.md §2; they matter only where something jumps to them).
-inline std::map<std::int64_t, int> program_labels(const FileContext& file, std::size_t program) {
-    std::map<std::int64_t, int> labels;
-    const ast::Program& p = file.typed.programs()[program];
-    for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
-        if (const auto n = file.typed.block(b).sequence_number()) ++labels[static_cast<std::int64_t>(*n)];
-    return labels;
-}
-
 // The motion (group 01) function in force for the block: its own code, else the modal one.
 inline std::string_view motion_function(const BlockContext& b) {
     for (const ast::CodeRef& c : b.g)
@@ -104,6 +95,22 @@ inline std::string_view motion_function(const BlockContext& b) {
 inline bool circular_motion(const BlockContext& b) {
     const std::string_view f = motion_function(b);
     return f == dialects::functions::circular_cw || f == dialects::functions::circular_ccw;
+}
+
+// True when a code of the block other than those `skip` accepts lists `letter` among its data
+// words (parameter_words: G384 H D M T, G138 T, G28 K in iso-legacy-mill): the word is that code's
+// value, not what its letter usually addresses.
+template <class Skip>
+bool code_parameter(const BlockContext& b, char letter, Skip skip) {
+    const int bit = std::toupper(static_cast<unsigned char>(letter)) - 'A';
+    if (bit < 0 || bit >= 26) return false;
+    for (const auto* codes : {&b.g, &b.m})
+        for (const ast::CodeRef& c : *codes)
+            if (c.info && (c.info->parameter_mask >> bit & 1u) && !skip(*c.info)) return true;
+    return false;
+}
+inline bool code_parameter(const BlockContext& b, char letter) {
+    return code_parameter(b, letter, [](const dialects::CodeInfo&) { return false; });
 }
 
 // A block's words from the first to the last token (no trailing line break).

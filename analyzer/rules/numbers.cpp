@@ -23,7 +23,9 @@ public:
         for (std::uint32_t i = 0; i < tokens.size(); ++i) {
             const ast::Token& t = tokens[i];
             if (t.kind != ast::TokenKind::word || !t.is_number() || t.has(ast::token_flags::has_point)) continue;
-            const bool arc_word = arc && t.role() == ast::Role::parameter && std::string_view("IJKR").find(t.letter) != std::string_view::npos;
+            // I J K R are the arc's only when no other code of the block takes them (G28 K F, seed 004).
+            const bool arc_word = arc && t.role() == ast::Role::parameter && std::string_view("IJKR").find(t.letter) != std::string_view::npos &&
+                                  !code_parameter(b, t.letter, [](const dialects::CodeInfo& c) { return c.binder_traits & dialects::CodeInfo::kMotionGroup; });
             if (!is_axis(t) && !arc_word) continue;
             const double value = b.tree().number_value(t);
             if (value == 0) continue;   // X0 is zero either way
@@ -85,7 +87,10 @@ public:
         for (const ast::Token& t : b.view.tokens()) {
             if (t.kind != ast::TokenKind::word || !t.is_number() || !t.has(ast::token_flags::has_point)) continue;
             const std::string_view spelling = b.tree().spelling(t);
-            const bool integer_address = std::string_view("MTNOLHD").find(t.letter) != std::string_view::npos;
+            // A cycle's data word may have a point (G384 H20.0 D300. M20.: depth, speed, brake;
+            // gcode-tables.md §1 SPINNER rows), and H may be the incremental C axis (dialects.md §3.9).
+            const bool integer_address = std::string_view("MTNOLHD").find(t.letter) != std::string_view::npos &&
+                                         t.role() != ast::Role::axis_incremental && !code_parameter(b, t.letter);
             if (!(integer_address || (t.letter == 'G' && spelling.ends_with('.')))) continue;
             Finding& f = out.report(t.range(), fmt::format("'{}': address {} takes a whole number", spelling, t.letter),
                                     "remove the decimal point");

@@ -1,5 +1,7 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
+#include <algorithm>
+#include <optional>
 #include <set>
 
 #include "analyzer/rules/common.hpp"
@@ -43,18 +45,24 @@ std::vector<Target> local_targets(const BlockContext& b) {
 class LabelCheck : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
-        labels_ = program_labels(file, program);
+        file_ = &file;
+        program_ = program;
     }
 
 protected:
-    std::map<std::int64_t, int> labels_;
+    // Built on the first jump that needs it: most CAM programs have none (FileContext shares it).
+    const LabelTable& labels() const { return file_->labels(program_); }
+
+private:
+    const FileContext* file_ = nullptr;
+    std::size_t program_ = 0;
 };
 
 class LabelNotFound : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (!labels_.count(t.label))
+            if (labels().count(t.label) == 0)
                 out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
                            fmt::format("add N{} to the block meant, or correct the number", t.label));
     }
@@ -64,10 +72,9 @@ class AmbiguousLabel : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (const auto it = labels_.find(t.label); it != labels_.end() && it->second > 1)
+            if (const int n = labels().count(t.label); n > 1)
                 out.report(b.token(t.token).range(),
-                           fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label,
-                                       it->second),
+                           fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                            "give each target block a number of its own");
     }
 };
@@ -171,6 +178,7 @@ public:
         const auto& programs = file.typed.programs();
         const ast::Program& p = programs[program];
         if (ended_ || !code_ || (!p.number && program + 1 < programs.size())) return;   // a header before O
+        if (fragment(file, p)) return;
         const ast::Range at = p.o_token >= 0 ? file.tree().tokens[static_cast<std::size_t>(p.o_token)].range()
                                              : trimmed_block(file, p.first_block);
         out.report(at, p.number ? fmt::format("program O{:04} has no M30, M02 or M99", *p.number)
@@ -179,6 +187,21 @@ public:
     }
 
 private:
+    // A listing fragment is not a program, so it needs no end (reference/README.md "Example files":
+    // the seeds print excerpts). It is one when blocks are marked as left out (a "..." line, S0113,
+    // reported by K1013), or when nothing makes it a program: no O number and no '%' in the file
+    // (dialects.md §3.4 starts a program with its O number; tape files with '%').
+    static bool fragment(const FileContext& file, const ast::Program& p) {
+        const ast::SyntaxTree& tree = file.tree();
+        const std::uint32_t begin = tree.blocks[p.first_block].begin;
+        const std::uint32_t end = p.end_block < tree.block_count() ? tree.blocks[p.end_block].begin
+                                                                    : static_cast<std::uint32_t>(tree.text.size());
+        for (const ast::Diagnostic& d : tree.diagnostics)
+            if (d.code == "S0113" && d.range.begin >= begin && d.range.begin < end) return true;
+        if (p.number) return false;
+        return std::none_of(tree.blocks.begin(), tree.blocks.end(),
+                            [](const ast::Block& b) { return b.kind == ast::BlockKind::percent; });
+    }
     static ast::Range trimmed_block(const FileContext& file, std::uint32_t b) {
         ast::Range r = file.tree().block_range(b);
         while (r.end > r.begin && std::string_view(" \t\r\n").find(file.tree().text[r.end - 1]) != std::string_view::npos) --r.end;
@@ -188,18 +211,17 @@ private:
 };
 
 // Blocks after M30/M02 or an unconditional GOTO that nothing jumps to (the control never runs them).
-class Unreachable : public LabelCheck {
+class Unreachable : public StaticCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
-        LabelCheck::begin_program(file, program, out);
-        targets_ = all_targets(file, program, computed_);
+    void begin_program(const FileContext& file, std::size_t, Reporter&) override {
+        if (!targets_) targets_ = all_targets(file, computed_);   // the same for every program of the file
         dead_ = false;
         reported_ = false;
     }
     void block(const BlockContext& b, Reporter& out) override {
         if (computed_) return;   // GOTO #1 may reach any label
         const auto n = b.view.sequence_number();
-        if (n && targets_.count(static_cast<std::int64_t>(*n))) dead_ = false;
+        if (n && std::binary_search(targets_->begin(), targets_->end(), static_cast<std::int64_t>(*n))) dead_ = false;
         if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted)) {
             out.report(block_text_range(b), "no path reaches this block: it follows the end of the program or a GOTO",
                        "remove the dead blocks, or give them a label that a GOTO or M98 Q jumps to");
@@ -216,25 +238,25 @@ private:
         return false;
     }
     // Every N that something in the file can jump to; `computed` when a GOTO target is an expression.
-    static std::set<std::int64_t> all_targets(const FileContext& file, std::size_t program, bool& computed) {
-        std::set<std::int64_t> out;
+    static std::vector<std::int64_t> all_targets(const FileContext& file, bool& computed) {
+        std::vector<std::int64_t> out;
         computed = false;
         const ast::SyntaxTree& tree = file.tree();
         for (std::size_t s = 0; s < tree.statements.size(); ++s) {
             const ast::Statement& st = tree.statements[s];
             if (st.label < 0) continue;
-            if (const auto v = constant_of(tree, st.label)) out.insert(static_cast<std::int64_t>(*v));
+            if (const auto v = constant_of(tree, st.label)) out.push_back(static_cast<std::int64_t>(*v));
             else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
         }
         for (std::size_t t = 0; t < tree.tokens.size(); ++t) {   // P/Q/L of calls and cycles: any number
             const ast::Token& tok = tree.tokens[t];
             if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
-                out.insert(static_cast<std::int64_t>(tree.number_value(tok)));
+                out.push_back(static_cast<std::int64_t>(tree.number_value(tok)));
         }
-        (void)program;
+        std::sort(out.begin(), out.end());
         return out;
     }
-    std::set<std::int64_t> targets_;
+    std::optional<std::vector<std::int64_t>> targets_;   // sorted
     bool computed_ = false, dead_ = false, reported_ = false;
 };
 
@@ -296,7 +318,7 @@ void add_references(Registry& r) {
         {"WHILE/DO loops nested more than 3 deep.", "The control stops with alarm 124.",
          "DO1 DO2 DO3 DO1 (four levels)", "three levels, the fourth in a G65 macro", "dialects.md §3.7"})));
     r.add(static_rule<MissingEnd>(rule("K3006", "missing-program-end", S::warning,
-        {"A program without M30, M02 or M99.",
+        {"A program without M30, M02 or M99 (a listing fragment is not a program: one with '...' for left-out blocks, or without O number and '%').",
          "The control runs off the end of the memory of the program: no rewind, no reset of modal state.",
          "O0001\nG00 X0.", "O0001\nG00 X0.\nM30", "dialects.md §3.4"})));
     r.add(static_rule<Unreachable>(rule("K3007", "unreachable-block", S::warning,

@@ -88,7 +88,17 @@ public:
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.dialect.lexical.tool_word != "mmnn") return;
         const auto t = number_word(b, 'T');
-        if (!t || t->value < 100 || t->value > 9999 || static_cast<std::int64_t>(t->value) % 100 != 0) return;
+        if (!t || code_parameter(b, 'T')) return;   // G138 T300 is a thrust limit, not a tool (gcode-tables.md §1 G138)
+        const std::string_view spelling = b.tree().spelling(b.token(t->token));
+        // T0000 written out in the mmnn form (corpus 1002.NC, MANIFEST): station 00, offset 00. A
+        // short T0 is the usual offset cancel at the end of a program and is left alone.
+        if (t->value == 0 && spelling.size() == 5) {
+            out.report(b.token(t->token).range(),
+                       fmt::format("{} selects no tool station and no offset: what follows runs without geometry or wear offset", spelling),
+                       "write the tool and its offset (T0101); cancel an offset with T0 at the end only");
+            return;
+        }
+        if (t->value < 100 || t->value > 9999 || static_cast<std::int64_t>(t->value) % 100 != 0) return;
         out.report(b.token(t->token).range(),
                    fmt::format("{} selects tool {} with offset 00: no geometry or wear offset", b.tree().spelling(b.token(t->token)),
                                static_cast<std::int64_t>(t->value) / 100),

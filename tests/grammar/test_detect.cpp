@@ -36,3 +36,24 @@ TEST_CASE("without evidence: a mill when Y is used, else a lathe, and the reason
     REQUIRE_FALSE(lathe.reasons.empty());
     CHECK(lathe.reasons.back().find("no dialect evidence") != std::string::npos);
 }
+
+// reference/README.md "Example files": `(DIALECT: <dialect id> [- machine options])` heads every
+// example; a known id there decides, whatever the code below suggests.
+TEST_CASE("a header comment naming a known dialect id is decisive") {
+    const auto spinner = detect_dialect("(SOURCE: seed)\n(DIALECT: spinner-lathe-a - live tools)\nG0 X1 Y2\nM30\n");
+    CHECK(spinner.dialect == "spinner-lathe-a");
+    REQUIRE(spinner.reasons.size() == 1);
+    CHECK(spinner.reasons[0] == "header comment at 2:1 names the dialect spinner-lathe-a (decisive)");
+    // The evidence would say fanuc-lathe-a (G50 S, U/W); the header says ADV400.
+    CHECK(detect_dialect("(DIALECT: adv400-lathe)\nG50 S2000\nG1 U-2 W-3\n").dialect == "adv400-lathe");
+    CHECK(detect_dialect("( dialect:  pcnc-mill)\nG0 X1 Y1\n").dialect == "pcnc-mill");
+}
+
+TEST_CASE("a DIALECT comment that is no header, or names no known id, is not decisive") {
+    // An unknown id: the evidence decides (Y words → mill).
+    CHECK(detect_dialect("(DIALECT: heidenhain)\nG0 X1 Y2\n").dialect == "fanuc-mill");
+    // After the first word the comment is about something else.
+    CHECK(detect_dialect("G0 X1 Y2\n(DIALECT: fanuc-lathe-a)\nM30\n").dialect == "fanuc-mill");
+    // The tag must lead the comment.
+    CHECK(detect_dialect("(NOT DIALECT: fanuc-lathe-a)\nG0 X1 Y2\n").dialect == "fanuc-mill");
+}

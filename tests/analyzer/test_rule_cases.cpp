@@ -1,0 +1,54 @@
+// Rule behaviour beyond the one bad/good pair of each fixture: the cases the reference examples
+// showed (fragments, cycle parameters that look like other words, dialect-dependent numbers).
+#include <catch2/catch.hpp>
+
+#include "tests/analyzer/check_fixture.hpp"
+
+using namespace kerf;
+using Findings = std::vector<std::string>;
+
+// K3006: reference/README.md "Example files" — the seeds print excerpts; a fragment is no program.
+TEST_CASE("K3006 missing-program-end: programs yes, listing fragments no") {
+    const std::string dialect = "fanuc-lathe-a";
+    // A program: its O number (dialects.md §3.4) or a '%' tape file makes it one.
+    CHECK(test::summary(test::check("O0001\nG00 X0.\n", dialect), "K3006") == Findings{"1:1 warning K3006"});
+    CHECK(test::summary(test::check("%\nG00 X0.\nG01 Z-1. F0.2\n%\n", dialect), "K3006") == Findings{"2:1 warning K3006"});
+    // A listing with '...' for left-out blocks (001_O001_M316.nc) is a fragment, O number or not.
+    CHECK(test::summary(test::check("O0001\nG00 X0.\n...\nG01 Z-1. F0.2\n", dialect), "K3006").empty());
+    CHECK(test::summary(test::check("O0001\nN10 G00 X0.\nN110.....\n", dialect), "K3006").empty());
+    // No O number and no '%': an excerpt (001_11-5_slow_variant.nc, "fragment without O number").
+    CHECK(test::summary(test::check("T0101\nG97 S3500 M4 F0.2\nG0 X0. Z2.\n", dialect), "K3006").empty());
+}
+
+// K1022: H D M T are whole-number addresses, unless a code of the block takes them as data.
+TEST_CASE("K1022 point-on-integer-address: not on the data words of a cycle") {
+    // 001_O0001_G384_G380_tapping.nc: G384 H20.0 (depth) D300. (return speed) M20. (brake).
+    CHECK(test::summary(test::check("O0001\nG384 H20.0 F2.0 S300 D300. M20. T2\nG380\nM30\n", "spinner-lathe-a"), "K1022").empty());
+    // The same letters outside a cycle still take whole numbers.
+    CHECK(test::summary(test::check("O0001\nT0101\nM08.\nM30\n", "spinner-lathe-a"), "K1022") == Findings{"3:1 warning K1022"});
+}
+
+TEST_CASE("K5018 tool-without-offset: not on the T word of G138 (thrust limit)") {
+    // 001_O0001_G138_tailstock.nc: G138 B-425.8 Q1 S700 T300 J10 E1.
+    CHECK(test::summary(test::check("O0001\nG138 B-425.8 Q1 S700 T300 J10 E1\nM30\n", "spinner-lathe-a"), "K5018").empty());
+    CHECK(test::summary(test::check("O0001\nT300\nM30\n", "spinner-lathe-a"), "K5018") == Findings{"2:1 warning K5018"});
+}
+
+// K1020 reads the dialect's decimal mode (dialects.md §2 Numbers, §11.9).
+TEST_CASE("K1020 missing-decimal-point: by the dialect's decimal mode, and K of G28 K F is no arc word") {
+    const char* text = "O0001\nG01 X10 Z-5 F100.\nM30\n";
+    CHECK(test::summary(test::check(text, "fanuc-lathe-a"), "K1020") == Findings{"2:5 warning K1020", "2:9 warning K1020"});
+    // SPINNER and ADV400 read integers as millimetres (calculator-type input).
+    CHECK(test::summary(test::check(text, "spinner-lathe-a"), "K1020").empty());
+    CHECK(test::summary(test::check(text, "adv400-lathe"), "K1020").empty());
+    // 004_ex6_G28_corner_slowdown.nc: G28 K5 F50 under a modal G02 — K is the slow-down distance.
+    const char* corner = "G17 G90 G02 X10. Y0. R5. F100.\nG28 K5 F50\nG29\nM02\n";
+    CHECK(test::summary(test::check(corner, "iso-legacy-mill"), "K1020").empty());
+    CHECK(test::summary(test::check("G17 G90 G02 X10. Y0. R5 F100.\nM02\n", "iso-legacy-mill"), "K1020") == Findings{"1:22 warning K1020"});
+}
+
+// corpus MechatronicsCherepanovMA__CNCLearn__1002.NC:37 (MANIFEST: "T0000 (no offset)").
+TEST_CASE("K5018 tool-without-offset: T0000 in the mmnn form, not the short T0 cancel") {
+    CHECK(test::summary(test::check("O0001\nT0000(THREAD)\nG32 Z-10. F1.\nM30\n", "fanuc-lathe-a"), "K5018") == Findings{"2:1 warning K5018"});
+    CHECK(test::summary(test::check("O0001\nT0101\nG01 Z-10. F0.2\nG28 U0. W0. T0\nM30\n", "fanuc-lathe-a"), "K5018").empty());
+}
