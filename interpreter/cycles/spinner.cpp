@@ -276,6 +276,9 @@ Position carriage_at(const Context& ctx, double machine_z) {
 // program's own Z moves then carry the tailstock until M56 (not modelled as a second axis).
 void tailstock_coupling(Context& ctx, bool carry) {
     const SpinnerSettings& s = ctx.settings().spinner;
+    const auto z = ctx.raw('Z');
+    const bool home = ctx.raw('I').value_or(0) == 1;
+    if (carry && !z && !home) return illegal(ctx, "needs Z (machine position, with a decimal point) or I1 (cycles.md §17)");
     const std::optional<double> coupling = carry ? s.coupling_z : s.coupling_z_second;
     if (!coupling) {
         ctx.message(fmt::format("{}: the machine sets no [tailstock] {}: the carriage stays (machine/SCHEMA.md)",
@@ -287,9 +290,7 @@ void tailstock_coupling(Context& ctx, bool carry) {
         ctx.message(fmt::format("{}: tailstock coupled to the carriage; the next Z moves carry it until M56", ctx.spelling()));
         return;
     }
-    const auto z = ctx.raw('Z');
-    if (ctx.raw('I').value_or(0) == 1 || !z) {
-        if (!z && ctx.raw('I').value_or(0) != 1) return illegal(ctx, "needs Z (machine position) or I1 (cycles.md §17)");
+    if (home) {
         ctx.message(fmt::format("{}: tailstock coupled, carried to its home position{} and decoupled", ctx.spelling(),
                                 s.home_b ? fmt::format(" B{:g}", *s.home_b) : std::string()));
         return;

@@ -219,6 +219,10 @@ TEST_CASE("G100 and G101 move the carriage to the tailstock coupling positions")
     require_clean(none);
     CHECK(moves_on_line(none, 2).empty());
     CHECK(has_text(none, 2, "coupling_z_second"));
+    // G100 without Z or I1 (the template's `G100 Z_` read leniently) is 3012 before any move.
+    const Run bare = spinner("O1\nG100\nM30\n", machine);
+    require_alarm(bare, 3012);
+    CHECK(moves(bare).empty());
 }
 
 // mcodes.md §3.2: M432 moves no axis; the run says what the cycle does.
