@@ -1,9 +1,9 @@
 // Canned cycles: the executor's side of interpreter/cycles/ (reference/cycles.md). CycleContext
 // gives a cycle function the block's words, the profile blocks N P..N Q, the persistent
 // parameters and moves through the executor's move()/emit_arc() (times, soft limits, machine
-// positions as for any block). A cycle without an expander yet (SPINNER §12–§17, drilling) does
-// not run its words as a plain move (the tool would cut through the part): it says so in a
-// message and keeps the tool where it is. Codes that change the path (G41/G42, G112, G45–G48,
+// positions as for any block). A cycle no family of cycles/ expands does not run its words as a
+// plain move (the tool would cut through the part): it says so in a message and keeps the tool
+// where it is. Codes that change the path (G41/G42, G112, G45–G48,
 // ,C ,R) let the programmed path run and say that it is not the compensated one.
 #include <fmt/format.h>
 
