@@ -83,6 +83,16 @@ inline constexpr std::string_view boring_dwell_cycle = "boring-dwell-cycle";
 inline constexpr std::string_view boring_spindle_stop_cycle = "boring-spindle-stop-cycle";
 inline constexpr std::string_view boring_manual_retract_cycle = "boring-manual-retract-cycle";
 inline constexpr std::string_view back_boring_cycle = "back-boring-cycle";
+// SPINNER cycles (cycles.md §12–§17, interpreter/cycles/spinner.cpp).
+inline constexpr std::string_view workpiece_transfer_cycle = "workpiece-transfer-cycle";
+inline constexpr std::string_view tailstock_clamping_cycle_1 = "tailstock-clamping-cycle-1";
+inline constexpr std::string_view tailstock_clamping_cycle_2 = "tailstock-clamping-cycle-2";
+inline constexpr std::string_view live_tool_rigid_tapping = "live-tool-rigid-tapping";
+inline constexpr std::string_view live_tool_rigid_tapping_cancel = "live-tool-rigid-tapping-cancel";
+inline constexpr std::string_view spindle_rigid_tapping_cycle = "spindle-rigid-tapping-cycle";
+inline constexpr std::string_view tailstock_coupling_carry = "tailstock-coupling-carry";
+inline constexpr std::string_view tailstock_coupling_position = "tailstock-coupling-position";
+inline constexpr std::string_view parts_catcher_cycle = "parts-catcher-cycle";
 inline constexpr std::string_view fine_boring_cycle = "fine-boring-cycle";
 inline constexpr std::string_view face_drilling_cycle = "face-drilling-cycle";
 inline constexpr std::string_view face_tapping_cycle = "face-tapping-cycle";

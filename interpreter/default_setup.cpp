@@ -64,6 +64,14 @@ cycles::Settings cycle_settings(const machine::Machine& m) {
     s.adv400_k_first_peck_only = sw.adv400_g83_k == machine::Adv400G83K::initial_depth;
     s.tapping_reverses = sw.adv400_g84 == machine::Adv400G84::tapping;
     s.repeat_l = sw.drill_repeat_l == machine::DrillRepeatL::fanuc;
+    s.spinner.g38_stop_half_tolerance = sw.g38_stop == machine::G38Stop::half_tolerance;
+    s.spinner.clamp_contact_target = sw.clamp_contact == machine::ClampContact::target;
+    s.spinner.g238_a_after_clamp = sw.g238_a_timing == machine::G238ATiming::after_clamp;
+    s.spinner.g384_radial_h_diameter = sw.g384_radial_h == machine::G384RadialH::diameter;
+    s.spinner.g384_bottom_dwell_s = sw.g384_bottom_dwell;
+    s.spinner.coupling_z = m.tailstock.coupling_z;
+    s.spinner.coupling_z_second = m.tailstock.coupling_z_second;
+    s.spinner.home_b = m.tailstock.home_b;
     return s;
 }
 }  // namespace

@@ -312,6 +312,7 @@ private:
     cycles::Parameters cycle_parameters_{setup_.cycles.initial};   // persistent (cycles.md §0)
     cycles::SingleCycleModal single_cycle_;                         // G90/G92/G94 repeat values
     cycles::DrillModal drill_modal_;                                // drilling cycle levels for repeat blocks
+    cycles::RigidTapModal rigid_tap_;                               // [spinner] SPINNER G384 until G380 (cycles/spinner.cpp)
     // A group-01 code cancels a modal drilling cycle ([FANUC]; cycles.md §10 "until G80 or a
     // group-01 code"); any cancel ends the cycle mode (the next cycle takes a new initial level).
     void cancel_cycle_by_motion_code();

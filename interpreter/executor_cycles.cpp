@@ -1,9 +1,9 @@
 // Canned cycles: the executor's side of interpreter/cycles/ (reference/cycles.md). CycleContext
 // gives a cycle function the block's words, the profile blocks N P..N Q, the persistent
 // parameters and moves through the executor's move()/emit_arc() (times, soft limits, machine
-// positions as for any block). A cycle without an expander yet (SPINNER §12–§17, drilling) does
-// not run its words as a plain move (the tool would cut through the part): it says so in a
-// message and keeps the tool where it is. Codes that change the path (G41/G42, G112, G45–G48,
+// positions as for any block). A cycle no family of cycles/ expands does not run its words as a
+// plain move (the tool would cut through the part): it says so in a message and keeps the tool
+// where it is. Codes that change the path (G41/G42, G112, G45–G48,
 // ,C ,R) let the programmed path run and say that it is not the compensated one.
 #include <fmt/format.h>
 
@@ -20,9 +20,10 @@ namespace fn = dialects::functions;
 
 namespace {
 
-// Cycles whose function id does not say "-cycle" (SPINNER, cycles.md §15, §17).
-constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "tailstock-coupling-carry",
-                                             "tailstock-coupling-position"};
+// Cycles whose function id does not say "-cycle" (SPINNER, cycles.md §15, §17). G380 is one too: it
+// ends the G384 mode inside cycles/spinner.cpp.
+constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-tool-rigid-tapping-cancel",
+                                             "tailstock-coupling-carry", "tailstock-coupling-position"};
 
 // Function ids (docs/functions.md) whose path the trace does not model yet.
 constexpr std::string_view kPathChangers[] = {
@@ -140,6 +141,8 @@ public:
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
     cycles::SingleCycleModal& single_cycle() override { return ex_.single_cycle_; }
     cycles::DrillModal& drill() override { return ex_.drill_modal_; }
+    cycles::RigidTapModal& rigid_tap() override { return ex_.rigid_tap_; }
+    Position machine_offset() const override { return ex_.machine_offset(); }
     std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, code_.spelling, p, q); }
 
     bool rapid(const Position& to) override { return move(EventKind::rapid, to); }
@@ -155,6 +158,17 @@ public:
         ex_.thread_lead_ = lead;
         return move(EventKind::thread, to);
     }
+    bool feed_at(const Position& to, double mm_per_min) override {
+        const double saved_feed = ex_.feed_;
+        const bool saved_per_rev = ex_.flags_.per_revolution;
+        ex_.feed_ = mm_per_min / ex_.unit_scale();
+        ex_.flags_.per_revolution = false;
+        const bool ok = move(EventKind::linear, to);
+        ex_.feed_ = saved_feed;
+        ex_.flags_.per_revolution = saved_per_rev;
+        return ok;
+    }
+    void tool(int code) override { ex_.apply_tool_word(view_, code); }
     void dwell(double seconds) override {
         Event e = ex_.event_at(EventKind::dwell, *ex_.frame_, view_);
         e.time_s = std::max(0.0, seconds);

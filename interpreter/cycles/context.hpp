@@ -50,6 +50,17 @@ struct DrillModal {
     std::optional<int> clamp;   // lathe: the C-axis clamp M code, kept for the repeat blocks [inference]
 };
 
+// SPINNER G384 between its first block and G380 (cycles.md §15): the later blocks give only the
+// hole position; H, R, F, S, D, M, T stay from the first block.
+struct RigidTapModal {
+    bool active = false;
+    std::size_t axis = 2;          // Z (T2, T3) or X (T1)
+    double toward = -1;            // sign of the feed into the hole along `axis`
+    double r = 0, depth = 0;       // program units along the axis (X: diameter)
+    double pitch = 0, rpm_in = 0, rpm_out = 0;
+    std::optional<int> brake;      // M20 / M220
+};
+
 struct Profile {
     Position start{};                       // the cycle start point A
     std::vector<ProfileMove> moves;         // ns … nf in order; moves[0] is A → A′
@@ -85,6 +96,8 @@ public:
     virtual Parameters& parameters() = 0;                  // persistent across the run (§0)
     virtual SingleCycleModal& single_cycle() = 0;          // G90/G92/G94 values for repeat blocks
     virtual DrillModal& drill() = 0;                       // drilling cycle values for repeat blocks
+    virtual RigidTapModal& rigid_tap() = 0;                // SPINNER G384 until G380
+    virtual Position machine_offset() const = 0;           // machine = work (mm) + this, axis by axis
 
     // Profile N P .. N Q of the current program; nullopt after an alarm (not found, bad block).
     virtual std::optional<Profile> profile(double p, double q) = 0;
@@ -94,6 +107,10 @@ public:
     virtual bool feed(const Position& to, std::optional<double> feed = std::nullopt) = 0;
     virtual bool arc(bool cw, const Position& to, const Position& center, std::optional<double> feed = std::nullopt) = 0;
     virtual bool thread(const Position& to, double lead) = 0;
+    // A feed move at `mm_per_min` whatever G94/G95 (G98/G99) is in effect; the modal F and feed mode
+    // stay (SPINNER cycles: F, S are cycle data, cycles.md §12–§16).
+    virtual bool feed_at(const Position& to, double mm_per_min) = 0;
+    virtual void tool(int code) = 0;                       // a T code the cycle executes (G238/G384/M329 A)
     virtual void dwell(double seconds) = 0;
     virtual void m_code(int number) = 0;                   // a clamp/unclamp M code issued by the cycle
     virtual void message(std::string text) = 0;
@@ -109,6 +126,8 @@ void lathe_profile(Context& ctx);   // G70–G73, cycles.md §1–§4 (lathe_pro
 void lathe_peck(Context& ctx);      // G74/G75, §5–§6 (lathe_peck.cpp)
 void lathe_thread(Context& ctx);    // G76, G92 (lathe_thread.cpp)
 void lathe_single(Context& ctx);    // G90/G94, §8 (lathe_single.cpp)
+bool spinner(Context& ctx);         // SPINNER G38, G138, G238, G384/G380, M329, G100/G101, M432, §12–§17
+                                    // (spinner.cpp); false when the function is none of them
 bool drilling(Context& ctx);        // mill G73–G89, lathe G83–G89, ADV400 G81/G83/G84, §10–§11 (drilling.cpp);
                                     // false when the function is no drilling cycle
 

@@ -2,6 +2,8 @@
 // only the table): mill G73/G74/G76/G81/G82/G83/G84/G85/G86/G89 (fanuc-mill), ADV400 G81/G84 (mill)
 // and G83 (lathe), and the lathe live-tool cycles G83/G84/G86 (face) and G87/G88/G89 (side).
 //
+// fanuc-mill G87 (back boring) and G88 (boring, manual retract) follow [FANUC] M-series (the
+// reference lists them in its tables only).
 // Two forms share one hole expansion (drill_hole):
 // * the mill form (R and Z are levels: absolute under G90; under G91 R counts from the initial
 //   level and Z from the R level), drilling along Z, holes at the block's X/Y, G98/G99 return;
@@ -33,6 +35,8 @@ enum class Kind {
     bore,             // feed in, dwell, feed out (G85, G89, lathe G86/G89)
     bore_stop,        // feed in, spindle stop, rapid out (mill G86)
     fine_bore,        // feed in, dwell, oriented stop, shift Q, rapid out (G76)
+    back_bore,        // oriented stop, shift Q, rapid to R below the part, shift back, feed up to Z (G87)
+    bore_manual,      // feed in, dwell, spindle stop, the operator retracts (G88)
 };
 
 struct Form {
@@ -51,6 +55,8 @@ std::optional<Form> form_of(std::string_view f) {
     if (f == fn::boring_cycle || f == fn::boring_dwell_cycle) return Form{Kind::bore, false, kZ};
     if (f == fn::boring_spindle_stop_cycle) return Form{Kind::bore_stop, false, kZ};
     if (f == fn::fine_boring_cycle) return Form{Kind::fine_bore, false, kZ};
+    if (f == fn::back_boring_cycle) return Form{Kind::back_bore, false, kZ};
+    if (f == fn::boring_manual_retract_cycle) return Form{Kind::bore_manual, false, kZ};
     if (f == fn::face_drilling_cycle) return Form{Kind::peck, true, kZ};
     if (f == fn::face_tapping_cycle) return Form{Kind::tap, true, kZ};
     if (f == fn::face_boring_cycle) return Form{Kind::bore, true, kZ};
@@ -105,7 +111,31 @@ bool peck_in(Context& ctx, const Hole& h) {
     return true;
 }
 
+// Shift the tool by `dx` in X (the oriented-stop shift of G76/G87: +X, [FANUC] parameter RD1/RD2 = 0).
+bool shift_x(Context& ctx, double dx) {
+    Position p = ctx.position();
+    p[kX] += dx;
+    return ctx.rapid(p);
+}
+
+// G87 back boring [FANUC]: at the initial level an oriented stop and the shift Q, rapid down to the
+// R level under the part, shift back, spindle on, feed up to Z, dwell P, oriented stop, shift Q,
+// rapid up to the initial level (G87 always returns there: R lies below the part), shift back,
+// spindle on.
+bool back_bore(Context& ctx, const Hole& h) {
+    ctx.message(fmt::format("{}: oriented spindle stop, shift {:g} in +X", ctx.spelling(), h.shift));
+    if (!shift_x(ctx, h.shift) || !ctx.rapid(at(ctx, h.form.axis, h.r_level)) || !shift_x(ctx, -h.shift)) return false;
+    ctx.message(fmt::format("{}: spindle on (M03), boring upward", ctx.spelling()));
+    if (!ctx.feed(at(ctx, h.form.axis, h.bottom))) return false;
+    if (h.dwell_s > 0) ctx.dwell(h.dwell_s);
+    ctx.message(fmt::format("{}: oriented spindle stop, shift {:g} in +X", ctx.spelling(), h.shift));
+    if (!shift_x(ctx, h.shift) || !ctx.rapid(at(ctx, h.form.axis, h.initial)) || !shift_x(ctx, -h.shift)) return false;
+    ctx.message(fmt::format("{}: spindle on (M03)", ctx.spelling()));
+    return true;
+}
+
 bool drill_hole(Context& ctx, const Hole& h) {
+    if (h.form.kind == Kind::back_bore) return back_bore(ctx, h);
     const std::size_t axis = h.form.axis;
     const double out_level = h.return_r ? h.r_level : h.initial;
     if (h.clamp) ctx.m_code(*h.clamp);
@@ -129,19 +159,17 @@ bool drill_hole(Context& ctx, const Hole& h) {
         case Kind::bore_stop:
             ctx.message(fmt::format("{}: spindle stops at the bottom, rapid out, spindle restarts", ctx.spelling()));
             break;
-        case Kind::fine_bore: {
-            // [FANUC] oriented stop, shift Q away from the wall (+X, parameter RD1/RD2 = 0), rapid
-            // out, shift back, spindle on.
-            ctx.message(fmt::format("{}: oriented spindle stop, shift {:g} in +X", ctx.spelling(), h.shift));
-            Position p = ctx.position();
-            p[kX] += h.shift;
-            if (!ctx.rapid(p)) return false;
-            if (!ctx.rapid(at(ctx, axis, out_level))) return false;
-            p = ctx.position();
-            p[kX] -= h.shift;
-            if (!ctx.rapid(p)) return false;
+        case Kind::bore_manual:
+            // [FANUC] G88: the machine stops with the spindle stopped; the operator retracts in a
+            // manual mode, and the cycle start rapids to the return level: the dry run takes that rapid.
+            ctx.message(fmt::format("{}: spindle stops at the bottom; the operator retracts by hand (manual mode), "
+                                    "then cycle start returns at rapid and restarts the spindle", ctx.spelling()));
             break;
-        }
+        case Kind::fine_bore:
+            // [FANUC] oriented stop, shift Q away from the wall, rapid out, shift back, spindle on.
+            ctx.message(fmt::format("{}: oriented spindle stop, shift {:g} in +X", ctx.spelling(), h.shift));
+            if (!shift_x(ctx, h.shift) || !ctx.rapid(at(ctx, axis, out_level)) || !shift_x(ctx, -h.shift)) return false;
+            break;
         default: break;
     }
     if (!ctx.rapid(at(ctx, axis, out_level))) return false;
@@ -183,7 +211,7 @@ void update_modal(Context& ctx, const Form& form, DrillModal& m) {
         m.peck = (form.lathe ? *ctx.pq('Q') : *ctx.mm('Q')) * k;
     else if (!ctx.takes('Q') && form.kind == Kind::peck && ctx.has('K'))
         m.peck = *ctx.mm('K') * k;
-    if (form.kind == Kind::fine_bore && ctx.has('Q')) m.shift = *ctx.mm('Q');
+    if ((form.kind == Kind::fine_bore || form.kind == Kind::back_bore) && ctx.has('Q')) m.shift = *ctx.mm('Q');
     if (ctx.has('P')) m.dwell_s = dwell_seconds(ctx, ctx.raw('P'));
     if (form.kind == Kind::tap && ctx.takes('Q') && ctx.has('Q')) m.r_dwell_s = dwell_seconds(ctx, ctx.raw('Q'));
 }

@@ -122,6 +122,30 @@ TEST_CASE("G85 G86 G89 G76 boring cycles") {
                  rapid3(30, 0, 10)});
 }
 
+// fanuc-mill G87 back boring [FANUC]: from Z50 at X10 Y10: oriented stop, shift Q2 to X12, rapid
+// down to the R level Z−20 under the part, shift back to X10, feed up to Z−5, dwell P500 (0.5 s),
+// shift to X12, rapid up to the initial Z50 (G87 always returns there), shift back to X10.
+// G88 [FANUC]: feed to Z−5, dwell P1000 (1 s), spindle stop and manual retract (a message), then
+// the rapid to the return level R2 (G99).
+TEST_CASE("G87 back boring and G88 boring with manual retract") {
+    const Run r = run_bare("O1\nG0 X0 Y0 Z50.\nG98 G87 X10. Y10. Z-5. R-20. Q2. P500 F100\nG80\n"
+                           "G99 G88 X10. Y10. Z-5. R2. P1000 F100\nG80\nM30\n");
+    require_clean(r);
+    check_path3(r, 3, kXYZ,
+                {rapid3(10, 10, 50), rapid3(12, 10, 50), rapid3(12, 10, -20), rapid3(10, 10, -20), feed3(10, 10, -5),
+                 rapid3(12, 10, -5), rapid3(12, 10, 50), rapid3(10, 10, 50)});
+    const auto dwell87 = texts_of_line(r, 3, EventKind::dwell);
+    REQUIRE(dwell87.size() == 1);
+    CHECK(dwell87[0].time_s == Approx(0.5));
+    check_path3(r, 5, kXYZ, {rapid3(10, 10, 2), feed3(10, 10, -5), rapid3(10, 10, 2)});
+    const auto dwell88 = texts_of_line(r, 5, EventKind::dwell);
+    REQUIRE(dwell88.size() == 1);
+    CHECK(dwell88[0].time_s == Approx(1.0));
+    bool manual = false;
+    for (const Event& e : texts_of_line(r, 5, EventKind::message)) manual |= e.text.find("by hand") != std::string::npos;
+    CHECK(manual);
+}
+
 // ADV400 G81 (cycles.md §11.1) with L2 [FANUC: G90 drills the same hole again]: hole at X−3
 // Y−2.75 twice, back to R0.1 (G99); with drill_repeat_l = ignore once.
 TEST_CASE("ADV400 G81 repeats by L") {
