@@ -368,9 +368,10 @@ private:
         compensation::Programmed programmed;
         Position end;                                    // the programmed end, work coordinates
     };
-    // The block's programmed elements from `start` (a line, an arc, or the direct-drawing pieces).
+    // The block's programmed elements from `start` (a line, an arc, or the direct-drawing pieces);
+    // `quiet` (read ahead): no message or alarm, nullopt instead.
     std::optional<std::vector<CompPiece>> comp_pieces(const ast::BlockView& view, const BlockWords& words,
-                                                      const Position& start, const Position& to, bool moves,
+                                                      const Position& start, const Position& to, bool quiet,
                                                       Position& programmed_end);
     // The next motion block's first element (look-ahead; up to two blocks without motion between).
     std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from,

@@ -70,12 +70,19 @@ Programmed with_comp(const motion::Element& path, int side, double radius) {
 
 std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast::BlockView& view, const BlockWords& words,
                                                                        const Position& start, const Position& to,
-                                                                       bool moves, Position& programmed_end) {
+                                                                       bool quiet, Position& programmed_end) {
     const int side = comp_side_of_block(comp_side_);
     const double radius = comp_radius(words);
     std::vector<CompPiece> pieces;
     programmed_end = to;
     const std::string_view motion = flags_.motion;
+    if (motion == fn::linear && drawing_words(view) && quiet) {
+        // Read ahead: the direction towards the named end is enough for the corner (a corner
+        // word or an angle-only block is resolved when the block runs).
+        if (motion::norm(plane_point(to) - plane_point(start)) <= 1e-9) return std::nullopt;
+        pieces.push_back({with_comp({plane_point(start), plane_point(to)}, side, radius), to});
+        return pieces;
+    }
     if (motion == fn::linear && drawing_words(view)) {
         const Position tool = position_;
         position_ = start;   // the resolver measures from the programmed path
@@ -93,15 +100,24 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
     const motion::P2 a = plane_point(start), b = plane_point(to);
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
         const motion::ArcResult arc = arc_geometry(motion == fn::circular_cw, start, to, words);
+        if (!arc && quiet) return std::nullopt;   // its alarm comes when the block runs
+        if (!arc && arc.error().code == motion::ArcErrorCode::r_zero_chord) {
+            // FANUC runs an R arc whose end is its start as a 0° arc (semantics.md §3, arc_move).
+            Event m = event_at(EventKind::message, *frame_, view);
+            m.text = "arc with R whose end point is its start point: no motion (a 0° arc)";
+            emit(m);
+            return pieces;
+        }
         if (!arc) {
-            alarm(*frame_, view, arc.error().fanuc_alarm, fmt::format("arc: {}", motion::describe(arc.error().code)));
+            alarm(*frame_, view, arc.error().fanuc_alarm,
+                  fmt::format("arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code), arc.error().found,
+                              arc.error().allowed));
             return std::nullopt;
         }
         const motion::PlanePoint c = motion::to_plane(arc.arc().center, plane());
         pieces.push_back({with_comp({a, b, true, {c.first, c.second}, !arc.arc().cw}, side, radius), to});
         return pieces;
     }
-    (void)moves;
     pieces.push_back({with_comp({a, b}, side, radius), to});
     return pieces;
 }
@@ -140,7 +156,7 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
             if (moves || full_circle(words)) {
                 const int side_before = comp_side_;
                 Position end;
-                const auto pieces = comp_pieces(next, words, from, to, moves, end);
+                const auto pieces = comp_pieces(next, words, from, to, true, end);
                 comp_side_ = side_before;
                 if (pieces && !pieces->empty()) out = pieces->front().programmed;
                 stop = true;
@@ -175,20 +191,38 @@ bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool c
     return true;
 }
 
-bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves) {
+bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves_words) {
+    bool moves = moves_words;
     const Position start = comp_path_.value_or(position_);
     if (scan_.classes & kPathChangerCode) note_path_changers(view);   // G43 approach, G112 ... not modelled here
     const bool circle = full_circle(words);
     const int side = comp_side_of_block(comp_side_);
+    // An angle-only block of direct drawing moves without axis words (semantics.md §10.1).
+    moves = moves || (drawing_words(view) && flags_.motion == fn::linear);
     const bool immediate = !moves && !circle && side != 0 && !radius_comp_.engaged() && setup_.comp_shift_without_motion;
     if (!moves && !circle && !immediate) {
         comp_side_ = side;   // G41/G42/G40 without motion: in force from the next move
         return false;
     }
+    // A move off the plane (a Z plunge in G17, a C turn): the offset stays, the compensation
+    // starts or goes on with the next move in the plane ([FANUC]; semantics.md §5 "blocks
+    // without motion in the plane").
+    const bool arc = flags_.motion == fn::circular_cw || flags_.motion == fn::circular_ccw;
+    const bool in_plane = arc || drawing_words(view) || motion::norm(plane_point(to) - plane_point(start)) > 1e-9;
+    if (!in_plane && !immediate) {
+        comp_side_ = side;
+        const Position end = plane_position(plane_point(position_), to);
+        move(flags_.motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+        if (radius_comp_.engaged()) {
+            comp_path_ = plane_position(plane_point(start), to);
+            programmed_ = to;
+        }
+        return true;
+    }
     Position programmed_end = to;
-    const auto pieces = comp_pieces(view, words, start, to, moves, programmed_end);
+    const auto pieces = comp_pieces(view, words, start, to, false, programmed_end);
     comp_side_ = side;
-    if (!pieces) return false;
+    if (!pieces || pieces->empty()) return false;
     const bool rapid = flags_.motion == fn::rapid;
     const double radius = comp_radius(words);
     for (std::size_t i = 0; i < pieces->size(); ++i) {
