@@ -332,6 +332,32 @@ private:
     // The resolver's view of a block whose words are `words`, programmed from `start` to `to`.
     drawing::Block drawing_block(const ast::BlockView& view, const BlockWords& words, bool linear, const Position& start,
                                  const Position& to);
+    // Reading a block ahead (direct drawing, compensation): the running block's scan, view,
+    // position, programmed point and modal flags come back when this goes out of scope.
+    struct ReadAhead {
+        Executor& ex;
+        BlockScan scan;
+        const ast::BlockView* view;
+        Position position;
+        std::optional<Position> programmed;
+        ModalFlags flags;
+        ReadAhead(Executor& e, const Frame& f, const ast::BlockView& next, std::uint32_t index)
+            : ex(e), scan(e.scan_), view(e.view_), position(e.position_), programmed(e.programmed_), flags(e.flags_) {
+            ex.view_ = nullptr;
+            ex.scan_block(f, next);
+            ex.scan_.block = index;
+            ex.view_ = &next;
+        }
+        ~ReadAhead() {
+            ex.scan_ = scan;
+            ex.view_ = view;
+            ex.position_ = position;
+            ex.programmed_ = programmed;
+            ex.flags_ = flags;
+        }
+        ReadAhead(const ReadAhead&) = delete;
+        ReadAhead& operator=(const ReadAhead&) = delete;
+    };
     // The next code block after block `after` (up to block `last` when given) as the resolver
     // sees it, programmed from `from`; nullopt when there is none. Restores the running scan.
     std::optional<drawing::Block> look_ahead(std::uint32_t after, std::optional<std::uint32_t> last, const Position& from);
@@ -374,12 +400,9 @@ private:
                                                       const Position& start, const Position& to, bool quiet,
                                                       Position& programmed_end);
     // The next motion block's first element (look-ahead; up to two blocks without motion between).
-    std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from,
-                                                            const compensation::Programmed& current);
+    std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from);
     bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
                         const ast::BlockView& view);
-    // G70 with compensation: the profile's moves as the tool runs them (executor_compensation.cpp).
-    std::optional<cycles::Profile> compensated_profile(const cycles::Profile& profile);
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);

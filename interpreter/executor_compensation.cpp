@@ -80,7 +80,7 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
         // Read ahead: the direction towards the named end is enough for the corner (a corner
         // word or an angle-only block is resolved when the block runs).
         if (motion::norm(plane_point(to) - plane_point(start)) <= 1e-9) return std::nullopt;
-        pieces.push_back({with_comp({plane_point(start), plane_point(to)}, side, radius), to});
+        pieces.push_back({with_comp({plane_point(start), plane_point(to), false, {}, true}, side, radius), to});
         return pieces;
     }
     if (motion == fn::linear && drawing_words(view)) {
@@ -118,11 +118,11 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
         pieces.push_back({with_comp({a, b, true, {c.first, c.second}, !arc.arc().cw}, side, radius), to});
         return pieces;
     }
-    pieces.push_back({with_comp({a, b}, side, radius), to});
+    pieces.push_back({with_comp({a, b, false, {}, true}, side, radius), to});
     return pieces;
 }
 
-std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const Position& from, const Programmed& current) {
+std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const Position& from) {
     const Frame& f = *frame_;
     const LoadedFile& file = file_of(f);
     // [FANUC] up to two blocks without motion in the plane between (semantics.md §5).
@@ -131,16 +131,8 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
         const ast::BlockView next = file.block(b);
         if (next.block().kind != ast::BlockKind::code) continue;
         if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
-        const BlockScan saved_scan = scan_;
-        const ast::BlockView* saved_view = view_;
-        const Position saved_position = position_;
-        const std::optional<Position> saved_programmed = programmed_;
-        const ModalFlags saved_flags = flags_;
-        view_ = nullptr;
-        scan_block(f, next);
-        scan_.block = b;
-        view_ = &next;
         std::optional<Programmed> out;
+        const ReadAhead guard(*this, f, next, b);
         // A cycle, a call or a return ends the look-ahead: the element then ends perpendicular.
         bool stop = scan_.macro_call || (scan_.classes & kCycleCode);
         for (const ast::CodeRef& c : scan_.m)
@@ -164,15 +156,9 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
         } else {
             stop = true;
         }
-        flags_ = saved_flags;
-        programmed_ = saved_programmed;
-        position_ = saved_position;
-        scan_ = saved_scan;
-        view_ = saved_view;
         if (out || stop) return out;
         ++idle;
     }
-    (void)current;
     return std::nullopt;
 }
 
@@ -224,11 +210,10 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
     comp_side_ = side;
     if (!pieces || pieces->empty()) return false;
     const bool rapid = flags_.motion == fn::rapid;
-    const double radius = comp_radius(words);
     for (std::size_t i = 0; i < pieces->size(); ++i) {
         const Programmed& cur = (*pieces)[i].programmed;
         const std::optional<Programmed> next = i + 1 < pieces->size() ? std::optional<Programmed>((*pieces)[i + 1].programmed)
-                                                                         : comp_look_ahead(scan_.block, programmed_end, cur);
+                                                                         : comp_look_ahead(scan_.block, programmed_end);
         if (stopped_) return false;   // the block read ahead raised an alarm
         const bool cancels = radius_comp_.engaged() && cur.side == 0;
         const compensation::Step step = radius_comp_.step(cur, next);
@@ -239,7 +224,6 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
         }
         if (!run_comp_moves(step, rapid, cancels, (*pieces)[i].end, view)) return true;
     }
-    (void)radius;
     if (radius_comp_.engaged()) {
         comp_path_ = pieces->empty() ? start : pieces->back().end;
         programmed_ = programmed_end;
