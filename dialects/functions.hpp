@@ -57,6 +57,14 @@ inline constexpr std::string_view stroke_check_off = "stroke-check-off";
 // "work-coordinate-1" ... "work-coordinate-6" are G54 ... G59.
 inline constexpr std::string_view work_coordinate_prefix = "work-coordinate-";
 
+// Compensation (reference/semantics.md §5–§7; interpreter/executor_compensation.cpp).
+inline constexpr std::string_view radius_comp_cancel = "radius-comp-cancel";
+inline constexpr std::string_view radius_comp_left = "radius-comp-left";
+inline constexpr std::string_view radius_comp_right = "radius-comp-right";
+inline constexpr std::string_view tool_length_comp_plus = "tool-length-comp-plus";
+inline constexpr std::string_view tool_length_comp_minus = "tool-length-comp-minus";
+inline constexpr std::string_view tool_length_comp_cancel = "tool-length-comp-cancel";
+
 // Canned cycles (reference/cycles.md; interpreter/cycles/ expands them).
 inline constexpr std::string_view finishing_cycle = "finishing-cycle";
 inline constexpr std::string_view rough_turning_cycle = "rough-turning-cycle";

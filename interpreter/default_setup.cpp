@@ -101,6 +101,12 @@ Setup make_setup(const machine::Machine& m) {
     s.arc_enlarge_small_r = sw.arc_radius_mismatch == machine::ArcMismatch::enlarge;
     s.atan_minus_180 = sw.atan_range == machine::AtanRange::minus_180_to_180;
     s.dwell_f_seconds = sw.dwell_f_word == machine::DwellF::seconds;
+    s.radius_comp.start = sw.cutter_comp_startup == machine::CompStartup::type_a ? compensation::StartType::a
+                                                                                  : compensation::StartType::b;
+    s.radius_comp.corners = sw.cutter_comp_corners == machine::CompCorners::arc ? compensation::CornerStyle::arc
+                                                                                : compensation::CornerStyle::intersection;
+    s.comp_shift_without_motion = sw.comp_shift_without_motion;
+    s.g41_g42_swapped = sw.g41_g42_swapped;
     s.tool_offset_count = m.tool_offset_count;
     for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);
     s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/compensation/radius_compensation.hpp"
 #include "interpreter/cycles/context.hpp"
 #include "interpreter/direct_drawing.hpp"
 #include "interpreter/interpreter.hpp"
@@ -255,7 +256,8 @@ private:
                                   kPlaneYZCode = 192,   // the plane: two bits
                                   kOneShotCode = 256,   // group 00 (G04, G10, G28, G53 ...)
                                   kMotionCode = 512,    // group 01 (G00–G03, G32, modal cycles)
-                                  kPositionOffsetCode = 1024;   // G45–G48
+                                  kPositionOffsetCode = 1024,   // G45–G48
+                                  kRadiusCompCode = 2048;   // G40/G41/G42 (executor_compensation.cpp)
     std::vector<std::uint16_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
     void note_path_changers(const ast::BlockView& view);
@@ -338,6 +340,32 @@ private:
     // The resolver's view of a block whose words are `words`, programmed from `start` to `to`.
     drawing::Block drawing_block(const ast::BlockView& view, const BlockWords& words, bool linear, const Position& start,
                                  const Position& to);
+    // Reading a block ahead (direct drawing, compensation): the running block's scan, view,
+    // position, programmed point and modal flags come back when this goes out of scope.
+    struct ReadAhead {
+        Executor& ex;
+        BlockScan scan;
+        const ast::BlockView* view;
+        Position position;
+        std::optional<Position> programmed;
+        ModalFlags flags;
+        ReadAhead(Executor& e, const Frame& f, const ast::BlockView& next, std::uint32_t index)
+            : ex(e), scan(e.scan_), view(e.view_), position(e.position_), programmed(e.programmed_), flags(e.flags_) {
+            ex.view_ = nullptr;
+            ex.scan_block(f, next);
+            ex.scan_.block = index;
+            ex.view_ = &next;
+        }
+        ~ReadAhead() {
+            ex.scan_ = scan;
+            ex.view_ = view;
+            ex.position_ = position;
+            ex.programmed_ = programmed;
+            ex.flags_ = flags;
+        }
+        ReadAhead(const ReadAhead&) = delete;
+        ReadAhead& operator=(const ReadAhead&) = delete;
+    };
     // The next code block after block `after` (up to block `last` when given) as the resolver
     // sees it, programmed from `from`; nullopt when there is none. Restores the running scan.
     std::optional<drawing::Block> look_ahead(std::uint32_t after, std::optional<std::uint32_t> last, const Position& from);
@@ -356,6 +384,33 @@ private:
     bool position_offset_arc(const ast::BlockView& view, const BlockWords& words, bool cw, double change,
                              const Position& start, const Position& to);
     bool drawing_words(const ast::BlockView& view) const { return scan_.comma_words || scan_.direct_drawing; }
+    // --- cutter / nose radius compensation G40–G42 (executor_compensation.cpp, semantics.md §5,
+    // §6). While the tool stands at an offset point, position_ is the tool (centre, or the
+    // imaginary tip on a lathe), programmed_ the programmed point and comp_path_ the point of the
+    // programmed path (they differ past a direct-drawing corner).
+    compensation::RadiusCompensation radius_comp_{setup_.radius_comp};
+    int comp_side_ = 0;                     // modal: +1 G41, −1 G42, 0 G40
+    std::optional<Position> comp_path_;
+    bool compensating() const { return comp_side_ != 0 || radius_comp_.engaged(); }
+    // The block's motion under compensation (or its G40–G42 without motion); true when it moved.
+    bool compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves);
+    int comp_side_of_block(int current) const;
+    bool full_circle(const BlockWords& words) const;          // the side the block's G40–G42 set
+    double comp_radius(const BlockWords& words) const;  // mm: D register (mill), nose radius (lathe)
+    motion::P2 tip_offset() const;                       // lathe: nose centre → imaginary tip
+    struct CompPiece {
+        compensation::Programmed programmed;
+        Position end;                                    // the programmed end, work coordinates
+    };
+    // The block's programmed elements from `start` (a line, an arc, or the direct-drawing pieces);
+    // `quiet` (read ahead): no message or alarm, nullopt instead.
+    std::optional<std::vector<CompPiece>> comp_pieces(const ast::BlockView& view, const BlockWords& words,
+                                                      const Position& start, const Position& to, bool quiet,
+                                                      Position& programmed_end);
+    // The next motion block's first element (look-ahead; up to two blocks without motion between).
+    std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from);
+    bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
+                        const ast::BlockView& view);
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);

@@ -28,9 +28,9 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
 // Function ids (docs/functions.md) whose path the trace does not model yet.
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
-    "radius-comp-left", "radius-comp-right", "polar-interpolation-on", "cylindrical-interpolation",
+    "polar-interpolation-on", "cylindrical-interpolation",
     "corner-slowdown", "arc-approach", "arc-exit",
-    "tool-length-comp-plus", "tool-length-comp-minus", "polar-coordinate-command", "scaling", "mirror",
+    "polar-coordinate-command", "scaling", "mirror",
 };
 
 }  // namespace
@@ -55,6 +55,8 @@ void Executor::classify_codes() {
         if (codes[i].binder_traits & dialects::CodeInfo::kMotionGroup) code_class_[i] |= kMotionCode;
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
+        if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)
+            code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
         // The modal flags update_flags() derives (executor.cpp).
         if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;
         if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;

@@ -81,12 +81,7 @@ std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::opt
         if (next.block().kind != ast::BlockKind::code) continue;
         if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
         // Read with the executor's own word evaluation; the running block's scan comes back after.
-        const BlockScan saved_scan = scan_;
-        const ast::BlockView* saved_view = view_;
-        const Position saved_position = position_;
-        view_ = nullptr;
-        scan_block(f, next);
-        view_ = &next;
+        const ReadAhead guard(*this, f, next, scan_.block);
         // The chain is G01 (only G01 blocks are drawn): the next block is G01 unless it says otherwise.
         std::string_view motion = fn::linear;
         for (const ast::CodeRef& c : scan_.g)
@@ -99,9 +94,6 @@ std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::opt
             const Position to = target_position(words, moves);
             out = drawing_block(next, words, motion == fn::linear, from, to);
         }
-        position_ = saved_position;
-        scan_ = saved_scan;
-        view_ = saved_view;
         return out;
     }
     return std::nullopt;

@@ -177,6 +177,8 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     // which the block's coordinates are measured from (executor_drawing.cpp).
     const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
     if (apply_cycle(view, words, moves, to)) return false;
+    // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
+    if ((scan_.classes & kRadiusCompCode) || compensating()) return compensate_motion(view, words, to, moves);
     if (drawing_words(view) && flags_.motion == fn::linear) return draw_block(view, words, programmed_.value_or(position_), to);
     if (const auto factor = position_offset_factor(); factor && moves)
         return position_offset_move(view, words, *factor, programmed_.value_or(position_), to);

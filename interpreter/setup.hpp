@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "interpreter/compensation/radius_compensation.hpp"
 #include "interpreter/cycles/settings.hpp"
 #include "interpreter/events.hpp"
 
@@ -63,6 +64,10 @@ struct Setup {
     std::uint64_t step_limit = 10'000'000;
     int max_call_depth = 4;            // M98 nesting ([FANUC], dialects.md §3.6)
     int max_macro_depth = 4;           // G65/G66 nesting
+    // G40–G42 (semantics.md §5, §6): start-up/cancel type, corner style (FANUC C / ADV400 arcs).
+    compensation::Settings radius_comp;
+    bool comp_shift_without_motion = false;   // seed 004: `G42 D02` alone moves the centre at once (§6)
+    bool g41_g42_swapped = false;             // G41 = right (ADV400 list, semantics.md §12.12)
     cycles::Settings cycles;           // persistent cycle parameters and cycle switches (cycles.md §0, §21)
 };
 

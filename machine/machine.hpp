@@ -54,6 +54,7 @@ enum class ReturnLevel { initial, r_point };            // G98 / G99 (canned cyc
 enum class ArcLargeR { negative_r, reject };            // R < 0 → arc > 180° (semantics.md §3, §12.5)
 enum class ArcMismatch { alarm, enlarge };              // |chord| > 2|R| (semantics.md §3)
 enum class CompStartup { type_a, type_b };              // cutter compensation start-up (semantics.md §6)
+enum class CompCorners { intersection, arc };          // outside corners: FANUC C or ADV400 arcs (semantics.md §6)
 enum class DwellUnit { ms, s };                         // G04 P (semantics.md §8.2)
 enum class DwellF { seconds, reject };                  // `G4F1` (semantics.md §8.2, §12.15)
 enum class AllowanceU { diameter, radius };             // G71–G73 Δu (dialects.md §11.2, cycles.md §21.2)
@@ -109,6 +110,8 @@ struct Switches {
     double arc_tolerance = 0.01;                              // mm; semantics.md §3 "within tolerance" [inference]
     CompStartup cutter_comp_startup = CompStartup::type_b;    // semantics.md §6 "type A/B (a parameter, default B)"
     bool g41_g42_swapped = false;                             // gcode-tables.md §8.5, semantics.md §12.12 (ADV400 list)
+    CompCorners cutter_comp_corners = CompCorners::intersection;   // semantics.md §6 (ADV400: arcs)
+    bool comp_shift_without_motion = false;                   // semantics.md §6 (seed 004 `G42 D02` alone)
 
     // Units of words
     CyclePQUnits cycle_pq_units = CyclePQUnits::increment;    // cycles.md §0, §21.1 ("tens of microns")

@@ -179,6 +179,14 @@ std::vector<SwitchDef> make_defs() {
                                     {{"A", CompStartup::type_a}, {"B", CompStartup::type_b}}, false,
                                     "semantics.md §6 ('type A/B (a parameter, default B)')",
                                     "FANUC cutter compensation start-up and cancel type"));
+    d.push_back(choice<CompCorners>("cutter_comp_corners", &S::cutter_comp_corners,
+                                    {{"intersection", CompCorners::intersection}, {"arc", CompCorners::arc}}, false,
+                                    "semantics.md §6",
+                                    "outside corners under G41/G42: offset paths joined at their intersection, acute ones "
+                                    "extended by the radius (FANUC compensation C), or an arc about the corner (ADV400)"));
+    d.push_back(boolean("comp_shift_without_motion", &S::comp_shift_without_motion, "semantics.md §6 (seed 004 ex. 2)",
+                        "G41/G42 with D in a block without motion moves the tool centre to the offset point at once "
+                        "(iso-legacy-mill); false: the compensation starts with the next move (FANUC)"));
     d.push_back(boolean("g41_g42_swapped", &S::g41_g42_swapped, "gcode-tables.md §2, §8.5; semantics.md §12.12",
                         "G41 = right, G42 = left (the ADV400 code list); false: the text and FANUC"));
     // --- units of words ------------------------------------------------------------------------

@@ -1,0 +1,238 @@
+// Cutter radius compensation (mills, reference semantics.md §6) and tool nose radius
+// compensation (lathes, §5), the executor's side: the block's programmed elements (a line, an
+// arc, the pieces of a direct-drawing block) and the next motion block read ahead go through
+// compensation::RadiusCompensation (the pure state machine), whose tool moves run through
+// move()/cycle_arc() like any other (times, soft limits, machine positions). The radius is the D
+// register's (mill) or the nose radius of the T offset (lathe); a lathe's controlled point is the
+// imaginary tip, so the nose centre path is shifted by the tip vector (tip 0/9: the centre).
+// Entered from apply_motion only while compensation is asked for or engaged.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dialects/functions.hpp"
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+using compensation::Programmed;
+
+// G02/G03 with only I/J/K: a full circle (semantics.md §3); data words (G28 K) are not centres.
+bool Executor::full_circle(const BlockWords& words) const {
+    if (flags_.motion != fn::circular_cw && flags_.motion != fn::circular_ccw) return false;
+    for (const char letter : {'I', 'J', 'K'})
+        if (const auto* w = words.get(letter); w && !w->data) return true;
+    return false;
+}
+
+int Executor::comp_side_of_block(int current) const {
+    int side = current;
+    for (const ast::CodeRef& c : scan_.g) {
+        if (!c.info || !(code_class_of(*c.info) & kRadiusCompCode)) continue;
+        const std::string_view f = c.info->function;
+        const int left = setup_.g41_g42_swapped ? -1 : 1;   // semantics.md §12.12
+        side = f == fn::radius_comp_cancel ? 0 : f == fn::radius_comp_left ? left : -left;
+    }
+    return side;
+}
+
+double Executor::comp_radius(const BlockWords& words) const {
+    if (dialect_.machine == dialects::MachineKind::lathe) {
+        const auto it = tools_.find(tool_offset_);
+        return it == tools_.end() ? 0 : it->second.nose_radius + it->second.nose_radius_wear;
+    }
+    // The block's D, else the modal one (remember_words keeps it); seed-004 D registers are
+    // signed (semantics.md §9.1): a negative radius puts the tool on the other side.
+    const auto* d = words.get('D');
+    const auto& modal = last_words_[static_cast<std::size_t>('D' - 'A')];
+    const std::optional<double> number = d ? std::optional<double>(d->value) : modal;
+    if (!number) return 0;
+    const auto it = tools_.find(static_cast<int>(std::lround(*number)));
+    return it == tools_.end() ? 0 : it->second.radius + it->second.radius_wear;
+}
+
+motion::P2 Executor::tip_offset() const {
+    if (dialect_.machine != dialects::MachineKind::lathe) return {};
+    const auto it = tools_.find(tool_offset_);
+    if (it == tools_.end()) return {};
+    return compensation::tip_vector(it->second.tip, it->second.nose_radius + it->second.nose_radius_wear);
+}
+
+namespace {
+
+// A signed radius as a side and a size (a negative D register flips the side).
+Programmed with_comp(const motion::Element& path, int side, double radius) {
+    return {path, radius < 0 ? -side : side, std::fabs(radius)};
+}
+
+}  // namespace
+
+std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast::BlockView& view, const BlockWords& words,
+                                                                       const Position& start, const Position& to,
+                                                                       bool quiet, Position& programmed_end) {
+    const int side = comp_side_of_block(comp_side_);
+    const double radius = comp_radius(words);
+    std::vector<CompPiece> pieces;
+    programmed_end = to;
+    const std::string_view motion = flags_.motion;
+    if (motion == fn::linear && drawing_words(view) && quiet) {
+        // Read ahead: the direction towards the named end is enough for the corner (a corner
+        // word or an angle-only block is resolved when the block runs).
+        if (motion::norm(plane_point(to) - plane_point(start)) <= 1e-9) return std::nullopt;
+        pieces.push_back({with_comp({plane_point(start), plane_point(to), false, {}, true}, side, radius), to});
+        return pieces;
+    }
+    if (motion == fn::linear && drawing_words(view)) {
+        const Position tool = position_;
+        position_ = start;   // the resolver measures from the programmed path
+        const auto r = resolve_drawing(view, words, programmed_.value_or(start), start, to, std::nullopt);
+        position_ = tool;
+        if (!r) return std::nullopt;
+        motion::P2 from = plane_point(start);
+        for (const drawing::Move& m : r->moves) {
+            pieces.push_back({with_comp({from, m.end, m.arc, m.center, m.sweep > 0}, side, radius), plane_position(m.end, to)});
+            from = m.end;
+        }
+        programmed_end = plane_position(r->end, to);
+        return pieces;
+    }
+    const motion::P2 a = plane_point(start), b = plane_point(to);
+    if (motion == fn::circular_cw || motion == fn::circular_ccw) {
+        const motion::ArcResult arc = arc_geometry(motion == fn::circular_cw, start, to, words);
+        if (!arc && quiet) return std::nullopt;   // its alarm comes when the block runs
+        if (!arc && arc.error().code == motion::ArcErrorCode::r_zero_chord) {
+            // FANUC runs an R arc whose end is its start as a 0° arc (semantics.md §3, arc_move).
+            Event m = event_at(EventKind::message, *frame_, view);
+            m.text = "arc with R whose end point is its start point: no motion (a 0° arc)";
+            emit(m);
+            return pieces;
+        }
+        if (!arc) {
+            alarm(*frame_, view, arc.error().fanuc_alarm,
+                  fmt::format("arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code), arc.error().found,
+                              arc.error().allowed));
+            return std::nullopt;
+        }
+        const motion::PlanePoint c = motion::to_plane(arc.arc().center, plane());
+        pieces.push_back({with_comp({a, b, true, {c.first, c.second}, !arc.arc().cw}, side, radius), to});
+        return pieces;
+    }
+    pieces.push_back({with_comp({a, b, false, {}, true}, side, radius), to});
+    return pieces;
+}
+
+std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const Position& from) {
+    const Frame& f = *frame_;
+    const LoadedFile& file = file_of(f);
+    // [FANUC] up to two blocks without motion in the plane between (semantics.md §5).
+    int idle = 0;
+    for (std::uint32_t b = after + 1; file.in_program(f.program.program, b) && idle <= 2; ++b) {
+        const ast::BlockView next = file.block(b);
+        if (next.block().kind != ast::BlockKind::code) continue;
+        if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
+        std::optional<Programmed> out;
+        const ReadAhead guard(*this, f, next, b);
+        // A cycle, a call or a return ends the look-ahead: the element then ends perpendicular.
+        bool stop = scan_.macro_call || (scan_.classes & kCycleCode);
+        for (const ast::CodeRef& c : scan_.m)
+            stop |= c.info && (c.info->function == fn::subprogram_call || c.info->function == fn::subprogram_return);
+        BlockWords words;
+        if (!stop && evaluate_words(next, words)) {
+            for (const ast::CodeRef& c : scan_.g)
+                if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) flags_.motion = c.info->function;
+            position_ = from;
+            programmed_ = from;
+            bool moves = false;
+            const Position to = target_position(words, moves);
+            if (moves || full_circle(words)) {
+                const int side_before = comp_side_;
+                Position end;
+                const auto pieces = comp_pieces(next, words, from, to, true, end);
+                comp_side_ = side_before;
+                if (pieces && !pieces->empty()) out = pieces->front().programmed;
+                stop = true;
+            }
+        } else {
+            stop = true;
+        }
+        if (out || stop) return out;
+        ++idle;
+    }
+    return std::nullopt;
+}
+
+bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
+                              const ast::BlockView& view) {
+    const motion::P2 tip = tip_offset();
+    for (std::size_t i = 0; i < step.moves.size(); ++i) {
+        const compensation::ToolMove& m = step.moves[i];
+        // The cancel's last move ends on the programmed point itself (no tip shift).
+        const motion::P2 shift = cancels && i + 1 == step.moves.size() ? motion::P2{} : tip;
+        const Position end = plane_position(m.end + shift, like);
+        if (m.arc) cycle_arc(!m.ccw, end, plane_position(m.center + shift, like), view);
+        else move(rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+        if (stopped_) return false;
+    }
+    return true;
+}
+
+bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves_words) {
+    bool moves = moves_words;
+    const Position start = comp_path_.value_or(position_);
+    if (scan_.classes & kPathChangerCode) note_path_changers(view);   // G43 approach, G112 ... not modelled here
+    const bool circle = full_circle(words);
+    const int side = comp_side_of_block(comp_side_);
+    // An angle-only block of direct drawing moves without axis words (semantics.md §10.1).
+    moves = moves || (drawing_words(view) && flags_.motion == fn::linear);
+    const bool immediate = !moves && !circle && side != 0 && !radius_comp_.engaged() && setup_.comp_shift_without_motion;
+    if (!moves && !circle && !immediate) {
+        comp_side_ = side;   // G41/G42/G40 without motion: in force from the next move
+        return false;
+    }
+    // A move off the plane (a Z plunge in G17, a C turn): the offset stays, the compensation
+    // starts or goes on with the next move in the plane ([FANUC]; semantics.md §5 "blocks
+    // without motion in the plane").
+    const bool arc = flags_.motion == fn::circular_cw || flags_.motion == fn::circular_ccw;
+    const bool in_plane = arc || drawing_words(view) || motion::norm(plane_point(to) - plane_point(start)) > 1e-9;
+    if (!in_plane && !immediate) {
+        comp_side_ = side;
+        const Position end = plane_position(plane_point(position_), to);
+        move(flags_.motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+        if (radius_comp_.engaged()) {
+            comp_path_ = plane_position(plane_point(start), to);
+            programmed_ = to;
+        }
+        return true;
+    }
+    Position programmed_end = to;
+    const auto pieces = comp_pieces(view, words, start, to, false, programmed_end);
+    comp_side_ = side;
+    if (!pieces || pieces->empty()) return false;
+    const bool rapid = flags_.motion == fn::rapid;
+    for (std::size_t i = 0; i < pieces->size(); ++i) {
+        const Programmed& cur = (*pieces)[i].programmed;
+        const std::optional<Programmed> next = i + 1 < pieces->size() ? std::optional<Programmed>((*pieces)[i + 1].programmed)
+                                                                         : comp_look_ahead(scan_.block, programmed_end);
+        if (stopped_) return false;   // the block read ahead raised an alarm
+        const bool cancels = radius_comp_.engaged() && cur.side == 0;
+        const compensation::Step step = radius_comp_.step(cur, next);
+        if (step.alarm) {
+            radius_comp_.reset();
+            alarm(*frame_, view, step.alarm->number, step.alarm->text);
+            return false;
+        }
+        if (!run_comp_moves(step, rapid, cancels, (*pieces)[i].end, view)) return true;
+    }
+    if (radius_comp_.engaged()) {
+        comp_path_ = pieces->empty() ? start : pieces->back().end;
+        programmed_ = programmed_end;
+    } else {
+        comp_path_.reset();
+        programmed_.reset();
+        position_ = programmed_end;   // exactly on the programmed point after the cancel
+    }
+    return true;
+}
+
+}  // namespace kerf::interpreter
