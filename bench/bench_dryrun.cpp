@@ -80,14 +80,13 @@ public:
 // thrown away every 1 MiB (cmd_run.cpp flushes at the same size).
 class JsonLinesDiscardSink : public interp::EventSink {
 public:
-    JsonLinesDiscardSink(const interp::ProgramSet& programs, std::string axes)
-        : programs_(programs), axes_(std::move(axes)) {
+    JsonLinesDiscardSink(const interp::ProgramSet& programs, const std::string& axes) : writer_(programs, axes) {
         buffer_.reserve(kFlush + 4096);
     }
     void on_event(const interp::Event& e) override {
         ++events;
-        interp::append_event_json(buffer_, e, programs_, axes_);
-        buffer_ += '\n';
+        writer_.append(buffer_, e);
+        buffer_.push_back('\n');
         if (buffer_.size() >= kFlush) flush();
     }
     void flush() {
@@ -100,9 +99,8 @@ public:
 
 private:
     static constexpr std::size_t kFlush = 1 << 20;
-    const interp::ProgramSet& programs_;
-    std::string axes_;
-    std::string buffer_;
+    interp::TraceWriter writer_;
+    fmt::memory_buffer buffer_;
 };
 
 struct Totals {

@@ -24,14 +24,14 @@ struct RunCliOptions {
 // pieces: memory stays flat however long the trace (docs/trace.md).
 class JsonLinesSink : public interpreter::EventSink {
 public:
-    JsonLinesSink(std::ostream* out, const interpreter::ProgramSet& programs, std::string axes)
-        : out_(out), programs_(programs), axes_(std::move(axes)) {}
+    JsonLinesSink(std::ostream* out, const interpreter::ProgramSet& programs, const std::string& axes)
+        : out_(out), writer_(programs, axes) {}
     ~JsonLinesSink() override { flush(); }
     JsonLinesSink(const JsonLinesSink&) = delete;
     JsonLinesSink& operator=(const JsonLinesSink&) = delete;
     void on_event(const interpreter::Event& e) override {
         if (!out_) return;
-        interpreter::append_event_json(buffer_, e, programs_, axes_);
+        writer_.append(buffer_, e);
         buffer_.push_back('\n');
         if (buffer_.size() >= kFlushBytes) flush();
     }
@@ -43,8 +43,7 @@ public:
 private:
     static constexpr std::size_t kFlushBytes = 1 << 20;
     std::ostream* out_;
-    const interpreter::ProgramSet& programs_;
-    std::string axes_;
+    interpreter::TraceWriter writer_;
     fmt::memory_buffer buffer_;
 };
 

@@ -1,9 +1,11 @@
 #include "interpreter/trace_json.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <boost/json.hpp>
 #include <cmath>
+#include <cstdint>
 #include <iterator>
 
 namespace kerf::interpreter {
@@ -30,9 +32,39 @@ using Buffer = fmt::memory_buffer;
 
 void put(Buffer& out, std::string_view text) { out.append(text.data(), text.data() + text.size()); }
 
-void put_number(Buffer& out, double v) { fmt::format_to(std::back_inserter(out), "{}", snap(v)); }
+void put_int(Buffer& out, long long v) { fmt::format_to(std::back_inserter(out), FMT_COMPILE("{}"), v); }
 
-void put_int(Buffer& out, long long v) { fmt::format_to(std::back_inserter(out), "{}", v); }
+// The shortest text of snap(v), as fmt's "{}" writes it. Fast path: 1e-4 <= |v| < 1e6, where fmt
+// writes fixed notation and the value is m / 1e9 for an integer m; at most 6 + 9 significant
+// digits, so the decimal digits of m (trailing zeros dropped) are the shortest text that reads
+// back as the same double (any decimal of 15 digits or fewer round-trips, DBL_DIG). Elsewhere fmt.
+void put_number(Buffer& out, double v) {
+    const double s = snap(v);
+    const double a = std::fabs(s);
+    if (s == 0) {
+        out.push_back('0');
+        return;
+    }
+    if (!(a >= 1e-4 && a < 1e6)) {
+        fmt::format_to(std::back_inserter(out), FMT_COMPILE("{}"), s);
+        return;
+    }
+    const std::int64_t m = std::llround(a * 1e9);
+    const std::int64_t whole = m / 1'000'000'000;
+    std::int64_t fraction = m % 1'000'000'000;
+    if (s < 0) out.push_back('-');
+    put_int(out, whole);
+    if (fraction == 0) return;
+    char digits[9];
+    for (int i = 8; i >= 0; --i) {
+        digits[i] = static_cast<char>('0' + fraction % 10);
+        fraction /= 10;
+    }
+    int length = 9;
+    while (digits[length - 1] == '0') --length;
+    out.push_back('.');
+    out.append(digits, digits + length);
+}
 
 void write_string(Buffer& out, std::string_view s) {
     out.push_back('"');
@@ -51,13 +83,26 @@ void write_string(Buffer& out, std::string_view s) {
     out.push_back('"');
 }
 
-void write_position(Buffer& out, std::string_view key, const Position& p, std::string_view axes) {
+void write_field(Buffer& out, std::string_view key, double v) {
+    put(out, ",\"");
+    put(out, key);
+    put(out, "\":");
+    put_number(out, v);
+}
+
+}  // namespace
+
+TraceWriter::TraceWriter(const ProgramSet& programs, std::string_view axes) : programs_(programs) {
+    for (std::size_t a = 0; a < kAxisCount; ++a)
+        if (axes.find(kAxisLetters[a]) != std::string_view::npos) axes_.push_back(a);
+}
+
+void TraceWriter::write_position(Buffer& out, std::string_view key, const Position& p) const {
     put(out, ",\"");
     put(out, key);
     put(out, "\":{");
     bool first = true;
-    for (std::size_t a = 0; a < kAxisCount; ++a) {
-        if (axes.find(kAxisLetters[a]) == std::string_view::npos) continue;
+    for (const std::size_t a : axes_) {
         if (!first) out.push_back(',');
         out.push_back('"');
         out.push_back(kAxisLetters[a]);
@@ -68,26 +113,23 @@ void write_position(Buffer& out, std::string_view key, const Position& p, std::s
     out.push_back('}');
 }
 
-void write_field(Buffer& out, std::string_view key, double v) {
-    put(out, ",\"");
-    put(out, key);
-    put(out, "\":");
-    put_number(out, v);
-}
-
-}  // namespace
-
-void append_event_json(fmt::memory_buffer& out, const Event& e, const ProgramSet& programs, std::string_view axes) {
+void TraceWriter::append(fmt::memory_buffer& out, const Event& e) {
+    // Files join the set while the run goes on (subprograms from the folder).
+    while (quoted_names_.size() < programs_.file_count()) {
+        Buffer quoted;
+        write_string(quoted, programs_.file(static_cast<std::uint32_t>(quoted_names_.size())).name());
+        quoted_names_.emplace_back(quoted.data(), quoted.size());
+    }
     put(out, "{\"kind\":\"");
     put(out, to_string(e.kind));
     put(out, "\",\"file\":");
-    write_string(out, programs.file(e.source.file).name());
+    put(out, quoted_names_[e.source.file]);
     put(out, ",\"line\":");
     put_int(out, e.source.line);
-    write_position(out, "end", e.end, axes);
-    write_position(out, "machine", e.machine_end, axes);
+    write_position(out, "end", e.end);
+    write_position(out, "machine", e.machine_end);
     if (is_motion(e.kind)) {
-        write_position(out, "start", e.start, axes);
+        write_position(out, "start", e.start);
         write_field(out, "length_mm", e.length_mm);
         write_field(out, "time_s", e.time_s);
         if (e.kind != EventKind::rapid) {
@@ -98,7 +140,7 @@ void append_event_json(fmt::memory_buffer& out, const Event& e, const ProgramSet
         }
     }
     if (e.center) {
-        write_position(out, "center", *e.center, axes);
+        write_position(out, "center", *e.center);
         write_field(out, "radius", e.radius);
     }
     if (e.kind == EventKind::dwell) write_field(out, "time_s", e.time_s);
@@ -114,6 +156,10 @@ void append_event_json(fmt::memory_buffer& out, const Event& e, const ProgramSet
         write_string(out, e.text);
     }
     out.push_back('}');
+}
+
+void append_event_json(fmt::memory_buffer& out, const Event& e, const ProgramSet& programs, std::string_view axes) {
+    TraceWriter(programs, axes).append(out, e);
 }
 
 void append_event_json(std::string& line, const Event& e, const ProgramSet& programs, std::string_view axes) {
