@@ -15,7 +15,7 @@ FixResult apply_fixes(std::string_view text, const std::vector<Finding>& finding
     for (const Fix* fix : fixes) {
         const bool overlaps = std::any_of(fix->edits.begin(), fix->edits.end(), [&](const TextEdit& e) {
             return std::any_of(edits.begin(), edits.end(), [&](const TextEdit& taken) {
-                return e.range.begin < taken.range.end && taken.range.begin < e.range.end ||
+                return (e.range.begin < taken.range.end && taken.range.begin < e.range.end) ||
                        (e.range.begin == taken.range.begin && (e.range.size() == 0 || taken.range.size() == 0));
             });
         });

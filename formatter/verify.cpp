@@ -42,7 +42,10 @@ bool compares_text(EventKind k) { return k != EventKind::alarm && k != EventKind
 // The step-limit alarm (interpreter/executor.cpp) ends an endless program wherever the count of
 // blocks runs out, and formatting changes that count (blank and comment lines are blocks): two
 // endless runs are compared up to the first such alarm.
-bool is_step_limit(const Event& e) { return e.kind == EventKind::alarm && e.code == 0 && e.text.starts_with("step limit"); }
+// The step limit has kerf's own alarm number (interpreter/events.hpp kerf_alarm, docs/trace.md).
+bool is_step_limit(const Event& e) {
+    return e.kind == EventKind::alarm && e.code == interpreter::kerf_alarm::step_limit;
+}
 
 // The input's events, handed from its run (on a thread of its own) to the output's run in batches,
 // so that memory stays bounded however long the trace is.

@@ -33,6 +33,7 @@ void set_axes(Setup& s, const machine::Machine& m) {
         s.rapid_mm_min[i] = axis.rapid;
         s.accel_mm_s2[i] = axis.acceleration;
         s.rotary[i] = axis.rotary;
+        s.carries_tool[i] = axis.carries_tool;
         s.soft_limits[i] = {axis.min, axis.max};
     }
 }

@@ -34,6 +34,15 @@ enum class EventKind : std::uint8_t {
 };
 const char* to_string(EventKind k);
 
+// Alarm numbers of kerf's own (check3), outside FANUC's ranges (PS/macro 000–5999 incl. #3000 user
+// alarms and SPINNER 3011/3012, OT500/501), so a consumer can tell them from the control's alarms
+// (docs/trace.md "Alarms").
+namespace kerf_alarm {
+inline constexpr int step_limit = 90001;     // the run's step limit: an endless loop?
+inline constexpr int syntax_error = 90002;   // a block with syntax errors in a strict (not lenient) run
+inline constexpr int internal = 90003;       // a tree the evaluator does not know (macro M0901)
+}  // namespace kerf_alarm
+
 struct Event {
     EventKind kind = EventKind::rapid;
     SourceRef source;
@@ -47,7 +56,7 @@ struct Event {
     double feed = 0;                     // motion: programmed feed (mm/min or mm/rev, see feed_per_rev)
     bool feed_per_rev = false;
     double spindle_rpm = 0;              // the rpm the time uses (G96: at the end point)
-    bool spindle_running = true;         // feed moves: false when the spindle is stopped (M05)
+    bool spindle_running = true;         // feed moves: false when the spindle is stopped (M05); spindle: M03/M04 vs M05
     int tool = 0;                        // tool_change: the tool number; otherwise the active tool
     int code = 0;                        // alarm number, M code, call target ...
     std::string text;                    // alarm/message text, DPRNT output

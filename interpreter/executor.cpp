@@ -200,7 +200,8 @@ RunResult Executor::run(ProgramRef main) {
         if (++result_.blocks > setup_.step_limit) {
             const ast::BlockView view = file_of(f).block(f.block);
             view_ = nullptr;
-            alarm(f, view, 0, fmt::format("step limit of {} blocks reached: endless loop?", setup_.step_limit));
+            // check3: kerf's own number, so K4004 sees only this (events.hpp kerf_alarm)
+            alarm(f, view, kerf_alarm::step_limit, fmt::format("step limit of {} blocks reached: endless loop?", setup_.step_limit));
             break;
         }
         execute_block(f);
@@ -223,7 +224,7 @@ void Executor::execute_block(Frame& frame) {
     view_ = &view;
     if (block.has(ast::block_flags::has_error)) {
         if (!options_.lenient) {
-            alarm(frame, view, 0, "the block has syntax errors (see the diagnostics of kerf parse)");
+            alarm(frame, view, kerf_alarm::syntax_error, "the block has syntax errors (see the diagnostics of kerf parse)");
             return;
         }
         Event e = event_at(EventKind::message, frame, view);

@@ -292,6 +292,7 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             spindle_on_ = f != fn::spindle_stop;
             e.kind = EventKind::spindle;
             e.spindle_rpm = spindle_on_ ? current_rpm(position_[0]) : 0;
+            e.spindle_running = spindle_on_;   // check3: start or stop, for the analyzer (K5010)
             emit(e);
         } else if (f == fn::tool_change) {
             tool_ = pending_tool_;

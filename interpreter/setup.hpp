@@ -44,6 +44,7 @@ struct Setup {
     Position rapid_mm_min{};           // per axis; 0 = axis absent
     Position accel_mm_s2{};
     std::array<bool, kAxisCount> rotary{false, false, false, true, true, true};   // degrees, not mm: no path length, F in deg/min            // per axis; 0 = acceleration not modelled (motion/time.hpp)
+    std::array<bool, kAxisCount> carries_tool{true, true, true, true, true, true};   // machine/SCHEMA.md axes carries_tool
     std::array<SoftLimit, kAxisCount> soft_limits{};   // stored stroke check 1 (alarm 500/501)
     double max_rpm = 0;                // 0 = no limit
     bool rapid_dogleg = true;          // G00 axes move independently (gcode-tables.md §5)

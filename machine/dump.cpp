@@ -44,6 +44,7 @@ std::string machine_to_toml(const Machine& m) {
         t.insert("rapid", a.rapid);
         t.insert("acceleration", a.acceleration);
         t.insert("rotary", a.rotary);
+        t.insert("carries_tool", a.carries_tool);
         if (a.min) t.insert("min", *a.min);
         if (a.max) t.insert("max", *a.max);
         axes.insert(std::string(1, a.letter), std::move(t));

@@ -140,7 +140,7 @@ public:
                 r_.error(&node, fmt::format("{}: expected a table", where));
                 continue;
             }
-            r_.check_keys(*t, {"rapid", "acceleration", "min", "max", "rotary", "present"}, where);
+            r_.check_keys(*t, {"rapid", "acceleration", "min", "max", "rotary", "carries_tool", "present"}, where);
             const std::string prefix = where + ".";
             if (const auto present = r_.boolean(*t, "present", prefix); present && !*present) {
                 std::erase_if(m_.axes, [&](const Axis& a) { return a.letter == *letter; });
@@ -157,6 +157,7 @@ public:
             }
             Axis& a = *it;
             if (const auto v = r_.boolean(*t, "rotary", prefix)) a.rotary = *v;
+            if (const auto v = r_.boolean(*t, "carries_tool", prefix)) a.carries_tool = *v;
             if (const auto v = r_.number(*t, "rapid", prefix, 0, 1e7)) a.rapid = *v;
             if (const auto v = r_.number(*t, "acceleration", prefix, 0, 1e7)) a.acceleration = *v;
             if (const auto v = r_.number(*t, "min", prefix, -1e7, 1e7)) a.min = *v;

@@ -170,6 +170,7 @@ double increment_mm(InputIncrement increment);
 struct Axis {
     char letter = 'X';
     bool rotary = false;
+    bool carries_tool = true;  // false: no cutting tool rides on it (lathe tailstock / transfer B): a feed of it alone cuts nothing
     double rapid = 0;          // mm/min (deg/min for rotary axes)
     double acceleration = 0;   // mm/s² (deg/s²)
     std::optional<double> min; // soft limits in machine coordinates (X as diameter when diameter_x)

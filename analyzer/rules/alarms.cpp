@@ -6,7 +6,10 @@ namespace kerf::analyzer::rules {
 
 void add_alarms(Registry& r) {
     using S = Severity;
-    r.add(alarm_rule("K4004", "endless-loop", Category::macro, S::error, {{0, 0}},
+    // The step limit has kerf's own alarm number (interpreter/events.hpp kerf_alarm), so no other
+    // alarm of the run reads as an endless loop.
+    constexpr int step_limit = interpreter::kerf_alarm::step_limit;
+    r.add(alarm_rule("K4004", "endless-loop", Category::macro, S::error, {{step_limit, step_limit}},
         {"The dry run reached its step limit: a loop that never ends.",
          "On the machine the program never finishes (or repeats cuts forever).",
          "N1 GOTO 1", "#1=0\nWHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "interpreter Setup::step_limit"}));
@@ -34,7 +37,8 @@ void add_alarms(Registry& r) {
         {"G30 with P other than 1 to 4.", "The control stops with alarm 046.", "G30 P5 Z0.", "G30 P3 Z0.",
          "semantics.md §2.8"}));
     r.add(alarm_rule("K4099", "interpreter-alarm", Category::dialect, S::error, {{1, 99999}},
-        {"Any other alarm of the dry run, one without a rule of its own (alarm 115: variable number out of range ...).",
+        {"Any other alarm of the dry run, one without a rule of its own (alarm 115: variable number out of range ...; "
+         "kerf's own 90003: an expression the interpreter cannot evaluate).",
          "The control stops at this block.", "#1=#[-5]", "#1=#5",
          "interpreter/executor*.cpp"}));
     r.add(alarm_rule("K5014", "arc-radius-mismatch", Category::motion, S::error, {{20, 21}},

@@ -81,8 +81,18 @@ struct PerMinLowSay {
     }
 };
 
+// A feed move of axes that carry no cutting tool (the machine's `carries_tool = false`: the lathe
+// tailstock / sub-spindle carriage B of G138 and G38, cycles.md §12, §16) cuts nothing.
+bool moves_a_tool(const interpreter::Setup& setup, const Event& e) {
+    for (std::size_t a = 0; a < interpreter::kAxisCount; ++a)
+        if (setup.carries_tool[a] && std::abs(e.end[a] - e.start[a]) > 1e-9) return true;
+    return false;
+}
+
 struct NoTool {
-    bool operator()(const RunContext&, const Event& e) const { return is_feed_move(e) && e.tool == 0 && e.length_mm > 0; }
+    bool operator()(const RunContext& run, const Event& e) const {
+        return is_feed_move(e) && e.tool == 0 && e.length_mm > 0 && moves_a_tool(run.setup, e);
+    }
 };
 struct NoToolSay {
     std::pair<std::string, std::string> operator()(const Event&) const {
@@ -91,10 +101,9 @@ struct NoToolSay {
 };
 
 struct NoSpeed {
-    bool operator()(const RunContext& run, const Event& e) const {
-        if (e.kind != EventKind::spindle || e.spindle_rpm > 0) return false;
-        const dialects::CodeInfo* code = run.dialect.code('M', e.code * 10);   // spindle events carry their M number
-        return code && (code->function == dialects::functions::spindle_cw || code->function == dialects::functions::spindle_ccw);
+    bool operator()(const RunContext&, const Event& e) const {
+        // A spindle event says whether it starts (M03/M04) or stops the spindle (events.hpp).
+        return e.kind == EventKind::spindle && e.spindle_running && e.spindle_rpm <= 0;
     }
 };
 struct NoSpeedSay {

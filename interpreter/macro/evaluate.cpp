@@ -1,6 +1,7 @@
 // Custom Macro B evaluation. Source tags ([M-16i], [M-0i], [M-30i], [M-15i]) are listed in
 // evaluate.hpp; "kerf" marks a choice of ours where the manuals say nothing.
 #include "interpreter/macro/evaluate.hpp"
+#include "interpreter/events.hpp"   // kerf_alarm::internal (check3)
 
 #include <fmt/format.h>
 
@@ -187,7 +188,7 @@ public:
     // A node of the tree, or nullptr with an error (an index the grammar never makes).
     const Expr* node(std::int32_t index, ast::Range where) {
         if (index < 0 || static_cast<std::size_t>(index) >= tree_.exprs.size()) {
-            fail(where, codes::bad_tree, 0, fmt::format("expression index {} is not in the syntax tree", index));
+            fail(where, codes::bad_tree, kerf_alarm::internal, fmt::format("expression index {} is not in the syntax tree", index));
             return nullptr;
         }
         return &tree_.exprs[static_cast<std::size_t>(index)];
@@ -269,7 +270,7 @@ Value Evaluator::value(std::int32_t index) {
         case ExprKind::binary: return binary(e);
         case ExprKind::function: return function(e);
     }
-    return fail_value(e.range(), codes::bad_tree, 0, "unknown expression node");
+    return fail_value(e.range(), codes::bad_tree, kerf_alarm::internal, "unknown expression node");
 }
 
 // [M-16i] "Variable number: #[<expression>]"; real values where an integer is needed are rounded
@@ -279,7 +280,7 @@ std::optional<int> Evaluator::variable_number(std::int32_t index) {
     if (!ep) return std::nullopt;
     const Expr& e = *ep;
     if (e.kind != ExprKind::variable) {
-        fail(e.range(), codes::bad_tree, 0, fmt::format("`{}` is not a variable", quote(e)));
+        fail(e.range(), codes::bad_tree, kerf_alarm::internal, fmt::format("`{}` is not a variable", quote(e)));
         return std::nullopt;
     }
     const Value index_value = value(e.a);
@@ -348,7 +349,7 @@ Value Evaluator::with_atan2(std::int32_t index, const Expr& divisor, const Expr&
             if (error) return b;
             return apply(e, e.binary_op(), a, b);
         }
-        default: return fail_value(e.range(), codes::bad_tree, 0, "not an ATAN form");
+        default: return fail_value(e.range(), codes::bad_tree, kerf_alarm::internal, "not an ATAN form");
     }
 }
 
@@ -583,7 +584,7 @@ Value Evaluator::function_of(const Expr& e, Value va, Value vb) {
             // increments) is scaled back by Options::adp_factor; any other value is returned as is.
             return checked(e, va.increments ? x * options_.adp_factor : x);
     }
-    return fail_value(e.range(), codes::bad_tree, 0, "unknown function");
+    return fail_value(e.range(), codes::bad_tree, kerf_alarm::internal, "unknown function");
 }
 
 // Comparisons ([M-16i] "Conditional expressions" and "Undefined variables"):
@@ -681,7 +682,7 @@ std::optional<Error> assign(const ast::SyntaxTree& tree, const ast::Statement& s
                             const Options& options) {
     Evaluator ev(tree, variables, options);
     if (statement.kind != ast::StatementKind::assign) {
-        ev.fail(statement.range, codes::bad_tree, 0, "not an assignment statement");
+        ev.fail(statement.range, codes::bad_tree, kerf_alarm::internal, "not an assignment statement");
         return ev.error;
     }
     const Value v = ev.value(statement.value);

@@ -75,7 +75,7 @@ inline constexpr const char* bad_tree = "M0901";          // not an expression t
 struct Error {
     ast::Range range;     // the offending node (operator, function call, variable)
     std::string code;     // codes::...
-    int alarm = 0;        // FANUC alarm number, 0 when there is none
+    int alarm = 0;        // FANUC alarm number; kerf_alarm::internal for M0901 (events.hpp)
     std::string message;  // what is wrong, quoting the text
 };
 

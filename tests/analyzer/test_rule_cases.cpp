@@ -28,6 +28,26 @@ TEST_CASE("K1022 point-on-integer-address: not on the data words of a cycle") {
     CHECK(test::summary(test::check("O0001\nT0101\nM08.\nM30\n", "spinner-lathe-a"), "K1022") == Findings{"3:1 warning K1022"});
 }
 
+// K5008: the machine's axes with carries_tool = false (fanuc-lathe.toml B: tailstock / sub-spindle
+// carriage) move no cutting tool, so a feed of B alone is no cut (cycles.md §12 G38, §16 G138).
+TEST_CASE("K5008 cut-without-tool: not on feeds of the tailstock or transfer axis B") {
+    // 001_O0001_G138_tailstock.nc, 001_O0001_G38_transfer.nc: cycles before any T word.
+    CHECK(test::summary(test::check("O0001\nG138 B-425.8 Q1 S700 T300 J10 E1\nM30\n", "spinner-lathe-a"), "K5008").empty());
+    CHECK(test::summary(test::check("O0001\nG38 B-410. F500 Q1.\nM30\n", "spinner-lathe-a"), "K5008").empty());
+    CHECK(test::summary(test::check("O0001\nG01 B-100. F500\nM30\n", "spinner-lathe-a"), "K5008").empty());
+    // A feed that moves X or Z (the turret) still cuts without a tool, with or without B.
+    CHECK(test::summary(test::check("O0001\nG01 Z-10. F0.2\nM30\n", "spinner-lathe-a"), "K5008") == Findings{"2:1 warning K5008"});
+    CHECK(test::summary(test::check("O0001\nG01 B-100. Z-10. F500\nM30\n", "spinner-lathe-a"), "K5008") == Findings{"2:1 warning K5008"});
+}
+
+// K4004 is the step limit only (kerf_alarm::step_limit): another alarm is not an endless loop.
+TEST_CASE("K4004 endless-loop: only the step limit, not other alarms") {
+    CHECK(test::summary(test::check("O0001\nN1 GOTO 1\nM30\n", "fanuc-lathe-a"), "K4004") == Findings{"2:1 error K4004"});
+    const auto other = test::check("O0001\n#1=#[-5]\nM30\n", "fanuc-lathe-a");
+    CHECK(test::summary(other, "K4004").empty());
+    CHECK(test::summary(other, "K4099") == Findings{"2:1 error K4099"});
+}
+
 TEST_CASE("K5018 tool-without-offset: not on the T word of G138 (thrust limit)") {
     // 001_O0001_G138_tailstock.nc: G138 B-425.8 Q1 S700 T300 J10 E1.
     CHECK(test::summary(test::check("O0001\nG138 B-425.8 Q1 S700 T300 J10 E1\nM30\n", "spinner-lathe-a"), "K5018").empty());

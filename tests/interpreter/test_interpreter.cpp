@@ -116,7 +116,22 @@ TEST_CASE("an endless loop ends at the step limit with an alarm") {
     const Run r = run("O1\nN10 G0 X1.\nGOTO 10\n", "fanuc-mill", 1000);
     REQUIRE(r.result.alarms.size() == 1);
     CHECK(r.result.alarms[0].text.find("step limit") != std::string::npos);
+    // kerf's own number, outside FANUC's ranges (docs/trace.md), so K4004 sees only this alarm.
+    CHECK(r.result.alarms[0].code == interpreter::kerf_alarm::step_limit);
     CHECK_FALSE(r.result.completed);
+}
+
+TEST_CASE("spindle events say whether they start or stop the spindle") {
+    // M03 without S (no speed), M04 with S, M05: spindle_running is what the M code does
+    // (events.hpp), whatever the rpm; the analyzer's K5010 reads it.
+    const Run r = run("O1\nM3\nS500 M4\nM5\nM30\n", "fanuc-lathe-a");
+    std::vector<std::pair<bool, double>> spindle;
+    for (const auto& e : r.events)
+        if (e.kind == EventKind::spindle) spindle.emplace_back(e.spindle_running, e.spindle_rpm);
+    REQUIRE(spindle.size() == 3);
+    CHECK(spindle[0] == std::pair{true, 0.0});
+    CHECK(spindle[1] == std::pair{true, 500.0});
+    CHECK(spindle[2] == std::pair{false, 0.0});
 }
 
 TEST_CASE("G96 rpm follows X and is clamped by G50 S") {

@@ -131,6 +131,10 @@ TEST_CASE("the SPINNER TS-like lathe: axes, diameter X, IS-B, calculator input p
     CHECK(spinner.calculator_decimal);   // dialects.md §2: X45 = 45 mm on SPINNER
     CHECK(spinner.axis('C')->rotary);
     CHECK_FALSE(spinner.axis('B')->rotary);
+    // B is the tailstock / sub-spindle carriage: no cutting tool rides on it (cycles.md §12, §16).
+    CHECK_FALSE(spinner.axis('B')->carries_tool);
+    CHECK(spinner.axis('X')->carries_tool);
+    CHECK(spinner.axis('C')->carries_tool);
     CHECK_FALSE(spinner.has_axis('Y'));
     const Machine& plain = default_machine_for("fanuc-lathe-a");
     CHECK_FALSE(plain.calculator_decimal);   // plain FANUC: X45 = 0.045 mm on IS-B
@@ -444,6 +448,7 @@ TEST_CASE("machine_to_toml round-trips every built-in", "[machine][dump]") {
             CHECK(b.axis(a.letter)->rapid == a.rapid);
             CHECK(b.axis(a.letter)->min == a.min);
             CHECK(b.axis(a.letter)->rotary == a.rotary);
+            CHECK(b.axis(a.letter)->carries_tool == a.carries_tool);
         }
         CHECK(b.work_offsets == m.work_offsets);
         CHECK(b.reference_points == m.reference_points);
