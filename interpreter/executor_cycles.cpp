@@ -28,7 +28,7 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
 // Function ids (docs/functions.md) whose path the trace does not model yet.
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
-    "radius-comp-left", "radius-comp-right", "polar-interpolation-on", "cylindrical-interpolation",
+    "radius-comp-left", "radius-comp-right",   // [polar] G112/G107 left: interpreter/polar.cpp
     "corner-slowdown", "arc-approach", "arc-exit",
     "tool-length-comp-plus", "tool-length-comp-minus", "polar-coordinate-command", "scaling", "mirror",
 };
@@ -53,6 +53,8 @@ void Executor::classify_codes() {
         position_offset_[i] = static_cast<std::int8_t>(compensation::position_offset_factor(f).value_or(0));
         if (position_offset_[i] != 0) code_class_[i] |= kPositionOffsetCode;
         if (codes[i].binder_traits & dialects::CodeInfo::kMotionGroup) code_class_[i] |= kMotionCode;
+        if (f == fn::polar_interpolation_on || f == fn::polar_interpolation_off || f == fn::cylindrical_interpolation)
+            code_class_[i] |= kTransformCode;   // [polar] polar.cpp
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
         // The modal flags update_flags() derives (executor.cpp).

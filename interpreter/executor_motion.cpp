@@ -168,6 +168,9 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
 }
 
 bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
+    // [polar] G112/G107 modes: the block's path is in the Cartesian plane (polar.cpp).
+    if (transform_ || (scan_.classes & kTransformCode))
+        if (const auto moved = apply_plane_transform(view, words)) return *moved;
     if (const auto reference = apply_reference_motion(view, words)) {
         programmed_.reset();
         return *reference;

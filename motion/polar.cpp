@@ -54,7 +54,8 @@ std::vector<MappedPoint> map_path(const PlaneMap& map, const std::function<P2(do
         // the two machine points; the programmed path is at the middle parameter.
         const P2 tool = to_cartesian(map, (from.machine + to.machine) * 0.5);
         const double error = norm(tool - path((from.t + t) / 2));
-        const bool small = error <= tol && std::fabs(to.machine.b - from.machine.b) <= kMaxTurnDeg;
+        const bool turns = map.kind == PlaneMap::Kind::polar && std::fabs(to.machine.b - from.machine.b) > kMaxTurnDeg;
+        const bool small = error <= tol && !turns;
         if (!small && step > kMinStep && out.size() + 1 < max_points) {
             step /= 2;
             continue;

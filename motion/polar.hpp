@@ -40,7 +40,7 @@ struct MappedPoint {
 // The pieces of a Cartesian path (`path(t)`, t in [0, 1], proportional to its length) for the
 // machine: points after the start up to the end (the end is last, t = 1), such that between two
 // of them, the real axes moving linearly, the tool stays within `tolerance` mm of the path (tested
-// at the middle of each piece; no piece turns more than 45°). `start_deg`: the machine angle at
+// at the middle of each piece; no polar piece turns more than 45°). `start_deg`: the machine angle at
 // t = 0. At most `max_points` points (the last one is the end whatever the tolerance).
 std::vector<MappedPoint> map_path(const PlaneMap& map, const std::function<P2(double)>& path, double start_deg,
                                   double tolerance, std::size_t max_points = 20000);
