@@ -54,6 +54,9 @@ inline constexpr std::string_view coordinate_rotation_cancel = "coordinate-rotat
 inline constexpr std::string_view modal_macro_call_cancel = "modal-macro-call-cancel";
 inline constexpr std::string_view stroke_check_on = "stroke-check-on";
 inline constexpr std::string_view stroke_check_off = "stroke-check-off";
+inline constexpr std::string_view polar_interpolation_on = "polar-interpolation-on";     // G12.1/G112 (cycles.md §18)
+inline constexpr std::string_view polar_interpolation_off = "polar-interpolation-off";   // G13.1/G113
+inline constexpr std::string_view cylindrical_interpolation = "cylindrical-interpolation";   // G07.1/G107 (cycles.md §19)
 // "work-coordinate-1" ... "work-coordinate-6" are G54 ... G59.
 inline constexpr std::string_view work_coordinate_prefix = "work-coordinate-";
 

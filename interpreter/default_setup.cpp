@@ -98,6 +98,7 @@ Setup make_setup(const machine::Machine& m) {
     s.g30_default_p = sw.g30_default_p;
     s.g68_positive_cw = sw.g68_positive == machine::RotationSign::cw;
     s.arc_tolerance = sw.arc_tolerance;
+    s.transform_tolerance = sw.transform_tolerance;
     s.arc_negative_r = sw.arc_negative_r == machine::ArcLargeR::negative_r;
     s.arc_enlarge_small_r = sw.arc_radius_mismatch == machine::ArcMismatch::enlarge;
     s.atan_minus_180 = sw.atan_range == machine::AtanRange::minus_180_to_180;

@@ -18,6 +18,7 @@
 #include "interpreter/macro/evaluate.hpp"
 #include "interpreter/macro/variables.hpp"
 #include "motion/arc.hpp"
+#include "motion/polar.hpp"
 #include "motion/vec.hpp"
 
 namespace kerf::interpreter {
@@ -257,7 +258,8 @@ private:
                                   kOneShotCode = 256,   // group 00 (G04, G10, G28, G53 ...)
                                   kMotionCode = 512,    // group 01 (G00–G03, G32, modal cycles)
                                   kPositionOffsetCode = 1024,   // G45–G48
-                                  kRadiusCompCode = 2048;   // G40/G41/G42 (executor_compensation.cpp)
+                                  kRadiusCompCode = 2048,   // G40/G41/G42 (executor_compensation.cpp)
+                                  kTransformCode = 4096;        // [polar] G112/G113, G107 (polar.cpp)
     std::vector<std::uint16_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
     void note_path_changers(const ast::BlockView& view);
@@ -414,6 +416,30 @@ private:
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);
+    // --- [polar] G112/G113 polar and G107 cylindrical interpolation (polar.cpp, cycles.md §18–§19) --
+    struct PlaneTransform {
+        motion::PlaneMap map;
+        std::size_t linear = 0;   // the real axis of the plane's first coordinate (X; cylinder: Z for C)
+        std::size_t rotary = 5;   // the rotary axis (C), degrees in position_
+        double origin_deg = 0;    // polar: the rotary position at G112 = the plane's angle 0
+        Position programmed{};    // the programmed point: rotary axis as mm of the virtual axis / arc
+        std::string code;         // the code that started the mode (texts)
+    };
+    std::optional<PlaneTransform> transform_;   // active mode, else nullopt
+    // The block under a mode (or starting/ending one): true/false = moved or not, handled here;
+    // nullopt = the block runs as usual (no mode, or G113 / G07.1 C0 just ended it).
+    std::optional<bool> apply_plane_transform(const ast::BlockView& view, const BlockWords& words);
+    std::optional<std::string> improper_in_transform(const ast::BlockView& view) const;
+    void start_polar(const std::string& spelling);
+    bool start_polar_with_c(const ast::BlockView& view, const BlockWords& words, const std::string& spelling);
+    bool cylindrical_code(const ast::BlockView& view, const BlockWords& words, const std::string& spelling);
+    bool transform_move(const ast::BlockView& view, const BlockWords& words);
+    motion::ArcResult transform_arc(bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const;
+    void warn_rotary_speed(const ast::BlockView& view, const std::vector<motion::MappedPoint>& pieces, motion::P2 start);
+    void transform_piece(EventKind kind, const Position& to, double length_mm, const ast::BlockView& view);
+    motion::P2 transform_point(const Position& p) const;
+    double plane_mm(std::size_t axis, double value) const;      // program value → geometric mm (X radius)
+    double program_value(std::size_t axis, double mm) const;    // and back
 };
 
 }  // namespace kerf::interpreter

@@ -28,7 +28,6 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
 // Function ids (docs/functions.md) whose path the trace does not model yet.
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
-    "polar-interpolation-on", "cylindrical-interpolation",
     "corner-slowdown", "arc-approach", "arc-exit",
     "polar-coordinate-command", "scaling", "mirror",
 };
@@ -53,6 +52,8 @@ void Executor::classify_codes() {
         position_offset_[i] = static_cast<std::int8_t>(compensation::position_offset_factor(f).value_or(0));
         if (position_offset_[i] != 0) code_class_[i] |= kPositionOffsetCode;
         if (codes[i].binder_traits & dialects::CodeInfo::kMotionGroup) code_class_[i] |= kMotionCode;
+        if (f == fn::polar_interpolation_on || f == fn::polar_interpolation_off || f == fn::cylindrical_interpolation)
+            code_class_[i] |= kTransformCode;   // [polar] polar.cpp
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
         if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)

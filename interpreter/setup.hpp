@@ -56,6 +56,7 @@ struct Setup {
     int g30_default_p = 2;             // G30 without P (semantics.md §2.8)
     bool g68_positive_cw = false;      // ADV400: positive G68 R turns clockwise (semantics.md §2.9, §12.4)
     double arc_tolerance = 0.01;       // mm, end-point radius mismatch allowed (semantics.md §3)
+    double transform_tolerance = 0.01; // mm, G112/G107 path → pieces of linear real-axis motion (cycles.md §18, §19)
     bool arc_negative_r = true;        // R < 0 = arc over 180° (semantics.md §3, §12.5)
     bool arc_enlarge_small_r = false;  // a too small R becomes chord/2 instead of alarm 020
     bool atan_minus_180 = false;       // Macro B ATAN result in -180..180 instead of 0..360 ([FANUC] NAT)

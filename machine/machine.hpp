@@ -108,6 +108,7 @@ struct Switches {
     ArcLargeR arc_negative_r = ArcLargeR::negative_r;         // semantics.md §3, §12.5 (lathes: reject)
     ArcMismatch arc_radius_mismatch = ArcMismatch::alarm;     // semantics.md §3
     double arc_tolerance = 0.01;                              // mm; semantics.md §3 "within tolerance" [inference]
+    double transform_tolerance = 0.01;                        // mm; G112/G107 pieces, cycles.md §18–§19 [inference]
     CompStartup cutter_comp_startup = CompStartup::type_b;    // semantics.md §6 "type A/B (a parameter, default B)"
     bool g41_g42_swapped = false;                             // gcode-tables.md §8.5, semantics.md §12.12 (ADV400 list)
     CompCorners cutter_comp_corners = CompCorners::intersection;   // semantics.md §6 (ADV400: arcs)

@@ -175,6 +175,9 @@ std::vector<SwitchDef> make_defs() {
                                     "chord longer than 2·R by more than arc_tolerance: alarm [FANUC] or R enlarged (some models)"));
     d.push_back(number("arc_tolerance", &S::arc_tolerance, 0, 10, "semantics.md §3 [inference]",
                        "mm an arc end point may miss the circle (and chord − 2R may exceed 0) without an alarm"));
+    d.push_back(number("transform_tolerance", &S::transform_tolerance, 0.0001, 10, "cycles.md §18, §19 [inference]",
+                       "mm the tool may leave the programmed path of G112 polar / G107 cylindrical interpolation "
+                       "between the pieces the dry run cuts it into (the real axes move linearly along a piece)"));
     d.push_back(choice<CompStartup>("cutter_comp_startup", &S::cutter_comp_startup,
                                     {{"A", CompStartup::type_a}, {"B", CompStartup::type_b}}, false,
                                     "semantics.md §6 ('type A/B (a parameter, default B)')",

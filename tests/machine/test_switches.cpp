@@ -57,6 +57,7 @@ const std::vector<Expectation>& expectations() {
         {"arc_negative_r", "negative-r", "negative-r", for_lathes("reject", {{"adv400-lathe", "reject"}})},
         {"arc_radius_mismatch", "alarm", "alarm", {}},                   // semantics.md §3
         {"arc_tolerance", "0.01", "0.01", {}},
+        {"transform_tolerance", "0.01", "0.01", {}},                     // cycles.md §18, §19 [inference]
         {"cutter_comp_startup", "B", "B", {}},                           // semantics.md §6
         {"cutter_comp_corners", "intersection", "intersection", {{"adv400-mill", "arc"}}},   // semantics.md §6
         {"comp_shift_without_motion", "false", "false", {{"iso-legacy-mill", "true"}}},     // semantics.md §6
@@ -191,6 +192,7 @@ TEST_CASE("a user file sets switches; the dialect value can be restored", "[mach
                                            "cycle_pq_units = \"tenth-micron\"\n"
                                            "subprogram_nesting = 10\n"
                                            "arc_tolerance = 0.005\n"
+                                           "transform_tolerance = 0.002\n"
                                            "m3_clockwise = false\n"
                                            "atan_range = \"-180-180\"\n",
                                            "u.toml");
@@ -200,6 +202,7 @@ TEST_CASE("a user file sets switches; the dialect value can be restored", "[mach
     CHECK(s.cycle_pq_units == CyclePQUnits::tenth_micron);
     CHECK(s.subprogram_nesting == 10);
     CHECK(s.arc_tolerance == Approx(0.005));
+    CHECK(s.transform_tolerance == Approx(0.002));
     CHECK_FALSE(s.m3_clockwise);
     CHECK(s.atan_range == AtanRange::minus_180_to_180);
     CHECK_FALSE(r.machine->follows_dialect("g52"));

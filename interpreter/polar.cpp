@@ -1,0 +1,277 @@
+// G12.1/G112 … G13.1/G113 polar coordinate interpolation (cycles.md §18) and G07.1/G107
+// cylindrical interpolation (cycles.md §19): the executor's mode. In the mode the program is
+// written in a Cartesian plane (polar: X as a diameter and the virtual axis C in mm; cylindrical:
+// the axis along the cylinder and C as mm of arc); lines and arcs of that plane become pieces of
+// linear motion of the real axes (X and C in degrees), within the machine's transform_tolerance
+// (motion/polar.hpp). The trace's `end` is the real X/C; the programmed Cartesian point is kept
+// here (PlaneTransform::programmed), not in the trace (docs/trace.md). F is the tangential feed
+// along the Cartesian path ([FANUC], cycles.md §18), so a piece takes its Cartesian length / F.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <numbers>
+
+#include "dialects/functions.hpp"
+#include "interpreter/executor.hpp"
+#include "motion/arc.hpp"
+#include "motion/polar.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+
+namespace {
+
+constexpr std::size_t kX = 0, kC = 5;
+constexpr double kDegPerRad = 180.0 / std::numbers::pi;
+
+// [FANUC] alarms of the modes (the reference lists none): PS0146 "improper G code" in polar
+// coordinate interpolation, PS0176 "improper G code in G07.1 mode", PS0175 "illegal G07.1 axis".
+constexpr int kImproperInPolar = 146, kImproperInCylindrical = 176, kIllegalCylinderAxis = 175;
+
+// Codes that may not run inside either mode ([FANUC]: the modes allow motion G00–G03, dwell,
+// compensation, feed modes and macro calls; a reference return or a new coordinate system would
+// move the plane under the program).
+constexpr std::string_view kImproperFunctions[] = {
+    fn::reference_return, fn::reference_return_nth, fn::return_from_reference, fn::machine_coordinate_select,
+    fn::machine_coordinate_select_g0_g1, fn::coordinate_system_setting, fn::local_system_shift,
+    fn::local_system_current_point, fn::thread_cutting, fn::plane_xy, fn::plane_zx, fn::plane_yz,
+};
+
+// The rotary axis letters and the linear axis each turns about (A about X, B about Y, C about Z).
+std::optional<std::pair<std::size_t, std::size_t>> cylinder_axes(char rotary) {
+    if (rotary < 'A' || rotary > 'C') return std::nullopt;
+    const auto r = static_cast<std::size_t>(rotary - 'A');
+    return std::pair{3 + r, r};
+}
+
+}  // namespace
+
+// A coordinate of a programmed point in the plane, geometric mm (lathe X as a radius).
+double Executor::plane_mm(std::size_t axis, double value) const {
+    return (axis == kX && setup_.diameter_x ? value / 2 : value) * unit_scale();
+}
+double Executor::program_value(std::size_t axis, double mm) const {
+    return (axis == kX && setup_.diameter_x ? mm * 2 : mm) / unit_scale();
+}
+
+motion::P2 Executor::transform_point(const Position& p) const {
+    const PlaneTransform& t = *transform_;
+    return {plane_mm(t.linear, p[t.linear]), p[t.rotary] * unit_scale()};   // the virtual axis: mm, never a diameter
+}
+
+std::optional<bool> Executor::apply_plane_transform(const ast::BlockView& view, const BlockWords& words) {
+    if (transform_) {
+        if (const auto improper = improper_in_transform(view)) {
+            alarm(*frame_, view, transform_->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
+                  fmt::format("{} is not allowed in {} mode ([FANUC] alarm {})", *improper, transform_->code,
+                              transform_->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical));
+            return false;
+        }
+    }
+    for (const ast::CodeRef& c : scan_.g) {
+        if (!c.info) continue;
+        const std::string& f = c.info->function;
+        if (f == fn::polar_interpolation_off && transform_ && transform_->map.kind == motion::PlaneMap::Kind::polar)
+            transform_.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
+        else if (f == fn::polar_interpolation_on && !transform_) {
+            if (words.get('C')) return start_polar_with_c(view, words, c.info->spelling);
+            start_polar(c.info->spelling);
+        } else if (f == fn::cylindrical_interpolation) {
+            if (!cylindrical_code(view, words, c.info->spelling)) return false;
+            if (!transform_) return std::nullopt;   // G07.1 C0: the block's other words run as usual
+        }
+    }
+    if (!transform_) return std::nullopt;
+    return transform_move(view, words);
+}
+
+std::optional<std::string> Executor::improper_in_transform(const ast::BlockView&) const {
+    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+        for (const ast::CodeRef& c : *codes) {
+            if (!c.info) continue;
+            const bool improper = (code_class_of(*c.info) & kCycleCode) ||
+                                  std::find(std::begin(kImproperFunctions), std::end(kImproperFunctions),
+                                            c.info->function) != std::end(kImproperFunctions) ||
+                                  (c.info->function == fn::polar_interpolation_on &&
+                                   transform_->map.kind == motion::PlaneMap::Kind::cylindrical) ||
+                                  (c.info->function == fn::cylindrical_interpolation &&
+                                   transform_->map.kind == motion::PlaneMap::Kind::polar);
+            if (improper) return fmt::format("{} ({})", c.info->spelling, c.info->function);
+        }
+    if (flags_.motion == fn::thread_cutting) return std::string("thread cutting");
+    return std::nullopt;
+}
+
+// G112: the plane's origin is the centre of rotation; the tool's X is the plane's x and the
+// virtual axis starts at 0; the C position at G112 is the plane's angle 0 (cycles.md §18
+// "C_start"; every seed program turns C to 0 first).
+void Executor::start_polar(const std::string& spelling) {
+    PlaneTransform t;
+    t.map = {motion::PlaneMap::Kind::polar, 0};
+    t.linear = kX;
+    t.rotary = kC;
+    t.origin_deg = position_[kC];
+    t.programmed = position_;
+    t.programmed[kC] = 0;
+    t.code = spelling;
+    transform_ = t;
+}
+
+// Seed 001 §10.11 writes `G112 C45`: the meaning of C is unknown (cycles.md §18): said, not moved.
+bool Executor::start_polar_with_c(const ast::BlockView& view, const BlockWords& words, const std::string& spelling) {
+    Event e = event_at(EventKind::message, *frame_, view);
+    e.text = fmt::format("{} C{}: a C word in the {} block has no known meaning (cycles.md §18): ignored", spelling,
+                         words.get('C')->value, spelling);
+    emit(e);
+    start_polar(spelling);
+    BlockWords rest;
+    for (const auto& [letter, word] : words.words)
+        if (letter != 'C') rest.words.set(letter, word);
+    for (const auto& [letter, word] : words.incremental)
+        if (letter != 'C') rest.incremental.set(letter, word);
+    return transform_move(view, rest);
+}
+
+// G07.1 C r starts cylindrical interpolation on a cylinder of radius r (mm), G07.1 C0 ends it
+// (cycles.md §19). The rotary word names the axis: C turns about Z (lathes), A about X, B about
+// Y. C is then programmed in mm of arc: the tool's angle at the start is that many mm of arc.
+bool Executor::cylindrical_code(const ast::BlockView& view, const BlockWords& words, const std::string& spelling) {
+    char letter = 0;
+    for (const char l : {'C', 'A', 'B'})
+        if (const auto* w = words.get(l); w && !letter) letter = l;
+    const auto axes = letter ? cylinder_axes(letter) : std::nullopt;
+    if (!axes) {
+        alarm(*frame_, view, kIllegalCylinderAxis,
+              fmt::format("{} without the rotary axis and radius (G07.1 C<r>) ([FANUC] alarm {})", spelling,
+                          kIllegalCylinderAxis));
+        return false;
+    }
+    const double radius = axis_value(*words.get(letter), letter) * unit_scale();
+    if (radius == 0) {
+        transform_.reset();
+        return true;
+    }
+    PlaneTransform t;
+    t.map = {motion::PlaneMap::Kind::cylindrical, std::fabs(radius)};
+    t.rotary = axes->first;
+    t.linear = axes->second;
+    t.programmed = position_;
+    t.programmed[t.rotary] = position_[t.rotary] / kDegPerRad * t.map.cylinder_radius / unit_scale();
+    t.code = spelling;
+    transform_ = t;
+    return true;
+}
+
+// A block in the mode: its end point in the Cartesian plane, the line or arc there, its pieces.
+bool Executor::transform_move(const ast::BlockView& view, const BlockWords& words) {
+    PlaneTransform& t = *transform_;
+    bool moves = false;
+    const Position real = position_;
+    position_ = t.programmed;   // the block's words are measured from the programmed point
+    const Position to = target_position(words, moves);
+    position_ = real;
+    note_path_changers(view);
+    const std::string_view motion = flags_.motion;
+    const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
+    if (!moves) return false;
+    if (motion != fn::rapid && motion != fn::linear && !arc) return false;   // no motion code: nothing moves
+    const motion::P2 a = transform_point(t.programmed), b = transform_point(to);
+    std::function<motion::P2(double)> path = [a, b](double u) { return a + (b - a) * u; };
+    if (arc) {
+        const auto geometry = transform_arc(motion == fn::circular_cw, a, b, words);
+        if (!geometry) {
+            alarm(*frame_, view, geometry.error().fanuc_alarm,
+                  fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", t.code,
+                              motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed));
+            return false;
+        }
+        path = [g = geometry.arc()](double u) {
+            const motion::Vec3 p = motion::point_at(g, u);
+            return motion::P2{p.x, p.y};
+        };
+    }
+    const double start_deg = position_[t.rotary] - t.origin_deg;
+    const std::vector<motion::MappedPoint> pieces =
+        motion::map_path(t.map, path, start_deg, setup_.transform_tolerance);
+    if (motion != fn::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(view, pieces, a);
+    const EventKind kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
+    motion::P2 previous = a;
+    for (const motion::MappedPoint& p : pieces) {
+        Position end = to;   // the axes outside the plane move linearly along the path
+        for (std::size_t axis = 0; axis < kAxisCount; ++axis)
+            end[axis] = real[axis] + (to[axis] - real[axis]) * p.t;
+        end[t.linear] = program_value(t.linear, p.machine.a);
+        end[t.rotary] = t.origin_deg + p.machine.b;
+        double other_mm2 = 0;   // travel of the linear axes outside the plane
+        for (std::size_t axis = 0; axis < 3; ++axis)
+            if (axis != t.linear && !setup_.rotary[axis]) {
+                const double d = plane_mm(axis, end[axis]) - plane_mm(axis, position_[axis]);
+                other_mm2 += d * d;
+            }
+        transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), view);
+        if (stopped_) return true;
+        previous = p.cartesian;
+    }
+    t.programmed = to;
+    return true;
+}
+
+// G02/G03 in the Cartesian plane (counter-clockwise from its first axis toward the second): R,
+// or I (first axis, a radius value) and J (second axis) from the start point (cycles.md §18
+// `G2 X-100 C-30 R30`).
+motion::ArcResult Executor::transform_arc(bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const {
+    const motion::Vec3 start{a.a, a.b, 0}, end{b.a, b.b, 0};
+    const motion::ArcDirection dir = cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
+    motion::ArcOptions options;
+    options.radius_tolerance = setup_.arc_tolerance;
+    options.allow_negative_r = setup_.arc_negative_r;
+    options.enlarge_small_r = setup_.arc_enlarge_small_r;
+    if (const auto* r = words.get('R')) return motion::arc_from_radius(start, end, motion::Plane::xy, dir, axis_value(*r, 'R') * unit_scale(), options);
+    motion::Vec3 offset{};
+    if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * unit_scale();
+    if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * unit_scale();
+    return motion::arc_from_center(start, end, motion::Plane::xy, dir, offset, options);
+}
+
+// Near the centre of the polar plane the rotary axis must turn fast: at F mm/min and radius r it
+// turns F/r·(180/π) °/min; past the axis' rapid rate the control clamps it ([FANUC]) and the block
+// takes longer than the trace says (cycles.md §18 "a dry run should warn").
+void Executor::warn_rotary_speed(const ast::BlockView& view, const std::vector<motion::MappedPoint>& pieces, motion::P2 start) {
+    const double limit = setup_.rapid_mm_min[transform_->rotary];
+    const double feed = feed_ * unit_scale();
+    if (limit <= 0 || feed <= 0 || flags_.per_revolution) return;
+    const double r = motion::min_radius(pieces, start);
+    const double needed = r > 0 ? feed / r * kDegPerRad : INFINITY;
+    if (needed <= limit) return;
+    Event e = event_at(EventKind::message, *frame_, view);
+    e.text = fmt::format("{}: the path passes {:.3f} mm from the centre: C would turn {} °/min at F{}, over its rate "
+                         "{} °/min: the control slows down and this block takes longer (cycles.md §18)",
+                         transform_->code, r, std::isfinite(needed) ? fmt::format("{:.0f}", needed) : std::string("without limit"),
+                         feed_, limit);
+    emit(e);
+}
+
+// One piece: a rapid at the axes' own rates (executor_motion.cpp move), a feed piece timed along
+// its Cartesian length at F.
+void Executor::transform_piece(EventKind kind, const Position& to, double length_mm, const ast::BlockView& view) {
+    if (kind == EventKind::rapid) {
+        move(kind, to, *frame_, view);
+        return;
+    }
+    if (!within_soft_limits(to, to, *frame_, view)) return;
+    Event e;
+    e.kind = kind;
+    e.source = source(*frame_, view);
+    e.start = position_;
+    e.end = to;
+    e.length_mm = length_mm;
+    time_feed_move(e, length_mm, 0.0, nullptr);   // pieces blend: no exact stop between them
+    result_.feed_distance_mm += length_mm;
+    position_ = to;
+    emit(std::move(e));
+}
+
+}  // namespace kerf::interpreter
