@@ -259,6 +259,8 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     remember_words(view, words);
     apply_feed_speed_tool(view, words);
     apply_modal_codes(view);
+    if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
+    if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     if (!apply_coordinate_operations(view, words) || stopped_) return false;
     const bool moved = apply_motion(view, words);
     if (stopped_) return moved;

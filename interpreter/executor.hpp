@@ -411,6 +411,31 @@ private:
     std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from);
     bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
                         const ast::BlockView& view);
+    // A G70 finishing path under G41/G42: each element offset with the next one as look-ahead.
+    bool compensate_path(const std::vector<cycles::ProfileMove>& path, const ast::BlockView& view);
+    // --- G43/G44/G49 tool length offsets (executor_length.cpp, semantics.md §7, §2.7) ----------
+    // The H register's length (geometry + wear) on Z, +G43 / −G44; machine_offset() adds it. The
+    // work coordinates stay: the machine position shifts (like a lathe T word).
+    static constexpr std::uint16_t kLengthCompCode = 4096;   // tool-length-comp-plus/minus/cancel
+    int length_sign_ = 0;      // +1 G43, −1 G44, 0 G49 (power-on)
+    int length_h_ = 0;         // the H number in force
+    double length_mm_ = 0;     // the signed offset on Z, mm
+    void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
+    // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
+    static constexpr std::uint16_t kCornerSlowdownCode = 8192;   // corner-slowdown, -cancel (seed 004 G28/G29)
+    static constexpr std::uint16_t kApproachOffsetCode = 16384;  // axial-offset-direction-plus (seed 004 G43)
+    struct Slowdown {
+        double k_mm = 0;       // the distance before each G01 end point
+        double fraction = 0;   // F percent / 100: the reduction
+    };
+    std::optional<Slowdown> slowdown_;
+    bool in_slowdown_ = false;              // the pieces of a split move are not split again
+    double slowdown_time_factor_ = 1.0;     // time_feed_move: a ramp's time over the step's
+    void apply_corner_slowdown(const ast::BlockView& view, const BlockWords& words);
+    // A G01 move split before its end into the full-feed and the reduced-feed piece; false when
+    // the move is not slowed (move() then runs it whole).
+    bool slowed_move(const Position& to, const Frame& f, const ast::BlockView& view);
+    bool approach_offset_move(const ast::BlockView& view, const Position& to);
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);

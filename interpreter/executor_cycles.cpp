@@ -29,7 +29,7 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
     "polar-interpolation-on", "cylindrical-interpolation",
-    "corner-slowdown", "arc-approach", "arc-exit",
+    "arc-approach", "arc-exit",
     "polar-coordinate-command", "scaling", "mirror",
 };
 
@@ -57,6 +57,10 @@ void Executor::classify_codes() {
             code_class_[i] |= kPathChangerCode;
         if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)
             code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
+        if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel)
+            code_class_[i] |= kLengthCompCode;   // [length offsets] executor_length.cpp
+        if (f == "corner-slowdown" || f == "corner-slowdown-cancel") code_class_[i] |= kCornerSlowdownCode;
+        if (f == "axial-offset-direction-plus") code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp
         // The modal flags update_flags() derives (executor.cpp).
         if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;
         if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;
@@ -155,6 +159,17 @@ public:
     bool arc(bool cw, const Position& to, const Position& center, std::optional<double> f) override {
         if (f) ex_.feed_ = *f;
         return ex_.cycle_arc(cw, to, center, view_);
+    }
+    bool finishing_path(const std::vector<cycles::ProfileMove>& path) override {
+        if (ex_.compensating()) return ex_.compensate_path(path, view_);   // executor_compensation.cpp
+        for (const cycles::ProfileMove& m : path) {
+            const bool ok = m.kind == EventKind::rapid ? rapid(m.end)
+                            : (m.kind == EventKind::arc_cw || m.kind == EventKind::arc_ccw)
+                                ? arc(m.kind == EventKind::arc_cw, m.end, m.center, m.feed)
+                                : feed(m.end, m.feed);
+            if (!ok) return false;
+        }
+        return true;
     }
     bool thread(const Position& to, double lead) override {
         ex_.thread_lead_ = lead;
