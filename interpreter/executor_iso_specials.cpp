@@ -24,7 +24,8 @@ void Executor::apply_corner_slowdown(const ast::BlockView& view, const BlockWord
         }
         const auto* k = words.get('K');
         const auto* p = words.get('F');
-        if (!k || !p || axis_value(*k, 'K') <= 0 || p->value <= 0 || p->value >= 100) {
+        // K in mm as written: the seed's `K5` is "5 mm before point 7" (§9.5), not 5 increments.
+        if (!k || !p || k->value <= 0 || p->value <= 0 || p->value >= 100) {
             Event e = event_at(EventKind::message, *frame_, view);
             e.text = fmt::format("{} needs K > 0 (mm) and F in 1..99 (percent): no corner slow-down (semantics.md §9.5)",
                                  c.info->spelling);
@@ -32,7 +33,7 @@ void Executor::apply_corner_slowdown(const ast::BlockView& view, const BlockWord
             slowdown_.reset();
             continue;
         }
-        slowdown_ = Slowdown{axis_value(*k, 'K') * unit_scale(), p->value / 100.0};
+        slowdown_ = Slowdown{k->value * unit_scale(), p->value / 100.0};
     }
 }
 
