@@ -436,6 +436,12 @@ private:
     // the move is not slowed (move() then runs it whole).
     bool slowed_move(const Position& to, const Frame& f, const ast::BlockView& view);
     bool approach_offset_move(const ast::BlockView& view, const Position& to);
+    static constexpr std::uint16_t kArcApproachCode = 32768;    // arc-approach, arc-exit (seed 004 G12/G13)
+    // G12/G13 X Y: a quarter arc from the programmed point to X Y, run as a G03 (G41, G40) or G02
+    // (G42) block with its centre words; true when it moved.
+    bool arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
+    // The block's words with the centre words of that arc from `from`; `ccw` its direction.
+    BlockWords arc_approach_words(const BlockWords& words, const Position& from, const Position& to, bool& ccw) const;
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);

@@ -145,6 +145,11 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
             programmed_ = from;
             bool moves = false;
             const Position to = target_position(words, moves);
+            if ((scan_.classes & kArcApproachCode) && moves) {   // seed-004 G12/G13 (executor_iso_specials.cpp)
+                bool ccw = true;
+                words = arc_approach_words(words, from, to, ccw);
+                flags_.motion = ccw ? fn::circular_ccw : fn::circular_cw;
+            }
             if (moves || full_circle(words)) {
                 const int side_before = comp_side_;
                 Position end;

@@ -29,7 +29,6 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
     "polar-interpolation-on", "cylindrical-interpolation",
-    "arc-approach", "arc-exit",
     "polar-coordinate-command", "scaling", "mirror",
 };
 
@@ -61,6 +60,7 @@ void Executor::classify_codes() {
             code_class_[i] |= kLengthCompCode;   // [length offsets] executor_length.cpp
         if (f == "corner-slowdown" || f == "corner-slowdown-cancel") code_class_[i] |= kCornerSlowdownCode;
         if (f == "axial-offset-direction-plus") code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp
+        if (f == "arc-approach" || f == "arc-exit") code_class_[i] |= kArcApproachCode;
         // The modal flags update_flags() derives (executor.cpp).
         if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;
         if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;

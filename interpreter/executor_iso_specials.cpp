@@ -95,4 +95,41 @@ bool Executor::approach_offset_move(const ast::BlockView& view, const Position& 
     return true;
 }
 
+// §9.6 (example 4: `G12 X95. Y30. F200` may replace `G3 X95. Y90. I-40. J0. F200`, `G13 X55. Y50.
+// F200` the exit `G3 X55. Y50. I0. J-40.`): the seed gives neither radius nor direction; in the
+// example both are quarter circles, counter-clockwise under G41 [inference]: a quarter arc from
+// the programmed point to X Y, CCW under G41 (and G40), CW under G42, its centre on the side the
+// arc turns to at |chord|/2 from the chord's middle. The block then runs as that G02/G03 with
+// centre words (compensation included).
+BlockWords Executor::arc_approach_words(const BlockWords& words, const Position& from, const Position& to, bool& ccw) const {
+    const motion::P2 a = plane_point(from), b = plane_point(to);
+    ccw = comp_side_of_block(comp_side_) >= 0;
+    const motion::P2 half = (b - a) * 0.5;
+    const motion::P2 towards = ccw ? motion::P2{-half.b, half.a} : motion::P2{half.b, -half.a};   // the half chord turned ±90°
+    const motion::P2 offset = (half + towards) * (1.0 / unit_scale());   // centre − start, program units
+    static constexpr char kLetters[3][2] = {{'I', 'J'}, {'K', 'I'}, {'J', 'K'}};   // G17, G18, G19 plane frames
+    const auto& letters = kLetters[plane() == motion::Plane::xy ? 0 : plane() == motion::Plane::zx ? 1 : 2];
+    BlockWords arc = words;
+    for (const auto& [letter, value] : {std::pair{letters[0], offset.a}, std::pair{letters[1], offset.b}}) {
+        Word w;
+        w.value = value;
+        w.has_point = true;
+        arc.words.set(letter, w);
+    }
+    return arc;
+}
+
+bool Executor::arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
+    bool ccw = true;
+    const BlockWords arc = arc_approach_words(words, comp_path_ ? *comp_path_ : programmed_.value_or(position_), to, ccw);
+    const std::string_view saved = flags_.motion;
+    flags_.motion = ccw ? fn::circular_ccw : fn::circular_cw;
+    bool moved = true;
+    if ((scan_.classes & kRadiusCompCode) || compensating()) moved = compensate_motion(view, arc, to, true);
+    else arc_move(!ccw, to, arc, view);
+    flags_.motion = saved;
+    if (!compensating()) programmed_.reset();
+    return moved;
+}
+
 }  // namespace kerf::interpreter

@@ -184,6 +184,7 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     if ((scan_.classes & kApproachOffsetCode) && moves && setup_.iso_g43_approach &&
         (flags_.motion == fn::rapid || flags_.motion == fn::linear))
         return approach_offset_move(view, to);
+    if ((scan_.classes & kArcApproachCode) && moves) return arc_approach_move(view, words, to);   // [seed 004 G12/G13]
     // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
     if ((scan_.classes & kRadiusCompCode) || compensating()) return compensate_motion(view, words, to, moves);
     if (drawing_words(view) && flags_.motion == fn::linear) return draw_block(view, words, programmed_.value_or(position_), to);

@@ -119,3 +119,62 @@ TEST_CASE("seed 004 G43 approach under compensation, then a G41 arc from the off
     CHECK(l5[0].end[Y] == Approx(85));
     CHECK(l5[0].radius == Approx(50));
 }
+
+// §9.6: G12/G13 as quarter arcs from the programmed point, CCW under G41/G40 and CW under G42.
+//   from X135 Y50 `G12 X95. Y90.`: chord (−40, 40), half (−20, 20); CCW: the centre is the middle
+//   (115, 70) plus the half chord turned +90° (−20, −20) = (95, 50), R40 (= the explicit `G3 X95.
+//   Y90. I-40. J0.` of example 4); under G42 turned −90° (20, 20): centre (135, 90), CW.
+TEST_CASE("seed 004 G12/G13: a quarter arc, its direction from the compensation side") {
+    const Run ccw = run_bare("O1\nG90 G17 G0 X135. Y50.\nG12 X95. Y90. F200\nG13 X55. Y50.\nM30\n", "iso-legacy-mill");
+    require_clean(ccw);
+    const auto a = arcs(ccw);
+    REQUIRE(a.size() == 2);
+    CHECK(a[0].kind == EventKind::arc_ccw);
+    REQUIRE(a[0].center);
+    CHECK((*a[0].center)[X] == Approx(95));
+    CHECK((*a[0].center)[Y] == Approx(50));
+    CHECK(a[0].radius == Approx(40));
+    // G13 from X95 Y90 to X55 Y50: half (−20, −20), turned +90° (20, −20): centre (95, 50) again.
+    CHECK(a[1].kind == EventKind::arc_ccw);
+    CHECK((*a[1].center)[X] == Approx(95));
+    CHECK((*a[1].center)[Y] == Approx(50));
+    CHECK(a[1].end[X] == Approx(55));
+    // G42 with a zero radius (D03 = 0) started on a line (an arc start is alarm 034): the tool
+    // follows the programmed path.
+    const Run cw = run_bare("O1\nG90 G17 G0 X135. Y40.\nG42 D03 G1 Y50. F100\nG12 X95. Y90. F200\nG40 G1 Y100.\nM30\n",
+                            "iso-legacy-mill", [](Setup& s) { s.tools[3].radius = 0; });
+    require_clean(cw);
+    const auto b = arcs(cw);
+    REQUIRE(b.size() == 1);
+    CHECK(b[0].kind == EventKind::arc_cw);
+    CHECK((*b[0].center)[X] == Approx(135));
+    CHECK((*b[0].center)[Y] == Approx(90));
+}
+
+// Example 4 with its bracketed alternatives (the G12 end point taken as Y90, the explicit arc's;
+// Ambiguities §12.10): under G41 D03 = 12 the compensated path equals that of the explicit G3
+// blocks move for move.
+TEST_CASE("seed 004 example 4: G12/G13 under G41 give the path of the explicit arcs") {
+    const std::string head = "O1\nG0 X135. Y50. Z-30.\nG41 D03\n";
+    const std::string body = "G1 X45. F40\nG3 Y10. I0. J-40.\nG1 X180.\nG3 Y90. I0. J40.\nG1 X95.\n";
+    const auto with_regs = [](Setup& s) {
+        s.tools[3].radius = 12;
+        s.comp_shift_without_motion = true;
+    };
+    const Run explicit_arcs = run_bare(head + "G3 X95. Y90. I-40. J0. F200\n" + body + "G3 X55. Y50. I0. J-40. F200\nG0 G40 X95. M02\n",
+                                       "iso-legacy-mill", with_regs);
+    const Run g12 = run_bare(head + "G12 X95. Y90. F200\n" + body + "G13 X55. Y50. F200\nG0 G40 X95. M02\n", "iso-legacy-mill",
+                             with_regs);
+    require_clean(explicit_arcs);
+    require_clean(g12);
+    const auto m1 = moves(explicit_arcs), m2 = moves(g12);
+    REQUIRE(m1.size() == m2.size());
+    for (std::size_t i = 0; i < m1.size(); ++i) {
+        INFO("move " << i);
+        CHECK(m2[i].kind == m1[i].kind);
+        CHECK(m2[i].end[X] == Approx(m1[i].end[X]).margin(1e-6));
+        CHECK(m2[i].end[Y] == Approx(m1[i].end[Y]).margin(1e-6));
+    }
+    // The explicit run: the entry arc R28 about X95 Y50 (the golden trace of example 4).
+    CHECK(m1[2].radius == Approx(28));
+}
