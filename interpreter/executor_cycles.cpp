@@ -141,7 +141,9 @@ public:
     bool return_to_r_level() const override { return ex_.modal_active(fn::return_r_level); }
     double modal_feed() const override { return ex_.feed_; }
 
-    Position position() const override { return ex_.position_; }
+    // Under G41/G42 the tool stands at an offset point: the cycle starts from the programmed one
+    // (the start point A of G70–G73 is the point of the block before, cycles.md §1).
+    Position position() const override { return ex_.comp_path_.value_or(ex_.position_); }
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
@@ -293,6 +295,8 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     const Position saved_position = position_;
     const ast::BlockView* saved_view = view_;
     cycles::Profile profile;
+    // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
+    if (comp_path_) position_ = *comp_path_;
     profile.start = position_;
     std::string_view motion = flags_.motion;
     bool ok = true;

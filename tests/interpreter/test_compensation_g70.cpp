@@ -43,7 +43,11 @@ TEST_CASE("G70 under G42: the finishing profile with a chamfer and an arc, tips 
          {std::tuple{0, 0, 0}, std::tuple{1, 1, 1}, std::tuple{2, -1, 1}, std::tuple{3, -1, -1}, std::tuple{4, 1, -1},
           std::tuple{5, 1, 0}, std::tuple{6, 0, 1}, std::tuple{7, -1, 0}, std::tuple{8, 0, -1}}) {
         const int tip_number = tip;
-        const Run r = run_bare("O1\nT0101\nG0 X20. Z5.\nG42\nG70 P10 Q70\nG40 G0 X60.\nM30\n"
+        // G42 alone (the start-up is the profile's first element), or engaged before the cycle by
+        // `G0 G42 Z5.` along −Z from Z20 (the look-ahead stops at the cycle: the tool ends
+        // perpendicular, centre (5, 10.8)); the G70 path is the same: N10 runs on in a straight line.
+        for (const char* start : {"G0 X20. Z5.\nG42\n", "G0 X20. Z20.\nG0 G42 Z5.\n"}) {
+        const Run r = run_bare(std::string("O1\nT0101\n") + start + "G70 P10 Q70\nG40 G0 X60.\nM30\n"
                                "N10 G1 Z0. F0.2\nN20 Z-10.\nN30 X24. Z-12.\nN40 Z-20.\nN50 G2 X40. Z-28. R8.\n"
                                "N60 G1 X44.\nN70 Z5.\n",
                                "fanuc-lathe-a", [&](Setup& st) {
@@ -51,7 +55,7 @@ TEST_CASE("G70 under G42: the finishing profile with a chamfer and an arc, tips 
                                    st.tools[1].tip = tip_number;
                                });
         require_clean(r);
-        INFO("tip " << tip);
+        INFO("tip " << tip << ", start " << start);
         const auto m = moves_on_line(r, 5);
         REQUIRE(m.size() == centre.size());
         for (std::size_t i = 0; i < m.size(); ++i) {
@@ -66,6 +70,7 @@ TEST_CASE("G70 under G42: the finishing profile with a chamfer and an arc, tips 
         CHECK((*m[4].center)[X] == Approx(2 * (20 + 0.8 * dx)).margin(0.001));
         CHECK(m[4].radius == Approx(7.2).margin(0.001));
         CHECK(m[0].feed == Approx(0.2));
+        }
     }
 }
 
