@@ -109,6 +109,8 @@ Setup make_setup(const machine::Machine& m) {
                                                                                 : compensation::CornerStyle::intersection;
     s.comp_shift_without_motion = sw.comp_shift_without_motion;
     s.g41_g42_swapped = sw.g41_g42_swapped;
+    s.corner_slowdown_step = sw.corner_slowdown == machine::CornerSlowdown::step;
+    s.iso_g43_approach = sw.iso_g43 == machine::IsoG43::approach_shorten;
     s.tool_offset_count = m.tool_offset_count;
     for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);
     s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);

@@ -69,7 +69,7 @@ void Executor::update_flags() {
     f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
     for (const auto& [group, code] : modal_) {
         if (!code) continue;
-        const std::uint16_t c = code_class_of(*code);
+        const std::uint32_t c = code_class_of(*code);
         const bool motion_group = (code->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
         if (motion_group) {
             f.motion = code->function;
@@ -260,6 +260,8 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     remember_words(view, words);
     apply_feed_speed_tool(view, words);
     apply_modal_codes(view);
+    if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
+    if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     if (!apply_coordinate_operations(view, words) || stopped_) return false;
     const bool moved = apply_motion(view, words);
     if (stopped_) return moved;

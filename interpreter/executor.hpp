@@ -96,7 +96,7 @@ struct BlockScan {
     bool comma_words = false;
     bool direct_drawing = false;
     bool macro_call = false;          // G65/G66
-    std::uint16_t classes = 0;        // the union of its codes' classes (Executor::kCycleCode ...)
+    std::uint32_t classes = 0;        // the union of its codes' classes (Executor::kCycleCode ...)
     std::optional<double> sequence;   // N
     std::uint32_t block = 0;          // its index in the file
     SourceRef source;
@@ -251,8 +251,8 @@ private:
     static bool is_cycle_function(std::string_view function);
     void classify_codes();
     bool is_cycle(const dialects::CodeInfo& code) const;
-    std::uint16_t code_class_of(const dialects::CodeInfo& code) const;
-    static constexpr std::uint16_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
+    std::uint32_t code_class_of(const dialects::CodeInfo& code) const;
+    static constexpr std::uint32_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
                                   kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
                                   kPlaneYZCode = 192,   // the plane: two bits
                                   kOneShotCode = 256,   // group 00 (G04, G10, G28, G53 ...)
@@ -260,7 +260,7 @@ private:
                                   kPositionOffsetCode = 1024,   // G45–G48
                                   kRadiusCompCode = 2048,   // G40/G41/G42 (executor_compensation.cpp)
                                   kTransformCode = 4096;        // [polar] G112/G113, G107 (polar.cpp)
-    std::vector<std::uint16_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
+    std::vector<std::uint32_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
     void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
@@ -413,6 +413,43 @@ private:
     std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from);
     bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
                         const ast::BlockView& view);
+    // A G70 finishing path under G41/G42: each element offset with the next one as look-ahead.
+    bool compensate_path(const std::vector<cycles::ProfileMove>& path, const ast::BlockView& view);
+    // --- G43/G44/G49 tool length offsets (executor_length.cpp, semantics.md §7, §2.7) ----------
+    // The H register's length (geometry + wear) on Z, +G43 / −G44; machine_offset() adds it. The
+    // work coordinates stay: the machine position shifts (like a lathe T word).
+    static constexpr std::uint32_t kLengthCompCode = 1u << 13;   // tool-length-comp-plus/minus/cancel
+    int length_sign_ = 0;      // +1 G43, −1 G44, 0 G49 (power-on)
+    int length_h_ = 0;         // the H number in force
+    double length_mm_ = 0;     // the signed offset on Z, mm
+    void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
+    // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
+    static constexpr std::uint32_t kCornerSlowdownCode = 1u << 14;   // corner-slowdown, -cancel (seed 004 G28/G29)
+    static constexpr std::uint32_t kApproachOffsetCode = 1u << 15;  // axial-offset-direction-plus (seed 004 G43)
+    struct Slowdown {
+        double k_mm = 0;       // the distance before each G01 end point
+        double fraction = 0;   // F percent / 100: the reduction
+    };
+    std::optional<Slowdown> slowdown_;
+    bool in_slowdown_ = false;              // the pieces of a split move are not split again
+    double slowdown_time_factor_ = 1.0;     // time_feed_move: a ramp's time over the step's
+    void apply_corner_slowdown(const ast::BlockView& view, const BlockWords& words);
+    // A G01 move split before its end into the full-feed and the reduced-feed piece; false when
+    // the move is not slowed (move() then runs it whole).
+    bool slowed_move(const Position& to, const Frame& f, const ast::BlockView& view);
+    bool approach_offset_move(const ast::BlockView& view, const Position& to);
+    static constexpr std::uint32_t kArcApproachCode = 1u << 16;    // arc-approach, arc-exit (seed 004 G12/G13)
+    // Every class has a bit of its own (the plane: two bits for three values); a branch adding a
+    // class must not reuse one (two merges did).
+    static_assert(std::popcount(kCycleCode | kPathChangerCode | kIncrementalCode | kPerRevolutionCode | kCssCode |
+                                kInchCode | kPlaneYZCode | kOneShotCode | kMotionCode | kPositionOffsetCode |
+                                kRadiusCompCode | kTransformCode | kLengthCompCode | kCornerSlowdownCode |
+                                kApproachOffsetCode | kArcApproachCode) == 17);
+    // G12/G13 X Y: a quarter arc from the programmed point to X Y, run as a G03 (G41, G40) or G02
+    // (G42) block with its centre words; true when it moved.
+    bool arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
+    // The block's words with the centre words of that arc from `from`; `ccw` its direction.
+    BlockWords arc_approach_words(const BlockWords& words, const Position& from, const Position& to, bool& ccw) const;
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);

@@ -145,6 +145,11 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
             programmed_ = from;
             bool moves = false;
             const Position to = target_position(words, moves);
+            if ((scan_.classes & kArcApproachCode) && moves) {   // seed-004 G12/G13 (executor_iso_specials.cpp)
+                bool ccw = true;
+                words = arc_approach_words(words, from, to, ccw);
+                flags_.motion = ccw ? fn::circular_ccw : fn::circular_cw;
+            }
             if (moves || full_circle(words)) {
                 const int side_before = comp_side_;
                 Position end;
@@ -232,6 +237,40 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
         programmed_.reset();
         position_ = programmed_end;   // exactly on the programmed point after the cancel
     }
+    return true;
+}
+
+// G70 under G41/G42 (cycles.md §1 "tool-nose radius compensation active before G70 is applied to
+// the profile"; semantics.md §5): the finishing path, the return to A included, through the same
+// state machine as programmed blocks, each element with the following one as its look-ahead. The
+// F of a profile block is in effect for its own moves.
+bool Executor::compensate_path(const std::vector<cycles::ProfileMove>& path, const ast::BlockView& view) {
+    const double radius = comp_radius(block_words_);
+    std::vector<Programmed> elements;
+    Position from = comp_path_.value_or(position_);
+    for (const cycles::ProfileMove& m : path) {
+        const bool arc = m.kind == EventKind::arc_cw || m.kind == EventKind::arc_ccw;
+        const motion::Element e{plane_point(from), plane_point(m.end), arc, arc ? plane_point(m.center) : motion::P2{},
+                                m.kind == EventKind::arc_ccw};
+        elements.push_back(with_comp(e, comp_side_, radius));
+        from = m.end;
+    }
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+        if (!elements[i].moves()) continue;
+        std::optional<Programmed> next;
+        for (std::size_t k = i + 1; k < elements.size() && !next; ++k)
+            if (elements[k].moves()) next = elements[k];
+        const compensation::Step step = radius_comp_.step(elements[i], next);
+        if (step.alarm) {
+            radius_comp_.reset();
+            alarm(*frame_, view, step.alarm->number, step.alarm->text);
+            return false;
+        }
+        if (path[i].feed) feed_ = *path[i].feed;
+        if (!run_comp_moves(step, path[i].kind == EventKind::rapid, false, path[i].end, view)) return false;
+    }
+    comp_path_ = path.back().end;
+    programmed_ = path.back().end;
     return true;
 }
 

@@ -28,7 +28,6 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
 // Function ids (docs/functions.md) whose path the trace does not model yet.
 constexpr std::string_view kPathChangers[] = {
     "axial-offset-direction-plus", "axial-offset-direction-minus",
-    "corner-slowdown", "arc-approach", "arc-exit",
     "polar-coordinate-command", "scaling", "mirror",
 };
 
@@ -58,6 +57,11 @@ void Executor::classify_codes() {
             code_class_[i] |= kPathChangerCode;
         if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)
             code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
+        if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel)
+            code_class_[i] |= kLengthCompCode;   // [length offsets] executor_length.cpp
+        if (f == "corner-slowdown" || f == "corner-slowdown-cancel") code_class_[i] |= kCornerSlowdownCode;
+        if (f == "axial-offset-direction-plus") code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp
+        if (f == "arc-approach" || f == "arc-exit") code_class_[i] |= kArcApproachCode;
         // The modal flags update_flags() derives (executor.cpp).
         if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;
         if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;
@@ -72,7 +76,7 @@ void Executor::classify_codes() {
 
 bool Executor::is_cycle(const dialects::CodeInfo& code) const { return code_class_of(code) & kCycleCode; }
 
-std::uint16_t Executor::code_class_of(const dialects::CodeInfo& code) const {
+std::uint32_t Executor::code_class_of(const dialects::CodeInfo& code) const {
     const auto codes = dialect_.codes();
     const std::size_t i = static_cast<std::size_t>(&code - codes.data());
     return i < code_class_.size() ? code_class_[i] : (is_cycle_function(code.function) ? kCycleCode : 0);
@@ -138,7 +142,9 @@ public:
     bool return_to_r_level() const override { return ex_.modal_active(fn::return_r_level); }
     double modal_feed() const override { return ex_.feed_; }
 
-    Position position() const override { return ex_.position_; }
+    // Under G41/G42 the tool stands at an offset point: the cycle starts from the programmed one
+    // (the start point A of G70–G73 is the point of the block before, cycles.md §1).
+    Position position() const override { return ex_.comp_path_.value_or(ex_.position_); }
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
@@ -156,6 +162,17 @@ public:
     bool arc(bool cw, const Position& to, const Position& center, std::optional<double> f) override {
         if (f) ex_.feed_ = *f;
         return ex_.cycle_arc(cw, to, center, view_);
+    }
+    bool finishing_path(const std::vector<cycles::ProfileMove>& path) override {
+        if (ex_.compensating()) return ex_.compensate_path(path, view_);   // executor_compensation.cpp
+        for (const cycles::ProfileMove& m : path) {
+            const bool ok = m.kind == EventKind::rapid ? rapid(m.end)
+                            : (m.kind == EventKind::arc_cw || m.kind == EventKind::arc_ccw)
+                                ? arc(m.kind == EventKind::arc_cw, m.end, m.center, m.feed)
+                                : feed(m.end, m.feed);
+            if (!ok) return false;
+        }
+        return true;
     }
     bool thread(const Position& to, double lead) override {
         ex_.thread_lead_ = lead;
@@ -279,6 +296,8 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     const Position saved_position = position_;
     const ast::BlockView* saved_view = view_;
     cycles::Profile profile;
+    // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
+    if (comp_path_) position_ = *comp_path_;
     profile.start = position_;
     std::string_view motion = flags_.motion;
     bool ok = true;

@@ -121,6 +121,7 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
         const double mm_per_min = per_rev ? motion::feed_per_minute(feed_mm, e.spindle_rpm) : feed_mm;
         seconds = mm_per_min > 0 ? timed_length_mm / mm_per_min * 60.0 : 0;
     }
+    seconds *= slowdown_time_factor_;   // [seed 004 G28 ramp] 1 except for a ramp piece
     if (seconds > 0 && std::isfinite(seconds) && accel_mm_s2 > 0) {
         // Exact-stop trapezoid at the move's mean speed (motion/time.hpp).
         const double v = timed_length_mm / seconds;
@@ -130,6 +131,8 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
 }
 
 void Executor::move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view) {
+    // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
+    if (slowdown_ && kind == EventKind::linear && !in_slowdown_ && flags_.motion == fn::linear && slowed_move(to, f, view)) return;
     Event e;
     e.kind = kind;
     e.source = source(f, view);
@@ -188,6 +191,11 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     // which the block's coordinates are measured from (executor_drawing.cpp).
     const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
     if (apply_cycle(view, words, moves, to)) return false;
+    // [seed 004 G43] the approach stops D short of the point (executor_iso_specials.cpp, §9.4).
+    if ((scan_.classes & kApproachOffsetCode) && moves && setup_.iso_g43_approach &&
+        (flags_.motion == fn::rapid || flags_.motion == fn::linear))
+        return approach_offset_move(view, to);
+    if ((scan_.classes & kArcApproachCode) && moves) return arc_approach_move(view, words, to);   // [seed 004 G12/G13]
     // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
     if ((scan_.classes & kRadiusCompCode) || compensating()) return compensate_motion(view, words, to, moves);
     if (drawing_words(view) && flags_.motion == fn::linear) return draw_block(view, words, programmed_.value_or(position_), to);

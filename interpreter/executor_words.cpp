@@ -150,11 +150,12 @@ Position Executor::machine_offset() const {
     for (std::size_t a = 0; a < kAxisCount; ++a)
         p[a] = work_offsets_[static_cast<std::size_t>(work_system_)][a] + external_offset_[a] - work_shift_[a] +
                local_shift_[a] + setting_shift_[a] + tool[a];
+    p[2] += length_mm_;   // [length offsets] G43/G44 H on Z (executor_length.cpp)
     return p;
 }
 
 Position Executor::tool_offset() const {
-    // Mills offset the length with G43 H and the radius with G41/G42 D (the next issue), not by T.
+    // Mills offset the length with G43/G44 H (executor_length.cpp) and the radius with G41/G42 D, not by T.
     if (dialect_.machine != dialects::MachineKind::lathe || tool_offset_ == 0) return {};
     const auto it = tools_.find(tool_offset_);
     if (it == tools_.end()) return {};

@@ -70,6 +70,8 @@ struct Setup {
     compensation::Settings radius_comp;
     bool comp_shift_without_motion = false;   // seed 004: `G42 D02` alone moves the centre at once (§6)
     bool g41_g42_swapped = false;             // G41 = right (ADV400 list, semantics.md §12.12)
+    bool corner_slowdown_step = false;        // seed 004 G28 K F: the feed drops at once (true) or ramps (§9.5, §12.8)
+    bool iso_g43_approach = true;             // seed 004 G43 in a move: stop D short along the approach (§9.4, §12.9)
     cycles::Settings cycles;           // persistent cycle parameters and cycle switches (cycles.md §0, §21)
 };
 

@@ -61,6 +61,13 @@ public:
     // A start-up (not engaged, side ≠ 0) starts at current.path.start; a zero-length start-up
     // shifts the tool at once (the seed-004 `G42 D02` block without motion).
     Step step(const Programmed& current, const std::optional<Programmed>& next);
+    // The tool was put at `tool`, an offset point, by a move the compensation did not plan (the
+    // seed-004 G43 approach, semantics.md §9.4): the next element goes on from there.
+    void stand_at(motion::P2 tool) {
+        engaged_ = true;
+        tool_ = tool;
+        entry_.clear();
+    }
     // Forget the compensation (after an alarm, or a move the compensation does not follow).
     void reset() {
         engaged_ = false;

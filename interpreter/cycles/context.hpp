@@ -107,6 +107,9 @@ public:
     virtual bool feed(const Position& to, std::optional<double> feed = std::nullopt) = 0;
     virtual bool arc(bool cw, const Position& to, const Position& center, std::optional<double> feed = std::nullopt) = 0;
     virtual bool thread(const Position& to, double lead) = 0;
+    // A finishing path (G70, cycles.md §1): offset by the tool nose radius compensation in force
+    // before the cycle (semantics.md §5 "G70 does"), else run as written; false when the run stopped.
+    virtual bool finishing_path(const std::vector<ProfileMove>& path) = 0;
     // A feed move at `mm_per_min` whatever G94/G95 (G98/G99) is in effect; the modal F and feed mode
     // stay (SPINNER cycles: F, S are cycle data, cycles.md §12–§16).
     virtual bool feed_at(const Position& to, double mm_per_min) = 0;

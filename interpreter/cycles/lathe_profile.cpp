@@ -43,12 +43,24 @@ Pt allowance(Context& ctx) {
 
 // --- G70 (§1) ------------------------------------------------------------------------------------
 
-// The profile as written, F of the profile blocks in effect, then rapid back to A.
+// The profile as written, F of the profile blocks in effect, then rapid back to A; under G41/G42
+// the executor offsets the whole path, the return included (semantics.md §5).
 void finishing(Context& ctx, const Profile& profile) {
-    const Contour contour = contour_of(profile, 0, ctx.diameter_x());
-    for (const Seg& s : contour)
-        if (!emit(ctx, s, profile.start, profile.moves[s.move].feed)) return;
-    ctx.rapid(profile.start);
+    const bool dia = ctx.diameter_x();
+    std::vector<ProfileMove> path;
+    for (const Seg& s : contour_of(profile, 0, dia)) {
+        ProfileMove m;
+        m.kind = s.kind;
+        m.end = to_position(s.b, profile.start, dia);
+        if (s.is_arc()) m.center = to_position(s.c, profile.start, dia);
+        m.feed = profile.moves[s.move].feed;
+        path.push_back(m);
+    }
+    ProfileMove back;
+    back.kind = EventKind::rapid;
+    back.end = profile.start;
+    path.push_back(back);
+    ctx.finishing_path(path);
 }
 
 // --- G71 / G72 type I (§2, §3) -------------------------------------------------------------------

@@ -1,0 +1,135 @@
+// Special functions of iso-legacy-mill (reference seed 004; semantics.md §9.4, §9.5), reached by
+// function id: G28 K F / G29 are the corner slow-down and its cancel there, not reference returns
+// (gcode-tables.md §6), and G43 in a move is an approach that stops D short of the point.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "dialects/functions.hpp"
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+
+// §9.5: `G28 K15. F30` – over the last K mm before each G01 end point the feed is reduced by F
+// percent; a new G28 replaces the values, G29 cancels. The block has no motion.
+void Executor::apply_corner_slowdown(const ast::BlockView& view, const BlockWords& words) {
+    for (const ast::CodeRef& c : scan_.g) {
+        if (!c.info || !(code_class_of(*c.info) & kCornerSlowdownCode)) continue;
+        if (c.info->function == "corner-slowdown-cancel") {
+            slowdown_.reset();
+            continue;
+        }
+        const auto* k = words.get('K');
+        const auto* p = words.get('F');
+        // K in mm as written: the seed's `K5` is "5 mm before point 7" (§9.5), not 5 increments.
+        if (!k || !p || k->value <= 0 || p->value <= 0 || p->value >= 100) {
+            Event e = event_at(EventKind::message, *frame_, view);
+            e.text = fmt::format("{} needs K > 0 (mm) and F in 1..99 (percent): no corner slow-down (semantics.md §9.5)",
+                                 c.info->spelling);
+            emit(e);
+            slowdown_.reset();
+            continue;
+        }
+        slowdown_ = Slowdown{k->value * unit_scale(), p->value / 100.0};
+    }
+}
+
+// The move from the tool to `to` at F up to K mm before the end, then at F·(1 − p) (the event's
+// feed). The machine switch corner_slowdown: a step (the seed's "147 mm/min over the last 15 mm")
+// or, by default, a linear ramp from F to F·(1 − p) ("at point 7 the feed is 500"), whose time
+// over the last d ≤ K mm is ∫ ds / f(s) with f(s) = F·(1 − p) + F·p·s/K:
+// K/(F·p) · ln(f(d) / (F·(1 − p))).
+bool Executor::slowed_move(const Position& to, const Frame& f, const ast::BlockView& view) {
+    const double length = motion::distance(geometric_mm(position_, setup_.diameter_x, unit_scale()),
+                                           geometric_mm(to, setup_.diameter_x, unit_scale()));
+    if (length <= 1e-9 || feed_ <= 0) return false;
+    const double k = slowdown_->k_mm;
+    const double d = std::min(k, length);
+    in_slowdown_ = true;
+    if (d < length) {
+        Position mid = position_;
+        const double t = 1 - d / length;
+        for (std::size_t a = 0; a < kAxisCount; ++a) mid[a] = position_[a] + (to[a] - position_[a]) * t;
+        move(EventKind::linear, mid, f, view);
+    }
+    if (!stopped_) {
+        const double full = feed_;
+        const double reduced = full * (1 - slowdown_->fraction);
+        if (!setup_.corner_slowdown_step) {
+            const double at_d = reduced + (full - reduced) * d / k;
+            slowdown_time_factor_ = (k / (full - reduced) * std::log(at_d / reduced)) / (d / reduced);
+        }
+        feed_ = reduced;
+        move(EventKind::linear, to, f, view);
+        feed_ = full;
+        slowdown_time_factor_ = 1.0;
+    }
+    in_slowdown_ = false;
+    return true;
+}
+
+// §9.4 (example 6 `N60 G0 G43 X140. Y35. D08`): the tool stops D short of the programmed point
+// along the approach from the programmed start [inference, flagged in a message; machine switch
+// iso_g43]. Under G41/G42 the tool then stands at an offset point of the programmed end (the
+// centre of the next element's start-up), so the compensation goes on from there.
+bool Executor::approach_offset_move(const ast::BlockView& view, const Position& to) {
+    const Position from = comp_path_ ? *comp_path_ : programmed_.value_or(position_);
+    const motion::P2 a = plane_point(from), b = plane_point(to);
+    const double length = motion::norm(b - a);
+    const double d = d_register() * unit_scale();
+    const motion::P2 end = length > 1e-9 ? b - (b - a) * (d / length) : b;
+    Event m = event_at(EventKind::message, *frame_, view);
+    m.text = fmt::format("G43 approach: the tool stops D = {:.3f} mm short of the programmed point (semantics.md §9.4, "
+                         "an inference of seed 004 example 6)", d);
+    emit(m);
+    move(flags_.motion == fn::rapid ? EventKind::rapid : EventKind::linear, plane_position(end, to), *frame_, view);
+    if (stopped_) return true;
+    if (comp_side_ != 0) {
+        radius_comp_.stand_at(end);
+        comp_path_ = to;
+    }
+    programmed_ = to;
+    return true;
+}
+
+// §9.6 (example 4: `G12 X95. Y30. F200` may replace `G3 X95. Y90. I-40. J0. F200`, `G13 X55. Y50.
+// F200` the exit `G3 X55. Y50. I0. J-40.`): the seed gives neither radius nor direction; in the
+// example both are quarter circles, counter-clockwise under G41 [inference]: a quarter arc from
+// the programmed point to X Y, CCW under G41 (and G40), CW under G42, its centre on the side the
+// arc turns to at |chord|/2 from the chord's middle. The block then runs as that G02/G03 with
+// centre words (compensation included).
+BlockWords Executor::arc_approach_words(const BlockWords& words, const Position& from, const Position& to, bool& ccw) const {
+    const motion::P2 a = plane_point(from), b = plane_point(to);
+    ccw = comp_side_of_block(comp_side_) >= 0;
+    const motion::P2 half = (b - a) * 0.5;
+    const motion::P2 towards = ccw ? motion::P2{-half.b, half.a} : motion::P2{half.b, -half.a};   // the half chord turned ±90°
+    const motion::P2 offset = (half + towards) * (1.0 / unit_scale());   // centre − start, program units
+    static constexpr char kLetters[3][2] = {{'I', 'J'}, {'K', 'I'}, {'J', 'K'}};   // G17, G18, G19 plane frames
+    const auto& letters = kLetters[plane() == motion::Plane::xy ? 0 : plane() == motion::Plane::zx ? 1 : 2];
+    BlockWords arc = words;
+    for (const auto& [letter, value] : {std::pair{letters[0], offset.a}, std::pair{letters[1], offset.b}}) {
+        Word w;
+        w.value = value;
+        w.has_point = true;
+        arc.words.set(letter, w);
+    }
+    return arc;
+}
+
+bool Executor::arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
+    bool ccw = true;
+    const BlockWords arc = arc_approach_words(words, comp_path_ ? *comp_path_ : programmed_.value_or(position_), to, ccw);
+    const std::string_view saved = flags_.motion;
+    flags_.motion = ccw ? fn::circular_ccw : fn::circular_cw;
+    bool moved = true;
+    if ((scan_.classes & kRadiusCompCode) || compensating()) moved = compensate_motion(view, arc, to, true);
+    else arc_move(!ccw, to, arc, view);
+    flags_.motion = saved;
+    if (!compensating()) programmed_.reset();
+    return moved;
+}
+
+}  // namespace kerf::interpreter

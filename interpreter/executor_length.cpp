@@ -1,0 +1,55 @@
+// G43/G44/G49 tool length offsets (reference semantics.md §7; the dry-run formula of §2.7: "for
+// mills add G43/G44 length (H) on Z"). G43 adds the H register (length + length wear) to the Z
+// machine position, G44 subtracts it, G49 (and H0) cancel; an H word alone changes the register
+// while G43/G44 is in force ([FANUC]). The programmed (work) coordinates stay what they are: the
+// machine position shifts, which the tool takes up with the next Z move, as a lathe T word does
+// (dialects.md §3.5). The block's event says so; its `code` is the H number and `tool` the
+// spindle tool, so a rule can compare them (an H of another tool: analyzer K5019).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dialects/functions.hpp"
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+
+void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords& words) {
+    int sign = length_sign_;
+    const dialects::CodeInfo* code = nullptr;
+    for (const ast::CodeRef& c : scan_.g) {
+        if (!c.info || !(code_class_of(*c.info) & kLengthCompCode)) continue;
+        code = c.info;   // several in one block: the last one wins (semantics.md §1.1)
+        sign = c.info->function == fn::tool_length_comp_plus ? 1 : c.info->function == fn::tool_length_comp_minus ? -1 : 0;
+    }
+    const auto* h_word = words.get('H');
+    if (!code && !h_word) return;   // G43/G44 in force, nothing new in this block
+    // The block's H, else the last H written (FANUC modal H; remember_words keeps it).
+    const auto& modal_h = last_words_[static_cast<std::size_t>('H' - 'A')];
+    const int h = sign == 0 ? 0 : h_word ? static_cast<int>(std::lround(h_word->value))
+                                         : modal_h ? static_cast<int>(std::lround(*modal_h)) : 0;
+    double length = 0;
+    if (h != 0) {
+        const auto it = tools_.find(h);
+        if (it == tools_.end() && h > setup_.tool_offset_count) {
+            Event m = event_at(EventKind::message, *frame_, view);
+            m.text = fmt::format("H{}: the machine has offset numbers 1..{} only: length 0", h, setup_.tool_offset_count);
+            emit(m);
+        }
+        if (it != tools_.end()) length = it->second.length + it->second.length_wear;
+    }
+    length_sign_ = sign;
+    length_h_ = h;
+    length_mm_ = sign * length;
+    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+    e.code = h;
+    e.text = sign == 0 ? "tool length offset cancelled (G49): machine Z = programmed Z"
+                       : fmt::format("tool length offset {} H{}: machine Z = programmed Z {} {:.3f} mm",
+                                     code ? code->spelling : std::string(sign > 0 ? "G43" : "G44"), h,
+                                     sign > 0 ? "+" : "-", length);
+    emit(e);
+}
+
+}  // namespace kerf::interpreter
