@@ -12,7 +12,8 @@
 #   2. checks that both really run the whole file: kerf's summary (blocks executed, ended normally)
 #      and its trace event counts by kind against rs274's canonical calls (STRAIGHT_TRAVERSE /
 #      STRAIGHT_FEED / ARC_FEED, PROGRAM_END), from the timed runs that write to a real file
-#   3. runs, KERF_DRYRUN_RUNS times (default 3), in one go and pinned to one core (taskset):
+#   3. runs, KERF_DRYRUN_RUNS times (default 3), in one go and pinned to one core (taskset; not
+#      with KERF_DRYRUN_PIN=0, where kerf's read-ahead thread gets the second core):
 #        kerf run F.nc                       no trace: the tree and the interpreter
 #        kerf run F.nc --trace /dev/null     the JSON-lines trace produced and thrown away
 #        kerf run F.nc --trace out.jsonl     the trace written to a file in BUILD_DIR
@@ -91,8 +92,10 @@ fi
 echo "rs274:    $rs274, $(dpkg-query -W -f='${Package} ${Version}' linuxcnc-uspace 2>/dev/null || echo 'version unknown')"
 echo "load:     $(cut -d' ' -f1-3 /proc/loadavg) (1/5/15 min)"
 
+# KERF_DRYRUN_PIN=0: not pinned. kerf then reads ahead on the second core (the grammar parses the
+# next pieces while the interpreter runs); rs274 is single-threaded either way.
 pin=()
-if command -v taskset >/dev/null; then
+if [ "${KERF_DRYRUN_PIN:-1}" != 0 ] && command -v taskset >/dev/null; then
     core=1
     [ "$(nproc)" -lt 2 ] && core=0
     pin=(taskset -c "$core")

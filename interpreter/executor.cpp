@@ -144,13 +144,19 @@ Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& v
     return e;
 }
 
-void Executor::emit(Event e) {
+void Executor::emit(Event&& e) {
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a) e.machine_end[a] = e.end[a] * axis_scale(a) + offset[a];
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;
-    if (e.time_s > 0) result_.time_per_tool_s[tool_] += e.time_s;
+    if (e.time_s > 0) {
+        if (timed_tool_ != tool_ || !tool_time_) {
+            tool_time_ = &result_.time_per_tool_s[tool_];
+            timed_tool_ = tool_;
+        }
+        *tool_time_ += e.time_s;
+    }
     sink_.on_event(e);
 }
 

@@ -287,7 +287,14 @@ private:
     double current_rpm(double x_diameter) const;
     // An event of this block at the current position (start = end), before its details are set.
     Event event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const;
-    void emit(Event e);
+    // The event goes to the sink with its machine position and tool; rvalues are not copied.
+    void emit(Event&& e);
+    void emit(const Event& e) {
+        Event copy = e;
+        emit(std::move(copy));
+    }
+    int timed_tool_ = -1;                  // time_per_tool_s[timed_tool_] is *tool_time_ (map nodes stay)
+    double* tool_time_ = nullptr;
     void alarm(const Frame& f, const ast::BlockView& view, int number, std::string text);
     // Stored stroke check of the box low..high (work coordinates); false after an OT alarm.
     bool within_soft_limits(const Position& low, const Position& high, const Frame& f, const ast::BlockView& view);
