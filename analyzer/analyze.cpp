@@ -1,5 +1,8 @@
 #include "analyzer/analyze.hpp"
 
+#include <iterator>
+#include <thread>
+
 #include <algorithm>
 #include <unordered_set>
 
@@ -162,12 +165,25 @@ std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t
     const interpreter::LoadedFile& loaded = programs.file(file);
     const ast::SyntaxTree& tree = *loaded.whole_tree();
     const ast::TypedFile& typed = *loaded.whole_typed();
-    const FileContext ctx{typed, dialect, setup,
-                          [&programs, file](std::int64_t n) { return programs.find_or_load(n, file).has_value(); }};
+    // A long file: the dry run on a second thread while the static rules walk the tree (both only
+    // read it). Then only the dry run may add files to the set, so the static rules ask this file
+    // and the loader (the folder) directly instead of ProgramSet::find_or_load.
+    const bool parallel = options.dry_run && tree.text.size() >= options.parallel_from_bytes && needs_run(rules);
+    std::vector<Finding> dynamic;
+    std::thread run_thread;
+    if (parallel)
+        run_thread = std::thread([&] { run_dynamic(programs, file, dialect, setup, registry, rules, dynamic); });
+    const interpreter::ProgramSet::Loader loader = programs.loader();
+    const FileContext ctx{typed, dialect, setup, [&](std::int64_t n) {
+                              if (!parallel) return programs.find_or_load(n, file).has_value();
+                              return loaded.find_program(n).has_value() || (loader && loader(n).has_value());
+                          }};
     run_static(ctx, rules, out);
     map_diagnostics(tree, tree.diagnostics, registry, rules, out);
     map_diagnostics(tree, typed.diagnostics(), registry, rules, out);
-    if (options.dry_run) run_dynamic(programs, file, dialect, setup, registry, rules, out);
+    if (parallel) run_thread.join();
+    else if (options.dry_run) run_dynamic(programs, file, dialect, setup, registry, rules, dynamic);
+    out.insert(out.end(), std::make_move_iterator(dynamic.begin()), std::make_move_iterator(dynamic.end()));
     finalize(out, tree, *loaded.whole_lines(), registry, options.config);
     return out;
 }

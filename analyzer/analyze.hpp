@@ -19,6 +19,8 @@ struct CheckOptions {
     const Registry* registry = nullptr;   // nullptr: builtin_rules()
     CheckConfig config;
     bool dry_run = true;                  // run the interpreter for the dynamic rules
+    // Files of this size or more run the dry run on a second thread beside the static rules.
+    std::size_t parallel_from_bytes = std::size_t{1} << 20;
 };
 
 // Checks file `file` of `programs` (its first program is run as the main program).

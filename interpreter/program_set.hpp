@@ -30,6 +30,7 @@ public:
         loader_ = std::move(loader);
         loader_dialect_ = dialect;
     }
+    const Loader& loader() const { return loader_; }
     // find(), then the loader; a loaded file joins the set.
     std::optional<ProgramRef> find_or_load(std::int64_t number, std::uint32_t from_file);
 

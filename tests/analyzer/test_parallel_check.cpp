@@ -1,0 +1,48 @@
+// kerf check runs the dry run beside the static rules on a second thread for long files
+// (analyzer/analyze.cpp check_file): the findings must be the same as one after the other.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "analyzer/analyze.hpp"
+#include "interpreter/default_setup.hpp"
+#include "tests/interpreter/interpreter_fixture.hpp"
+
+using namespace kerf;
+
+namespace {
+
+std::vector<std::string> keys(const std::vector<analyzer::Finding>& findings) {
+    std::vector<std::string> out;
+    for (const analyzer::Finding& f : findings)
+        out.push_back(f.rule + "@" + std::to_string(f.range.begin) + ":" + f.message);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("the dry run beside the static rules finds what it finds after them") {
+    // Static findings (letter O for zero, a missing subprogram), dynamic ones (a feed move without
+    // feed: K5001; the missing program again as alarm 078) and a long body between them.
+    std::string text = "O0001\nT1 MO6\nG90 G01 X10. Y10.\n";
+    for (int i = 0; i < 20000; ++i) text += "G01 X" + std::to_string(i % 97) + ". Y" + std::to_string(i % 89) + ". F500.\n";
+    text += "M98 P4321\nM30\n";
+    const dialects::Dialect& d = test::dialect("fanuc-mill");
+    const interpreter::Setup setup = interpreter::default_setup(d);
+    analyzer::CheckOptions sequential;
+    sequential.parallel_from_bytes = std::size_t(-1);
+    analyzer::CheckOptions parallel;
+    parallel.parallel_from_bytes = 0;
+    const auto one = analyzer::check_text("a.nc", text, d, setup, sequential);
+    const auto two = analyzer::check_text("a.nc", text, d, setup, parallel);
+    REQUIRE_FALSE(one.empty());
+    CHECK(keys(one) == keys(two));
+    bool has_static = false, has_dynamic = false;
+    for (const auto& f : one) {
+        has_static |= f.rule == "K1003";
+        has_dynamic |= !f.notes.empty() && f.notes.front().starts_with("found by the dry run");
+    }
+    CHECK(has_static);
+    CHECK(has_dynamic);
+}
