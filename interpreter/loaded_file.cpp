@@ -54,47 +54,38 @@ const ast::LineIndex* LoadedFile::whole_lines() const { return owned_whole_ ? he
 // it when a single line is longer: blocks never span lines (grammar/parse.cpp).
 LoadedFile::Piece LoadedFile::parse_piece(Cursor& cursor, Held& held) const {
     Piece piece;
-    piece.text_begin = cursor.text_begin;
-    piece.first_block = cursor.first_block;
-    piece.first_line = cursor.first_line;
-    piece.parse_start = cursor.state;
-    piece.linear_at_start = cursor.linear;
+    piece.start = cursor;
     const std::size_t size = text_.size();
     std::size_t end = size;
-    if (size - piece.text_begin > options_.piece_bytes) {
-        const std::string_view window = text_.substr(piece.text_begin, options_.piece_bytes);
+    if (size - piece.text_begin() > options_.piece_bytes) {
+        const std::string_view window = text_.substr(piece.text_begin(), options_.piece_bytes);
         const std::size_t last_nl = window.rfind('\n');
         if (last_nl != std::string_view::npos) {
-            end = piece.text_begin + last_nl + 1;
+            end = piece.text_begin() + last_nl + 1;
         } else {
-            const std::size_t next_nl = text_.find('\n', piece.text_begin + options_.piece_bytes);
+            const std::size_t next_nl = text_.find('\n', piece.text_begin() + options_.piece_bytes);
             end = next_nl == std::string_view::npos ? size : next_nl + 1;
         }
     }
     piece.text_end = end;
-    const std::string_view text = text_.substr(piece.text_begin, end - piece.text_begin);
+    const std::string_view text = text_.substr(piece.text_begin(), end - piece.text_begin());
     held.typed.reset();
-    cursor.state = grammar::parse_into(held.tree, text, dialect_.lexical, piece.parse_start);
-    held.typed = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(held.tree, dialect_, piece.linear_at_start));
+    cursor.state = grammar::parse_into(held.tree, text, dialect_.lexical, piece.start.state);
+    held.typed = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(held.tree, dialect_, piece.start.linear));
     held.lines = std::make_unique<ast::LineIndex>(held.tree.text);
-    piece.end_block = piece.first_block + static_cast<std::uint32_t>(held.tree.block_count());
+    piece.end_block = piece.first_block() + static_cast<std::uint32_t>(held.tree.block_count());
     cursor.text_begin = end;
     cursor.first_block = piece.end_block;
     cursor.first_line += static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
     cursor.linear = held.typed->linear_at_end();
     cursor.done = cursor.state.ended || end >= size;
     piece.last = cursor.done;
-    if (options_.release) options_.release(piece.text_begin, piece.text_end);
+    if (options_.release) options_.release(piece.text_begin(), piece.text_end);
     return piece;
 }
 
 void LoadedFile::parse_again(const Piece& piece, Held& held) const {
-    Cursor cursor;
-    cursor.text_begin = piece.text_begin;
-    cursor.first_block = piece.first_block;
-    cursor.first_line = piece.first_line;
-    cursor.state = piece.parse_start;
-    cursor.linear = piece.linear_at_start;
+    Cursor cursor = piece.start;
     parse_piece(cursor, held);
 }
 
@@ -189,7 +180,7 @@ bool LoadedFile::read_next_piece() const {
     pieces_.push_back(piece);
     held.piece = pieces_.size() - 1;
     held.last_use = ++clock_;
-    for (std::uint32_t b = 0; b < held.tree.block_count(); ++b) splitter_.feed(held.tree, b, piece.first_block + b);
+    for (std::uint32_t b = 0; b < held.tree.block_count(); ++b) splitter_.feed(held.tree, b, piece.first_block() + b);
     if (piece.last) {
         complete_ = true;
         splitter_.finish(piece.end_block);
@@ -239,7 +230,7 @@ const LoadedFile::Held& LoadedFile::hold(std::size_t index) const {
 
 std::size_t LoadedFile::piece_of(std::uint32_t block) const {
     const auto it = std::upper_bound(pieces_.begin(), pieces_.end(), block,
-                                     [](std::uint32_t b, const Piece& p) { return b < p.first_block; });
+                                     [](std::uint32_t b, const Piece& p) { return b < p.first_block(); });
     return static_cast<std::size_t>(it - pieces_.begin()) - 1;
 }
 
@@ -254,9 +245,9 @@ ast::BlockView LoadedFile::block(std::uint32_t index) const {
     const Held& held = held_for(index);
     const Piece& piece = pieces_[held.piece];
     last_held_ = &held;
-    last_first_ = piece.first_block;
+    last_first_ = piece.first_block();
     last_end_ = piece.end_block;
-    return held.typed->block(index - piece.first_block);
+    return held.typed->block(index - piece.first_block());
 }
 
 bool LoadedFile::has_block(std::uint32_t index) const {
@@ -305,14 +296,14 @@ const LoadedFile::Held* LoadedFile::owner(const ast::BlockView& view) const {
 ast::Range LoadedFile::file_range(const ast::BlockView& view) const {
     const ast::Range local = view.range();
     const auto* held = owner(view);
-    const std::size_t base = held ? pieces_[held->piece].text_begin : 0;
+    const std::size_t base = held ? pieces_[held->piece].text_begin() : 0;
     return {static_cast<std::uint32_t>(local.begin + base), static_cast<std::uint32_t>(local.end + base)};
 }
 
 std::uint32_t LoadedFile::line_of(const ast::BlockView& view, std::uint32_t hint) const {
     const auto* held = owner(view);
     if (!held) return 0;
-    const std::uint32_t first_line = pieces_[held->piece].first_line;
+    const std::uint32_t first_line = pieces_[held->piece].start.first_line;
     const std::uint32_t local_hint = hint >= first_line ? hint - first_line : 0;
     return first_line + held->lines->line_near(view.range().begin, local_hint);
 }

@@ -80,25 +80,23 @@ public:
     const ast::LineIndex* whole_lines() const;
 
 private:
-    struct Piece {            // what is kept of every piece read: a few dozen bytes per piece
-        std::uint32_t first_block = 0;
-        std::uint32_t end_block = 0;
-        std::size_t text_begin = 0;
-        std::size_t text_end = 0;
-        std::uint32_t first_line = 0;
-        grammar::ParseState parse_start;
-        bool linear_at_start = false;
-        bool last = false;    // the end of the file, or of the tape (the closing '%')
-    };
-    struct Held;              // a parsed piece: tree, typed file, line index
-    struct Cursor {           // where the next piece of the file starts
+    struct Cursor {           // where a piece starts: what the parse and bind of the piece before left
         std::size_t text_begin = 0;
         std::uint32_t first_block = 0;
         std::uint32_t first_line = 0;
         grammar::ParseState state;
         bool linear = false;
-        bool done = false;
+        bool done = false;    // no piece starts here: the file (or the tape) has ended
     };
+    struct Piece {            // what is kept of every piece read: a few dozen bytes per piece
+        Cursor start;         // re-reading the piece starts from here
+        std::uint32_t end_block = 0;
+        std::size_t text_end = 0;
+        bool last = false;    // the end of the file, or of the tape (the closing '%')
+        std::uint32_t first_block() const { return start.first_block; }
+        std::size_t text_begin() const { return start.text_begin; }
+    };
+    struct Held;              // a parsed piece: tree, typed file, line index
     class ReadAhead;          // the second thread (loaded_file.cpp)
 
     // Parses the piece at `cursor` into `held` and moves the cursor past it. Touches only the
