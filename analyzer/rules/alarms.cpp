@@ -45,6 +45,11 @@ void add_alarms(Registry& r) {
         {"An arc whose start and end radius differ beyond the tolerance, or whose R is smaller than half the chord.",
          "The control stops with alarm 020, or cuts a different arc.", "G02 X20. Z-10. R2.", "G02 X20. Z-10. R10.",
          "semantics.md §3"}));
+    r.add(alarm_rule("K5023", "compensation-overcut", Category::motion, S::error, {{41, 41}},
+        {"Cutter or nose radius compensation cannot follow a segment: it is shorter than the radius allows, or an "
+         "inside arc is smaller than the radius (the offset path would run backwards and cut into the part).",
+         "The control stops with alarm 041 (interference) before the block.",
+         "G41 D1 (R5) in an 8 x 8 pocket", "a smaller tool, or a pocket wider than the cutter", "semantics.md §6"}));
     r.add(alarm_rule("K5015", "soft-limit", Category::motion, S::error, {{500, 501}},
         {"A move beyond the machine's stored stroke limit.", "The control stops with OT500/OT501 before the axis hits the stop.",
          "G00 X900.", "G00 X200.", "machine/SCHEMA.md soft limits; semantics.md §2"}));

@@ -87,6 +87,11 @@ F = {
  "K5020-g28-absolute-intermediate": (L, prog("G28 X0. Z0."), prog("G28 U0. W0."), [(2, "X0.", W)]),
  "K5021-spindle-over-limit": (L, prog("G97 S9000 M03"), prog("G97 S3000 M03"), [(2, "S9000", W)]),
  "K5022-cycle-parameter-out-of-range": (L, prog("G04 X-1."), prog("G04 X1."), [(2, "X-1.", E)]),
+ # An 8 x 8 pocket with a 10 mm cutter (G10 L12 R5.): the offset of Y18. runs from (13,15) to (13,13), against the
+ # programmed direction, so the control stops at that block (alarm 041); a 30 x 30 pocket fits.
+ "K5023-compensation-overcut": (M, prog("G10 L12 P1 R5.", "G90 G00 X0. Y0.", "G41 D1 G01 X10. Y10. F100.", "X18.", "Y18.", "X10.", "Y10.", "G40 G00 X0. Y0."),
+                                prog("G10 L12 P1 R5.", "G90 G00 X0. Y0.", "G41 D1 G01 X10. Y10. F100.", "X40.", "Y40.", "X10.", "Y10.", "G40 G00 X0. Y0."),
+                                [(6, "Y18.", E)]),
 }
 # K5015 needs soft limits: the harness sets them from "# soft-limit AXIS MIN MAX".
 SOFT = {"K5015-soft-limit": (L, prog("G00 X900."), prog("G00 X200."), [(2, "G00", E)], "# soft-limit X -10 500")}
