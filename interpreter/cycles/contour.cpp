@@ -1,6 +1,7 @@
 #include "interpreter/cycles/contour.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <numbers>
 
 namespace kerf::interpreter::cycles {
@@ -54,6 +55,23 @@ Seg part(const Seg& s, double t0, double t1) {
         p.sweep = (t1 - t0) * s.sweep;
     }
     return p;
+}
+
+// Parameters t strictly inside (0, 1) where coordinate `c` of s equals `value`, ascending.
+std::vector<double> inner_crossings(const Seg& s, Coord c, double value) {
+    std::vector<double> ts;
+    if (!s.is_arc()) {
+        const double a = get(s.a, c), b = get(s.b, c);
+        if (std::fabs(b - a) < kEps) return ts;
+        const double t = (value - a) / (b - a);
+        if (t > kEps && t < 1 - kEps) ts.push_back(t);
+        return ts;
+    }
+    for (const double theta : circle_angles(s, c, value))
+        if (const auto t = arc_parameter(s, theta); t && *t > kEps && *t < 1 - kEps) ts.push_back(*t);
+    std::sort(ts.begin(), ts.end());
+    if (ts.size() == 2 && ts[1] - ts[0] < kEps) ts.pop_back();   // tangent: one touch
+    return ts;
 }
 
 }  // namespace
@@ -127,6 +145,48 @@ Contour after(const Contour& contour, const Crossing& at) {
     if (std::hypot(first.b.x - first.a.x, first.b.z - first.a.z) > kEps) out.push_back(first);
     out.insert(out.end(), contour.begin() + static_cast<std::ptrdiff_t>(at.seg) + 1, contour.end());
     return out;
+}
+
+Contour split_at(const Contour& contour, Coord c, double value) {
+    Contour out;
+    for (const Seg& s : contour) {
+        double from = 0;
+        for (const double t : inner_crossings(s, c, value)) {
+            Seg p = part(s, from, t);
+            if (c == Coord::x) p.b.x = value;   // exact on the line
+            else p.b.z = value;
+            out.push_back(p);
+            from = t;
+        }
+        Seg last = part(s, from, 1.0);
+        if (from > 0) (c == Coord::x ? last.a.x : last.a.z) = value;
+        out.push_back(last);
+    }
+    return out;
+}
+
+Contour until(const Contour& contour, const Crossing& at) {
+    Contour out(contour.begin(), contour.begin() + static_cast<std::ptrdiff_t>(std::min(at.seg, contour.size())));
+    if (at.seg >= contour.size()) return out;
+    Seg last = part(contour[at.seg], 0.0, at.t);
+    last.b = at.p;
+    if (std::hypot(last.b.x - last.a.x, last.b.z - last.a.z) > kEps) out.push_back(last);
+    return out;
+}
+
+double extreme(const Contour& contour, Coord c, double direction) {
+    double best = -1e300;   // in direction · value
+    const auto see = [&](Pt p) { best = std::max(best, direction * get(p, c)); };
+    for (const Seg& s : contour) {
+        see(s.a);
+        see(s.b);
+        if (!s.is_arc()) continue;
+        // x = cx + r sin θ is extreme at θ = ±π/2, z = cz + r cos θ at θ = 0, π.
+        const double h = std::numbers::pi / 2;
+        for (const double theta : c == Coord::x ? std::vector<double>{h, -h} : std::vector<double>{0.0, std::numbers::pi})
+            if (const auto t = arc_parameter(s, theta)) see(point_at(s, *t));
+    }
+    return direction * best;
 }
 
 bool monotonic(const Contour& contour, Coord c) {

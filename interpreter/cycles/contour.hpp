@@ -51,5 +51,13 @@ std::optional<Crossing> first_crossing(const Contour& contour, Coord c, double v
 Contour after(const Contour& contour, const Crossing& at);
 // Whether coordinate `c` never reverses along the contour (arcs included).
 bool monotonic(const Contour& contour, Coord c);
+// The contour with every segment cut where coordinate `c` passes `value` (arcs up to twice), so
+// each piece lies wholly on one side of the line c = value (G71/G72 type II levels).
+Contour split_at(const Contour& contour, Coord c, double value);
+// The part of the contour before a crossing.
+Contour until(const Contour& contour, const Crossing& at);
+// The largest value of `direction` · coordinate `c` on the contour (arcs' extremes included),
+// returned as the coordinate: direction +1 the maximum, −1 the minimum.
+double extreme(const Contour& contour, Coord c, double direction);
 
 }  // namespace kerf::interpreter::cycles

@@ -113,6 +113,98 @@ bool allowance_pass(Context& ctx, const Profile& profile, Coord level, const Con
     return true;
 }
 
+// --- G71 / G72 type II (§2 "Type II differences") ------------------------------------------------
+//
+// Levels step by Δd while any part of the allowance contour lies deeper than the level (pockets
+// included), not only down to A′. At each level the tool walks from the pass start along the level
+// and, where the contour rises above it, along the contour (over a hump and down into the next
+// pocket: "follows the contour down to the next level"); after the last place where the contour
+// is deeper than the level it follows the contour up to the previous level ("the tool following
+// the profile where it rises" instead of the 45° relief), steps out by e along the level axis and
+// returns at that height, or first out to A's level when a hump stands in the way [inference: the
+// seeds show no type II pass table].
+
+struct TypeTwo {
+    Coord level, pass;
+    double s;              // +1 when the levels step toward smaller values of `level` (OD for G71)
+    Pt a;                  // the start point A (radius)
+    Contour contour;       // the allowance contour, starting at A's pass coordinate
+};
+
+// The allowance contour from A's pass coordinate on: clipped where it crosses it (O0071: Z3 → Z1),
+// or led in along its start level when it starts beyond it.
+Contour from_pass_start(const Contour& contour, Coord pass, Pt a) {
+    if (contour.empty()) return contour;
+    if (const auto clip = first_crossing(contour, pass, get(a, pass))) return after(contour, *clip);
+    const Pt start = contour.front().a;
+    Seg lead;
+    lead.a = make(other(pass), get(start, other(pass)), get(a, pass));
+    lead.b = start;
+    Contour out{lead};
+    out.insert(out.end(), contour.begin(), contour.end());
+    return out;
+}
+
+// A piece of a split contour lies deeper than the level: inside the material the level removes.
+bool deeper(const TypeTwo& t, const Seg& piece, double level) {
+    return t.s * (level - get(point_at(piece, 0.5), t.level)) > kEps;
+}
+
+bool follow(Context& ctx, const Profile& profile, Seg piece) {
+    if (piece.kind == EventKind::rapid) piece.kind = EventKind::linear;   // roughing cuts at F
+    return emit(ctx, piece, profile.start);
+}
+
+// One level: the walk, the climb to the previous level, the step out and the return to the pass start.
+bool level_two(Context& ctx, const Profile& profile, const TypeTwo& t, const Rough& r, double level, double previous) {
+    const bool dia = ctx.diameter_x();
+    const auto at = [&](Pt p) { return to_position(p, profile.start, dia); };
+    const Contour pieces = split_at(t.contour, t.level, level);
+    std::size_t last = pieces.size();
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+        if (deeper(t, pieces[i], level)) last = i;
+    if (last == pieces.size()) return true;   // the level only touches the contour
+    const Pt in = deeper(t, pieces[0], level) ? make(t.level, level, get(t.a, t.pass)) : pieces[0].a;
+    const bool rapid_infeed = profile.moves[0].kind == EventKind::rapid;   // G00/G01 in block ns (§2)
+    if (!(rapid_infeed ? ctx.rapid(at(in)) : ctx.feed(at(in)))) return false;
+    for (std::size_t i = 0; i <= last; ++i) {
+        if (!deeper(t, pieces[i], level)) {
+            if (!follow(ctx, profile, pieces[i])) return false;
+        } else if (i == last || !deeper(t, pieces[i + 1], level)) {
+            if (!ctx.feed(at(make(t.level, level, get(pieces[i].b, t.pass))))) return false;
+        }
+    }
+    const Contour rest(pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1, pieces.end());
+    const auto top = first_crossing(rest, t.level, previous);
+    for (const Seg& s : top ? until(rest, *top) : rest)
+        if (!follow(ctx, profile, s)) return false;
+    Pt p = to_pt(ctx.position(), dia);
+    const double out = get(p, t.level) + t.s * r.retract;
+    const Pt relief = make(t.level, out, get(p, t.pass));
+    if (!(ctx.settings().relief == Relief::rapid ? ctx.rapid(at(relief)) : ctx.feed(at(relief)))) return false;
+    // The way back at the relief height crosses the contour already passed when a hump reaches it.
+    Contour passed(pieces.begin(), pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    if (t.s * (extreme(passed, t.level, t.s) - out) > -kEps && !ctx.rapid(at(make(t.level, get(t.a, t.level), get(p, t.pass)))))
+        return false;
+    p = to_pt(ctx.position(), dia);
+    return ctx.rapid(at(make(t.level, get(p, t.level), get(t.a, t.pass))));
+}
+
+bool rough_levels_two(Context& ctx, const Profile& profile, const Rough& r, const Contour& allowance_contour, Pt a, Pt a_allow) {
+    TypeTwo t{r.level, other(r.level), sign(get(a, r.level) - get(a_allow, r.level)), a, {}};
+    t.contour = from_pass_start(allowance_contour, t.pass, a);
+    if (t.s == 0 || t.contour.empty()) return true;
+    const double deepest = extreme(t.contour, t.level, -t.s);
+    double previous = get(a, r.level);
+    for (int k = 1;; ++k) {
+        const double level = get(a, r.level) - k * r.depth * t.s;
+        if (t.s * (level - deepest) <= kEps) break;
+        if (!level_two(ctx, profile, t, r, level, previous)) return false;
+        previous = level;
+    }
+    return true;
+}
+
 void rough(Context& ctx, const Profile& profile, const Rough& r) {
     const bool dia = ctx.diameter_x();
     if (r.depth <= 0) {
@@ -120,14 +212,17 @@ void rough(Context& ctx, const Profile& profile, const Rough& r) {
         return;
     }
     const ProfileMove& first = profile.moves[0];
+    // Type II: the first block names both axes (`N1000 G0 X60 W0`, cycles.md §2).
     const bool type2 = first.x_word && first.z_word;
-    if (type2)
-        ctx.message(fmt::format("{}: type II profile (first block moves both axes): roughed as type I, pockets are "
-                                "left to the allowance pass (cycles.md §2 type II is not expanded yet)", ctx.spelling()));
     const Contour finish = contour_of(profile, 1, dia);
     if (!type2 && (!monotonic(finish, Coord::x) || !monotonic(finish, Coord::z))) {
         ctx.alarm(64, fmt::format("{}: the type I profile must be monotonic in X and Z (cycles.md §2; FANUC alarm 064)",
                                   ctx.spelling()));
+        return;
+    }
+    if (type2 && !monotonic(finish, other(r.level))) {
+        ctx.alarm(64, fmt::format("{}: the type II profile must be monotonic in {} (cycles.md §2; FANUC alarm 064)",
+                                  ctx.spelling(), r.level == Coord::x ? 'Z' : 'X'));
         return;
     }
     const Pt shift = allowance(ctx);
@@ -135,7 +230,10 @@ void rough(Context& ctx, const Profile& profile, const Rough& r) {
     const Pt a = to_pt(profile.start, dia);
     const Pt a_prime = to_pt(first.end, dia);
     const Pt a_allow{a_prime.x + shift.x, a_prime.z + shift.z};
-    if (!allow.empty() && !rough_levels(ctx, profile, r, allow, a, a_allow)) return;
+    const auto levels = type2 ? rough_levels_two : rough_levels;
+    if (!allow.empty() && !levels(ctx, profile, r, allow, a, a_allow)) return;
+    // The semi-finishing pass along the allowance contour, both types ([FANUC] parameter 5105
+    // RF1/RF2 = 0: the rough finishing cut is made).
     if (!allowance_pass(ctx, profile, r.level, allow, a)) return;
     return_to(ctx, profile.start);
 }

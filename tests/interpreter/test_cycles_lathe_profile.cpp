@@ -191,6 +191,89 @@ TEST_CASE("G71 depth and retract persist across cycles and start from the machin
     check_path(initial, 3, {rapid(40, 1), feed(40, -10), rapid(50, 1)});
 }
 
+// G71 type II (cycles.md §2: the first block names both axes, `N10 G0 X20 W0`), a pocket.
+// A = X50 Z2 (radius 25), U2 R0.5 (Δd 2, e 0.5 on the radius), no allowance. Profile on the
+// radius: (10, 2) → s1 (10, −10) → s2 (20, −20) → s3 (14, −25) → s4 (14, −30) → s5 (23, −38).
+// Lines: s2 x = 10 + 10t, z = −10 − 10t (z = −x); s3 x = 20 − 6t, z = −20 − 5t; s5 x = 14 + 9t,
+// z = −30 − 8t. Levels 25 − 2k while deeper than the deepest point 10: 23 21 19 17 15 13 11.
+// Each level: along the level, over the hump along the contour where it stands above the level,
+// after the last deeper stretch up the contour to the previous level, out by e, back to Z2 at
+// that height, or first out to X50 when the hump (radius 20) reaches that height.
+//  23 (X46): the whole contour lies below (its end touches 23): X46 to Z-38; out X47; back Z2.
+//  21 (X42): s5 at t = 7/9, z = −36.2222; up s5 to 23 at Z-38 (X46); out X47; back.
+//  19 (X38): s2 z = −19, s3 t = 1/6 z = −20.8333, s5 t = 5/9 z = −34.4444: X38 Z-19, over the
+//      hump X40 Z-20, X38 Z-20.8333, X38 Z-34.4444, up to 21 at Z-36.2222 (X42), out X43, back
+//      at 21.5 (hump 20 below it).
+//  17 (X34): z −17, s3 t = 0.5 z = −22.5, s5 t = 1/3 z = −32.6667; up to 19 at Z-34.4444 (X38);
+//      out X39 (19.5): the hump (20) stands higher: out to X50, then Z2.
+//  15 (X30): z −15, s3 t = 5/6 z = −24.1667, s5 t = 1/9 z = −30.8889; up to 17 at Z-32.6667
+//      (X34); out X35 (17.5 < 20): out to X50, then Z2.
+//  13 (X26): only s1/s2 lie deeper (the pocket floor is 14): X26 Z-13, up s2 to 15 at Z-15
+//      (X30), out X31, back (15.5 above everything passed).
+//  11 (X22): X22 Z-11, up to 13 at Z-13 (X26), out X27, back.
+// Then the semi-finishing pass along the contour (the profile itself, U0 W0) and rapid to A.
+TEST_CASE("G71 type II roughs a pocket level by level, following the profile (cycles.md §2)") {
+    const std::vector<Step> want = {
+        rapid(46, 2), feed(46, -38), feed(47, -38), rapid(47, 2),                                        // 23
+        rapid(42, 2), feed(42, -36.2222), feed(46, -38), feed(47, -38), rapid(47, 2),                    // 21
+        rapid(38, 2), feed(38, -19), feed(40, -20), feed(38, -20.8333), feed(38, -34.4444),              // 19
+        feed(42, -36.2222), feed(43, -36.2222), rapid(43, 2),                                            //
+        rapid(34, 2), feed(34, -17), feed(40, -20), feed(34, -22.5), feed(34, -32.6667),                 // 17
+        feed(38, -34.4444), feed(39, -34.4444), rapid(50, -34.4444), rapid(50, 2),                       //
+        rapid(30, 2), feed(30, -15), feed(40, -20), feed(30, -24.1667), feed(30, -30.8889),              // 15
+        feed(34, -32.6667), feed(35, -32.6667), rapid(50, -32.6667), rapid(50, 2),                       //
+        rapid(26, 2), feed(26, -13), feed(30, -15), feed(31, -15), rapid(31, 2),                         // 13
+        rapid(22, 2), feed(22, -11), feed(26, -13), feed(27, -13), rapid(27, 2),                         // 11
+        rapid(20, 2), feed(20, -10), feed(40, -20), feed(28, -25), feed(28, -30), feed(46, -38),         // semi-finish
+        rapid(50, 2)};
+    for (const System& s : kSystems) {
+        INFO(s.dialect);
+        const std::string text = fmt::format(
+            "O1\nG0 X50. Z2.\n{0} U2. R0.5\n{0} P10 Q50 U0 W0 F0.2\nN10 G0 X20. W0\nN20 G1 Z-10.\n"
+            "N30 X40. Z-20.\nN40 X28. Z-25.\nN45 Z-30.\nN50 X46. Z-38.\nM30\n",
+            s.turning);
+        const Run r = run_bare(text, s.dialect);
+        require_clean(r);
+        check_path(r, 4, want);
+    }
+}
+
+// G72 type II (§3: "as G71 with X and Z exchanged"; a first block naming both axes): the same
+// walk with levels in Z. A = X60 Z2, W2 R0.5, no allowance; profile N10 G0 X60 Z-4 (A′ on the
+// radius (30, −4)), G1 X40 (radius 20), X30 Z-1 (radius 15, a rise toward A: the hump),
+// X20 Z-3 (radius 10, the pocket), X10 Z0 (radius 5). On the radius the contour is
+// (30, −4) → (20, −4) → (15, −1) → (10, −3) → (5, 0): Z reverses (the pocket), the pass axis X
+// (30 20 15 10 5) is monotonic as type II asks. Levels Z 2 − 2k deeper than −4: 0, −2.
+//  Z0: the contour end (5, 0) touches it; the rest lies deeper: the pass X60 → X10 at Z0, out
+//      by e in Z (Z0.5), back to X60 (0.5 is above everything passed).
+//  Z−2: pieces: (30,−4)→(20,−4) deeper; (20,−4)→(15,−1) crosses −2 at t = 2/3: X radius
+//      20 − 5·2/3 = 16.6667 (X33.3333); above −2 up to the hump (15, −1) and down to
+//      (10,−3) crossing −2 at t = 1/2: radius 12.5 (X25); deeper to (10, −3) and up (10,−3)→(5,0)
+//      crossing −2 at t = 1/3: radius 8.3333 (X16.6667). Walk: X33.3333 Z-2, over the hump
+//      X30 Z-1, X25 Z-2, X16.6667 Z-2; up to the previous level Z0 at (5, 0) = X10 Z0; out by e
+//      in Z to Z0.5; back to X60 (the hump Z-1 is below 0.5).
+// Then the semi-finishing pass: in at Z-4 from X60 (rapid: N10 is G0), the contour, back to A.
+TEST_CASE("G72 type II walks the levels in Z over a pocket (cycles.md §2, §3)") {
+    const Run r = run_bare("O1\nG0 X60. Z2.\nG72 W2. R0.5\nG72 P10 Q50 U0 W0 F0.2\nN10 G0 X60. Z-4.\n"
+                           "N20 G1 X40.\nN30 X30. Z-1.\nN40 X20. Z-3.\nN50 X10. Z0\nM30\n",
+                           "fanuc-lathe-a");
+    require_clean(r);
+    check_path(r, 4,
+               {rapid(60, 0), feed(10, 0), feed(10, 0.5), rapid(60, 0.5),                                     // Z0
+                rapid(60, -2), feed(33.3333, -2), feed(30, -1), feed(25, -2), feed(16.6667, -2),            // Z-2
+                feed(10, 0), feed(10, 0.5), rapid(60, 0.5),                                                  //
+                rapid(60, -4), feed(40, -4), feed(30, -1), feed(20, -3), feed(10, 0), rapid(60, 2)});
+}
+
+// Type II keeps the pass axis monotonic (cycles.md §2 "[FANUC] Z must be monotonic"): a profile
+// that turns back in Z is alarm 064.
+TEST_CASE("G71 type II profile reversing in Z: alarm 064") {
+    require_alarm(run_bare("O1\nG0 X50. Z1.\nG71 U1. R1.\nG71 P10 Q30 F0.2\nN10 G0 X30. W0\nN20 G1 X40. Z-5.\n"
+                           "N30 X45. Z-2.\nM30\n",
+                           "fanuc-lathe-a"),
+                  64);
+}
+
 TEST_CASE("G71–G73 profile errors are alarms with the FANUC numbers") {
     SECTION("N Q not in the program: alarm 060") {
         require_alarm(run_bare("O1\nG0 X50. Z1.\nG71 U1. R1.\nG71 P10 Q99 F0.2\nN10 G0 X40.\nM30\n", "fanuc-lathe-a"), 60);
