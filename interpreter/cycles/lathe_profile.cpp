@@ -176,18 +176,24 @@ bool level_two(Context& ctx, const Profile& profile, const TypeTwo& t, const Rou
     }
     const Contour rest(pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1, pieces.end());
     const auto top = first_crossing(rest, t.level, previous);
-    for (const Seg& s : top ? until(rest, *top) : rest)
+    // Where the tool stands, kept here: ctx.position() is the programmed point while G41/G42 is
+    // on (O0016 programs G42 before G71, and roughing ignores it, cycles.md §2).
+    Pt p = make(t.level, level, get(pieces[last].b, t.pass));
+    for (const Seg& s : top ? until(rest, *top) : rest) {
         if (!follow(ctx, profile, s)) return false;
-    Pt p = to_pt(ctx.position(), dia);
+        p = s.b;
+    }
     const double out = get(p, t.level) + t.s * r.retract;
     const Pt relief = make(t.level, out, get(p, t.pass));
     if (!(ctx.settings().relief == Relief::rapid ? ctx.rapid(at(relief)) : ctx.feed(at(relief)))) return false;
     // The way back at the relief height crosses the contour already passed when a hump reaches it.
-    Contour passed(pieces.begin(), pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1);
-    if (t.s * (extreme(passed, t.level, t.s) - out) > -kEps && !ctx.rapid(at(make(t.level, get(t.a, t.level), get(p, t.pass)))))
-        return false;
-    p = to_pt(ctx.position(), dia);
-    return ctx.rapid(at(make(t.level, get(p, t.level), get(t.a, t.pass))));
+    const Contour passed(pieces.begin(), pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    double back = out;
+    if (t.s * (extreme(passed, t.level, t.s) - out) > -kEps) {
+        back = get(t.a, t.level);
+        if (!ctx.rapid(at(make(t.level, back, get(p, t.pass))))) return false;
+    }
+    return ctx.rapid(at(make(t.level, back, get(t.a, t.pass))));
 }
 
 bool rough_levels_two(Context& ctx, const Profile& profile, const Rough& r, const Contour& allowance_contour, Pt a, Pt a_allow) {
