@@ -54,6 +54,7 @@ struct Event {
     double length_mm = 0;                // path length of the move
     double time_s = 0;                   // estimated time of this event
     double feed = 0;                     // motion: programmed feed (mm/min or mm/rev, see feed_per_rev)
+    double lead_end = 0;                 // thread: the lead at the end (G34 variable lead; = feed otherwise)
     bool feed_per_rev = false;
     double spindle_rpm = 0;              // the rpm the time uses (G96: at the end point)
     bool spindle_running = true;         // feed moves: false when the spindle is stopped (M05); spindle: M03/M04 vs M05

@@ -212,6 +212,7 @@ private:
     bool soft_limits_on_ = true;     // G22 / G23
     double feed_ = 0;
     double thread_lead_ = 0;         // lead of the thread being cut (F or E)
+    double thread_lead_change_ = 0;  // G34 K: lead change per revolution (0 for G32)
     double spindle_rpm_ = 0;         // programmed S under G97
     double css_ = 0;                 // G96 S, m/min
     double max_rpm_ = 0;             // G50/G92 S clamp
@@ -248,6 +249,7 @@ private:
     void apply_data_input(const ast::BlockView& view, const BlockWords& words);
     void apply_rotation(const ast::BlockView& view, const BlockWords& words, bool cw);
     bool apply_motion(const ast::BlockView& view, const BlockWords& words);
+    void thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
     static bool is_cycle_function(std::string_view function);
     void classify_codes();
     bool is_cycle(const dialects::CodeInfo& code) const;

@@ -176,6 +176,7 @@ public:
     }
     bool thread(const Position& to, double lead) override {
         ex_.thread_lead_ = lead;
+        ex_.thread_lead_change_ = 0;   // cycle threads have a constant lead (a G34 before does not carry over)
         return move(EventKind::thread, to);
     }
     bool feed_at(const Position& to, double mm_per_min) override {

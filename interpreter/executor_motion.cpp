@@ -117,10 +117,16 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
         const motion::Line line{geometric_mm(e.start, setup_.diameter_x, unit_scale()),
                                 geometric_mm(e.end, setup_.diameter_x, unit_scale())};
         if (feed_mm > 0) seconds = arc ? motion::css_feed_time(*arc, css_, feed_mm, clamp) : motion::css_feed_time(line, css_, feed_mm, clamp);
+    } else if (e.kind == EventKind::thread && thread_lead_change_ != 0) {
+        // G34: revolutions from the integral of the lead (motion/time.hpp variable_lead).
+        const auto v = motion::variable_lead(timed_length_mm, feed_mm, thread_lead_change_ * unit_scale());
+        if (v && e.spindle_rpm > 0) seconds = v->revolutions / e.spindle_rpm * 60.0;
+        if (v) e.lead_end = v->lead_end / unit_scale();
     } else {
         const double mm_per_min = per_rev ? motion::feed_per_minute(feed_mm, e.spindle_rpm) : feed_mm;
         seconds = mm_per_min > 0 ? timed_length_mm / mm_per_min * 60.0 : 0;
     }
+    if (e.kind == EventKind::thread && thread_lead_change_ == 0) e.lead_end = e.feed;
     seconds *= slowdown_time_factor_;   // [seed 004 G28 ramp] 1 except for a ramp piece
     if (seconds > 0 && std::isfinite(seconds) && accel_mm_s2 > 0) {
         // Exact-stop trapezoid at the move's mean speed (motion/time.hpp).
@@ -170,6 +176,27 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
     emit(std::move(e));
 }
 
+// G32/G33 and G34 (cycles.md §9). The lead is F, or E where the block has one (seed 003 "E = lead
+// in mm", ADV400 "pitch E"); G34 adds K, the lead change per revolution ([FANUC]), and a lead
+// that would reach zero before the end is [FANUC] alarm 313 (lead level error).
+void Executor::thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
+    const Frame& f = *frame_;
+    const auto* e = words.get('E');
+    thread_lead_ = e ? axis_value(*e, 'E') : feed_;
+    const auto* k = words.get('K');
+    thread_lead_change_ = flags_.motion == fn::variable_lead_thread_cutting && k ? axis_value(*k, 'K') : 0;
+    if (thread_lead_change_ != 0) {
+        const double length = travel_of(position_, to, setup_).linear;   // program units, like the lead
+        if (!motion::variable_lead(length, thread_lead_, thread_lead_change_)) {
+            alarm(f, view, 313,
+                  fmt::format("G34 lead F{:g} K{:g} over {:g}: the lead reaches zero before the end (FANUC alarm 313, "
+                              "lead level error)", thread_lead_, thread_lead_change_, length));
+            return;
+        }
+    }
+    move(EventKind::thread, to, f, view);
+}
+
 bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
     // [polar] G112/G107 modes: the block's path is in the Cartesian plane (polar.cpp).
     if (transform_ || (scan_.classes & kTransformCode)) {
@@ -216,13 +243,7 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     if (motion == fn::rapid) move(EventKind::rapid, to, f, view);
     else if (motion == fn::linear) move(EventKind::linear, to, f, view);
     else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, words, view);
-    else if (motion == fn::thread_cutting) {
-        // The lead is F, or E where the block has one (cycles.md §9: seed 003 "E = lead in mm",
-        // ADV400 "pitch E").
-        const auto* e = words.get('E');
-        thread_lead_ = e ? axis_value(*e, 'E') : feed_;
-        move(EventKind::thread, to, f, view);
-    }
+    else if (motion == fn::thread_cutting || motion == fn::variable_lead_thread_cutting) thread_move(view, words, to);
     else {
         Event e = event_at(EventKind::message, f, view);
         e.text = motion.empty() ? std::string("axis words without a motion code (no G00/G01/G02/G03 active): no motion")

@@ -134,6 +134,7 @@ void TraceWriter::append(fmt::memory_buffer& out, const Event& e) {
         write_field(out, "time_s", e.time_s);
         if (e.kind != EventKind::rapid) {
             write_field(out, "feed", e.feed);
+            if (e.kind == EventKind::thread && e.lead_end != e.feed) write_field(out, "lead_end", e.lead_end);
             put(out, e.feed_per_rev ? ",\"feed_per_rev\":true" : ",\"feed_per_rev\":false");
             write_field(out, "spindle_rpm", e.spindle_rpm);
             put(out, e.spindle_running ? ",\"spindle_running\":true" : ",\"spindle_running\":false");

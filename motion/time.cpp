@@ -249,4 +249,14 @@ double dwell_time(double value, DwellUnit unit, double rpm) {
     return value;
 }
 
+std::optional<VariableLead> variable_lead(double length, double lead_start, double lead_change) {
+    if (lead_start <= 0) return std::nullopt;
+    if (std::fabs(lead_change) < 1e-12) return VariableLead{length / lead_start, lead_start};
+    const double square = lead_start * lead_start + 2 * lead_change * length;
+    if (square <= 0) return std::nullopt;
+    const double end = std::sqrt(square);
+    // (end − L0) / K loses digits when K·length is tiny beside L0²: 2·length / (L0 + end) is the same.
+    return VariableLead{2 * length / (lead_start + end), end};
+}
+
 }  // namespace kerf::motion

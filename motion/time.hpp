@@ -21,6 +21,8 @@
 // interpreter reports it; the kernel only keeps the arithmetic total).
 #pragma once
 
+#include <optional>
+
 #include <limits>
 #include <span>
 #include <vector>
@@ -76,6 +78,18 @@ double path_accel(Vec3 delta, const AxisLimits3& limits);
 
 // semantics.md §4 [seed 003]: feed per minute = feed per revolution × rpm.
 constexpr double feed_per_minute(double feed_mm_rev, double rpm) { return feed_mm_rev * rpm; }
+
+// G34 variable-lead threading (cycles.md §9, [FANUC] `G34 X Z F(L0) K(ΔL per revolution)`): the
+// lead after n revolutions is L0 + K·n, so the distance after n revolutions is the integral
+// ∫0^n (L0 + K·m) dm = L0·n + K·n²/2. A thread of `length` takes the n that solves
+// K/2·n² + L0·n − length = 0: n = (√(L0² + 2·K·length) − L0) / K (n = length / L0 for K = 0), and
+// ends with the lead L0 + K·n = √(L0² + 2·K·length). nullopt when the lead reaches zero first
+// (L0² + 2·K·length ≤ 0 or L0 ≤ 0: [FANUC] alarm 313, lead level error).
+struct VariableLead {
+    double revolutions;
+    double lead_end;
+};
+std::optional<VariableLead> variable_lead(double length, double lead_start, double lead_change);
 
 // Time (s) of a cutting move of `length` (mm; line or arc length, tangential feed §3) at
 // feed_mm_min; with accel_mm_s2 > 0 the exact-stop trapezoid is added.
