@@ -88,6 +88,7 @@ Setup make_setup(const machine::Machine& m) {
     for (std::size_t i = 0; i < 4; ++i) s.reference_points[i] = position_of(m.reference_points[i]);
     set_axes(s, m);
     s.max_rpm = m.max_spindle_rpm;
+    s.max_cutting_feed = m.max_cutting_feed.value_or(0.0);
     const machine::Switches& sw = m.switches;
     s.rapid_dogleg = sw.rapid == machine::RapidMode::dog_leg;
     s.dwell_p_in_seconds = sw.dwell_p_unit == machine::DwellUnit::s;

@@ -43,6 +43,13 @@ inline constexpr int syntax_error = 90002;   // a block with syntax errors in a 
 inline constexpr int internal = 90003;       // a tree the evaluator does not know (macro M0901)
 }  // namespace kerf_alarm
 
+// Codes of kerf's warning messages (`message` events that do not stop the run; docs/trace.md).
+namespace kerf_warning {
+// A thread's axis speed, lead × rpm (the larger lead of a G34), is over the machine's maximum
+// cutting feed (cycles.md §9): the control cannot keep the lead at that speed.
+inline constexpr int thread_speed_over_limit = 90101;
+}  // namespace kerf_warning
+
 struct Event {
     EventKind kind = EventKind::rapid;
     SourceRef source;

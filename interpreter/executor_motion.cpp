@@ -173,7 +173,17 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
         result_.feed_distance_mm += e.length_mm;
     }
     position_ = to;
+    const bool thread = kind == EventKind::thread;
+    const double thread_speed = thread ? std::max(e.feed, e.lead_end) * unit_scale() * e.spindle_rpm : 0.0;
     emit(std::move(e));
+    if (thread && setup_.max_cutting_feed > 0 && thread_speed > setup_.max_cutting_feed) {
+        // cycles.md §9: lead × rpm is the axis speed of a thread; the analyzer reads this event.
+        Event w = event_at(EventKind::message, f, view);
+        w.code = kerf_warning::thread_speed_over_limit;
+        w.text = fmt::format("thread at {:g} mm/min (lead × rpm) is over the machine's maximum cutting feed {:g} mm/min",
+                             thread_speed, setup_.max_cutting_feed);
+        emit(std::move(w));
+    }
 }
 
 // G32/G33 and G34 (cycles.md §9). The lead is F, or E where the block has one (seed 003 "E = lead

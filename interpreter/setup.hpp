@@ -47,6 +47,7 @@ struct Setup {
     std::array<bool, kAxisCount> carries_tool{true, true, true, true, true, true};   // machine/SCHEMA.md axes carries_tool
     std::array<SoftLimit, kAxisCount> soft_limits{};   // stored stroke check 1 (alarm 500/501)
     double max_rpm = 0;                // 0 = no limit
+    double max_cutting_feed = 0;       // mm/min, 0 = no limit (machine max_cutting_feed): threads are checked against it
     bool rapid_dogleg = true;          // G00 axes move independently (gcode-tables.md §5)
     bool dwell_p_in_seconds = false;   // ADV400: G04 P in seconds (semantics.md §8.2)
     bool g52_current_point = false;    // pcnc/ADV400: G52 makes the current point take the values
