@@ -48,6 +48,27 @@ inline Rule alarm_rule(std::string id, std::string name, Category category, Seve
     return r;
 }
 
+// Modifiers of a rule as it is registered: `r.add(fixable(opt_in(static_rule<C>(...))))`.
+inline Rule fixable(Rule r) {   // its static check attaches text edits (docs: "fix")
+    r.has_fix = true;
+    return r;
+}
+inline Rule opt_in(Rule r) {   // off unless .kerf.toml turns it on
+    r.enabled = false;
+    return r;
+}
+// A diagnostic rule whose findings carry the fix `fix` makes from the diagnostic.
+inline Rule with_diagnostic_fix(Rule r, decltype(Rule::diagnostic_fix) fix) {
+    r.diagnostic_fix = std::move(fix);
+    r.has_fix = true;
+    return r;
+}
+// Also the findings of the dry run's alarms in these ranges (a static rule that the run confirms).
+inline Rule with_alarms(Rule r, std::vector<std::pair<int, int>> alarms) {
+    r.alarms = std::move(alarms);
+    return r;
+}
+
 // A static rule whose check is the class C (default-constructed per file).
 template <class C>
 Rule static_rule(Rule r) {

@@ -189,12 +189,10 @@ void add_dialect(Registry& r) {
     r.add(static_rule<UnknownCode>(rule("K2001", "unknown-code", S::error,
         {"A G or M code the dialect does not have.", "The control stops with alarm 010 (improper G code).",
          "G384 X10.", "G84 X10.", "gcode-tables.md; mcodes.md; dialects.md §1"})));
-    Rule fitted = static_rule<NotFitted>(rule("K2002", "code-not-fitted", S::warning,
+    r.add(opt_in(static_rule<NotFitted>(rule("K2002", "code-not-fitted", S::warning,
         {"A code the dialect table marks as an option or as not fitted (opt-in: for machines without options).",
          "A machine without the option raises alarm 010 on the code.",
-         "G12.1", "(use the machine that has polar interpolation)", "gcode-tables.md availability column"}));
-    fitted.enabled = false;
-    r.add(std::move(fitted));
+         "G12.1", "(use the machine that has polar interpolation)", "gcode-tables.md availability column"}))));
     r.add(static_rule<WordNotAllowed>(rule("K2003", "word-not-allowed", S::warning,
         {"A data word that the block's one-shot code does not take (G04 Q5).",
          "The control raises an alarm or ignores the word: the value you wrote has no effect.",
@@ -214,12 +212,10 @@ void add_dialect(Registry& r) {
         {"G96 and the G50 S spindle clamp in the same block.",
          "The clamp must be set before CSS starts; in one block the spindle may run away to the machine limit.",
          "G50 G96 S200", "G50 S2000\nG96 S200", "semantics.md §4.1"})));
-    Rule other = static_rule<DiffersInOtherSystems>(rule("K2008", "meaning-differs-between-dialects", S::info,
+    r.add(opt_in(static_rule<DiffersInOtherSystems>(rule("K2008", "meaning-differs-between-dialects", S::info,
         {"A G code that means something else in another dialect of the same machine kind (G90 in lathe A vs B).",
          "A program moved to the other control without conversion does something else (opt-in, for conversions).",
-         "G90 X20. Z-10. F0.2", "(kerf convert --from fanuc-lathe-a --to fanuc-lathe-b)", "dialects.md §4"}));
-    other.enabled = false;
-    r.add(std::move(other));
+         "G90 X20. Z-10. F0.2", "(kerf convert --from fanuc-lathe-a --to fanuc-lathe-b)", "dialects.md §4"}))));
 }
 
 }  // namespace kerf::analyzer::rules

@@ -128,16 +128,12 @@ void add_macro(Registry& r) {
         {"A local variable #1–#33 read in arithmetic in a main program before anything assigned it.",
          "A vacant variable counts as 0 in arithmetic: the move or the count is silently wrong.",
          "#2=#1+10.\nG01 X#2", "#1=5.\n#2=#1+10.\nG01 X#2", "dialects.md §3.7; [FANUC] vacant variables"})));
-    Rule div = static_rule<DivisionByZero>(rule("K4002", "division-by-zero", S::error,
+    r.add(with_alarms(static_rule<DivisionByZero>(rule("K4002", "division-by-zero", S::error,
         {"A division (or MOD) by zero, written or found when the program runs.", "The control stops with alarm 112.",
-         "#1=10/0", "#1=10/2", "interpreter/macro/evaluate.hpp M0112"}));
-    div.alarms = {{112, 112}};
-    r.add(std::move(div));
-    Rule ro = static_rule<WriteReadOnly>(rule("K4003", "write-read-only-variable", S::error,
+         "#1=10/0", "#1=10/2", "interpreter/macro/evaluate.hpp M0112"})), {{112, 112}}));
+    r.add(with_alarms(static_rule<WriteReadOnly>(rule("K4003", "write-read-only-variable", S::error,
         {"An assignment to #0 or, found by the dry run, to a read-only system variable.",
-         "The control stops with alarm 116.", "#0=1", "#100=1", "interpreter/macro/evaluate.hpp M0116"}));
-    ro.alarms = {{116, 116}};
-    r.add(std::move(ro));
+         "The control stops with alarm 116.", "#0=1", "#100=1", "interpreter/macro/evaluate.hpp M0116"})), {{116, 116}}));
 }
 
 }  // namespace kerf::analyzer::rules

@@ -201,11 +201,9 @@ void add_motion(Registry& r) {
     r.add(dynamic_rule<FirstOnly<NoTool, NoToolSay>>(rule("K5008", "cut-without-tool", S::warning,
         {"A feed move before any tool is selected.", "The control cuts with whatever tool is in the spindle or turret.",
          "G01 X10. F0.2", "T0101\nG01 X10. F0.2", "dialects.md §3.5"})));
-    Rule nx = dynamic_rule<NotExpanded>(rule("K5009", "not-checked-by-dry-run", S::info,
+    r.add(opt_in(dynamic_rule<NotExpanded>(rule("K5009", "not-checked-by-dry-run", S::info,
         {"A cycle or compensation the dry run does not expand yet, so its motion is not checked.",
-         "Nothing on the machine: a note about kerf's coverage (opt-in).", "G112\nG01 X10. C5. F0.2", "", "docs/trace.md"}));
-    nx.enabled = false;
-    r.add(std::move(nx));
+         "Nothing on the machine: a note about kerf's coverage (opt-in).", "G112\nG01 X10. C5. F0.2", "", "docs/trace.md"}))));
     r.add(dynamic_rule<FirstOnly<NoSpeed, NoSpeedSay>>(rule("K5010", "spindle-without-speed", S::warning,
         {"M03/M04 with no spindle speed programmed.", "The spindle does not turn (S0) and the first cut breaks the tool.",
          "M03\nG01 X10. F0.2", "S800 M03\nG01 X10. F0.2", "semantics.md §4.1"})));

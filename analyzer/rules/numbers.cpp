@@ -167,45 +167,33 @@ public:
 }  // namespace
 
 void add_numbers(Registry& r) {
-    r.add(static_rule<MissingDecimalPoint>(make_rule("K1020", "missing-decimal-point", Category::syntax, S::warning,
+    const auto rule = rule_maker(Category::syntax);
+    r.add(static_rule<MissingDecimalPoint>(rule("K1020", "missing-decimal-point", S::warning,
         {"An axis or arc value without decimal point on a machine that reads integers as least increments.",
          "X10 moves to 0.010 mm, not 10 mm: the tool goes somewhere else than the drawing says.",
          "G01 X10 Y10 F100.", "G01 X10. Y10. F100.", "dialects.md §2 Numbers; cycles.md §0"})));
-    Rule dup = static_rule<DuplicateAddress>(make_rule("K1021", "duplicate-address", Category::syntax, S::warning,
+    r.add(fixable(static_rule<DuplicateAddress>(rule("K1021", "duplicate-address", S::warning,
         {"The same address twice in one block (two F words).",
          "The control takes one of them or raises alarm 'address duplicated'; the other value is lost.",
-         "G01 X10. F0.010 F.010", "G01 X10. F0.010", "corpus Steady_rest_maker.nc; [FANUC]"}));
-    dup.has_fix = true;
-    r.add(std::move(dup));
-    Rule point = static_rule<PointOnInteger>(make_rule("K1022", "point-on-integer-address", Category::syntax, S::warning,
+         "G01 X10. F0.010 F.010", "G01 X10. F0.010", "corpus Steady_rest_maker.nc; [FANUC]"}))));
+    r.add(fixable(static_rule<PointOnInteger>(rule("K1022", "point-on-integer-address", S::warning,
         {"A decimal point on an address that takes whole numbers (M08., T0101., N10.).",
          "Many controls raise a format alarm for a point on M, T, N or O.",
-         "M08.", "M08", "dialects.md §2 Numbers; corpus 1003.NC"}));
-    point.has_fix = true;
-    r.add(std::move(point));
-    Rule bom = static_rule<ByteOrderMark>(make_rule("K1023", "byte-order-mark", Category::syntax, S::info,
+         "M08.", "M08", "dialects.md §2 Numbers; corpus 1003.NC"}))));
+    r.add(fixable(static_rule<ByteOrderMark>(rule("K1023", "byte-order-mark", S::info,
         {"The file starts with a UTF-8 byte order mark.",
          "A control reading the file over RS-232 or from a card sees three unknown bytes before '%' or 'O'.",
-         "<BOM>O0001", "O0001", "corpus O0001.txt, O0005.nc"}));
-    bom.has_fix = true;
-    r.add(std::move(bom));
-    Rule empty = static_rule<EmptyComment>(make_rule("K1024", "empty-comment", Category::syntax, S::hint,
+         "<BOM>O0001", "O0001", "corpus O0001.txt, O0005.nc"}))));
+    r.add(fixable(opt_in(static_rule<EmptyComment>(rule("K1024", "empty-comment", S::hint,
         {"An empty comment '()'.", "Harmless on the control; noise for the reader (style, off by default).",
-         "N01 G00 X0. ()", "N01 G00 X0.", "corpus O3380"}));
-    empty.enabled = false;
-    empty.has_fix = true;
-    r.add(std::move(empty));
-    Rule ascii = static_rule<NonAsciiComment>(make_rule("K1025", "non-ascii-comment", Category::syntax, S::info,
+         "N01 G00 X0. ()", "N01 G00 X0.", "corpus O3380"})))));
+    r.add(opt_in(static_rule<NonAsciiComment>(rule("K1025", "non-ascii-comment", S::info,
         {"A comment with bytes outside ASCII (Cyrillic, a Latin-1 degree sign).",
          "ISO/EIA tape code has no such characters: some controls reject the block or show garbage (opt-in).",
-         "(ТОКАРНЫЙ 90°)", "(TOKARNYJ 90 DEG)", "dialects.md §2 Characters"}));
-    ascii.enabled = false;
-    r.add(std::move(ascii));
-    Rule lower = static_rule<LowerCase>(make_rule("K1026", "lower-case-address", Category::syntax, S::info,
+         "(ТОКАРНЫЙ 90°)", "(TOKARNYJ 90 DEG)", "dialects.md §2 Characters"}))));
+    r.add(fixable(static_rule<LowerCase>(rule("K1026", "lower-case-address", S::info,
         {"An address letter in lower case.", "FANUC ISO code has upper-case addresses; some controls reject lower case.",
-         "g01 z-18.5", "G01 Z-18.5", "dialects.md §2; corpus p2g"}));
-    lower.has_fix = true;
-    r.add(std::move(lower));
+         "g01 z-18.5", "G01 Z-18.5", "dialects.md §2; corpus p2g"}))));
 }
 
 }  // namespace kerf::analyzer::rules

@@ -293,13 +293,11 @@ public:
 
 void add_references(Registry& r) {
     const auto rule = rule_maker(Category::references);
-    Rule missing = static_rule<LabelNotFound>(rule("K3001", "label-not-found", S::error,
+    r.add(with_alarms(static_rule<LabelNotFound>(rule("K3001", "label-not-found", S::error,
         {"G70–G73 P/Q, GOTO n or M98 Q n to a sequence number the program does not have.",
          "The control stops with alarm 060 (cycles), 128 (GOTO) or 078 (M98 Q) in the middle of the job.",
          "G71 P100 Q200 U0.5 W0.1 F0.3\nN100 G00 X20.\nN210 G01 Z-10.", "G71 P100 Q200 U0.5 W0.1 F0.3\nN100 G00 X20.\nN200 G01 Z-10.",
-         "cycles.md §5; dialects.md §3.6, §3.7"}));
-    missing.alarms = {{60, 60}, {128, 128}};
-    r.add(std::move(missing));
+         "cycles.md §5; dialects.md §3.6, §3.7"})), {{60, 60}, {128, 128}}));
     r.add(static_rule<AmbiguousLabel>(rule("K3002", "ambiguous-label", S::warning,
         {"A jump (P/Q, GOTO, M98 Q) to a sequence number that several blocks carry.",
          "The control searches from the top and takes the first block: maybe not the one you meant.",
@@ -308,12 +306,10 @@ void add_references(Registry& r) {
         {"M98 P, G65 P or G66 P to a program that is neither in the file nor in its folder.",
          "The control stops with alarm 078 when the call is reached.", "M98 P1234", "M98 P1000 (O1000 in the folder)",
          "dialects.md §3.6"})));
-    Rule loops = static_rule<LoopsPairs>(rule("K3004", "loop-mismatch", S::error,
+    r.add(with_alarms(static_rule<LoopsPairs>(rule("K3004", "loop-mismatch", S::error,
         {"DO m without END m, END m without DO m, loops crossing, or a loop number other than 1–3.",
          "The control stops with alarm 124 or 126.", "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 2",
-         "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "dialects.md §3.7"}));
-    loops.alarms = {{124, 124}, {126, 126}};
-    r.add(std::move(loops));
+         "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "dialects.md §3.7"})), {{124, 124}, {126, 126}}));
     r.add(static_rule<LoopsDepth>(rule("K3005", "loop-nesting-too-deep", S::error,
         {"WHILE/DO loops nested more than 3 deep.", "The control stops with alarm 124.",
          "DO1 DO2 DO3 DO1 (four levels)", "three levels, the fourth in a G65 macro", "dialects.md §3.7"})));

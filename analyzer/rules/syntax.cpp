@@ -42,24 +42,18 @@ void add_syntax(Registry& r) {
         {"A number with more than one decimal point.",
          "The control raises a format alarm; which digits were meant is a guess, so there is no automatic fix.",
          "G01 X-12.8. Z-3.", "G01 X-12.8 Z-3.", "docs/diagnostics.md S0102; seed 001"}));
-    Rule o = diagnostic_rule("K1003", "letter-o-for-zero", S::error, {"S0103"},
+    r.add(with_diagnostic_fix(diagnostic_rule("K1003", "letter-o-for-zero", S::error, {"S0103"},
         {"The letter O typed where the digit zero is meant (MO6, HO1, GO).",
          "O starts a program number: the block is read as a new program or raises an alarm.",
-         "MO6 T2", "M06 T2", "dialects.md §11.10; seed 004"});
-    o.diagnostic_fix = letter_o_fix;
-    o.has_fix = true;
-    r.add(std::move(o));
+         "MO6 T2", "M06 T2", "dialects.md §11.10; seed 004"}), letter_o_fix));
     r.add(diagnostic_rule("K1004", "placeholder-value", S::error, {"S0104"},
         {"A placeholder (? or _) left where a value belongs.",
          "A template was run without filling in its values; the control rejects the block.",
          "M165 P9810 X? Y? F50.", "M165 P9810 X10. Y20. F50.", "docs/diagnostics.md S0104; corpus O1000"}));
-    Rule comma = diagnostic_rule("K1005", "decimal-comma", S::warning, {"S0105"},
+    r.add(with_diagnostic_fix(diagnostic_rule("K1005", "decimal-comma", S::warning, {"S0105"},
         {"A decimal comma (F0,25) instead of a decimal point.",
          "FANUC controls read only '.'; a comma is a format alarm or splits the number.",
-         "G01 Z-1,3 F0,25", "G01 Z-1.3 F0.25", "dialects.md §2 Decimal comma"});
-    comma.diagnostic_fix = decimal_comma_fix;
-    comma.has_fix = true;
-    r.add(std::move(comma));
+         "G01 Z-1,3 F0,25", "G01 Z-1.3 F0.25", "dialects.md §2 Decimal comma"}), decimal_comma_fix));
     r.add(diagnostic_rule("K1006", "unknown-word", S::error, {"S0106"},
         {"Letters that are neither an address word nor a macro keyword.",
          "The control raises a format alarm: prose must be inside a comment.",
@@ -90,13 +84,10 @@ void add_syntax(Registry& r) {
         {"An ellipsis (...) of a printed listing: blocks are missing.",
          "The program is incomplete; the control rejects the dots.",
          "N10 G00 X0.\n...\nM30", "N10 G00 X0.\nN20 G01 Z-1. F0.1\nM30", "docs/diagnostics.md S0113; seed 001"}));
-    Rule unclosed = diagnostic_rule("K1014", "unclosed-comment", S::error, {"S0201"},
+    r.add(with_diagnostic_fix(diagnostic_rule("K1014", "unclosed-comment", S::error, {"S0201"},
         {"A comment not closed before the end of the line.",
          "The control reads to the next ')' or stops: the words of the next lines may be swallowed.",
-         "G0 G28 B0 M37 (SYNC", "G0 G28 B0 M37 (SYNC)", "dialects.md §2 Comments; seed 001 §9.2"});
-    unclosed.diagnostic_fix = close_comment_fix;
-    unclosed.has_fix = true;
-    r.add(std::move(unclosed));
+         "G0 G28 B0 M37 (SYNC", "G0 G28 B0 M37 (SYNC)", "dialects.md §2 Comments; seed 001 §9.2"}), close_comment_fix));
     r.add(diagnostic_rule("K1015", "nested-comment", S::warning, {"S0202"},
         {"A '(' inside a comment.", "FANUC does not nest comments: the first ')' ends it and the rest is read as words.",
          "(ROUGH (OD) PASS)", "(ROUGH - OD - PASS)", "dialects.md §2 Comments"}));
