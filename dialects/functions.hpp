@@ -112,4 +112,11 @@ inline constexpr std::string_view side_drilling_cycle = "side-drilling-cycle";
 inline constexpr std::string_view side_tapping_cycle = "side-tapping-cycle";
 inline constexpr std::string_view side_boring_cycle = "side-boring-cycle";
 
+// seed 004 (iso-legacy-mill) specials (semantics.md §9.4–§9.6).
+inline constexpr std::string_view corner_slowdown = "corner-slowdown";
+inline constexpr std::string_view corner_slowdown_cancel = "corner-slowdown-cancel";
+inline constexpr std::string_view axial_offset_plus = "axial-offset-direction-plus";
+inline constexpr std::string_view arc_approach = "arc-approach";
+inline constexpr std::string_view arc_exit = "arc-exit";
+
 }  // namespace kerf::dialects::functions

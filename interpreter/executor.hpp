@@ -254,14 +254,26 @@ private:
     void classify_codes();
     bool is_cycle(const dialects::CodeInfo& code) const;
     std::uint32_t code_class_of(const dialects::CodeInfo& code) const;
+    // What a code of the dialect is, as bits (classify_codes, once per run): a block ORs its codes'
+    // classes into scan_.classes and skips whole families of checks with one test.
     static constexpr std::uint32_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
                                   kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
                                   kPlaneYZCode = 192,   // the plane: two bits
-                                  kOneShotCode = 256,   // group 00 (G04, G10, G28, G53 ...)
-                                  kMotionCode = 512,    // group 01 (G00–G03, G32, modal cycles)
-                                  kPositionOffsetCode = 1024,   // G45–G48
-                                  kRadiusCompCode = 2048,   // G40/G41/G42 (executor_compensation.cpp)
-                                  kTransformCode = 4096;        // [polar] G112/G113, G107 (polar.cpp)
+                                  kOneShotCode = 1u << 8,         // group 00 (G04, G10, G28, G53 ...)
+                                  kMotionCode = 1u << 9,          // group 01 (G00–G03, G32, modal cycles)
+                                  kPositionOffsetCode = 1u << 10, // G45–G48
+                                  kRadiusCompCode = 1u << 11,     // G40/G41/G42 (executor_compensation.cpp)
+                                  kTransformCode = 1u << 12,      // G112/G113, G107 (polar.cpp)
+                                  kLengthCompCode = 1u << 13,     // G43/G44/G49 (executor_length.cpp)
+                                  kCornerSlowdownCode = 1u << 14, // seed 004 G28/G29 (executor_iso_specials.cpp)
+                                  kApproachOffsetCode = 1u << 15, // seed 004 G43 approach
+                                  kArcApproachCode = 1u << 16;    // seed 004 G12/G13
+    // Every class has a bit of its own (the plane: two bits for three values); a branch adding a
+    // class must not reuse one (two merges did).
+    static_assert(std::popcount(kCycleCode | kPathChangerCode | kIncrementalCode | kPerRevolutionCode | kCssCode |
+                                kInchCode | kPlaneYZCode | kOneShotCode | kMotionCode | kPositionOffsetCode |
+                                kRadiusCompCode | kTransformCode | kLengthCompCode | kCornerSlowdownCode |
+                                kApproachOffsetCode | kArcApproachCode) == 17);
     std::vector<std::uint32_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
     void note_path_changers(const ast::BlockView& view);
@@ -427,14 +439,11 @@ private:
     // --- G43/G44/G49 tool length offsets (executor_length.cpp, semantics.md §7, §2.7) ----------
     // The H register's length (geometry + wear) on Z, +G43 / −G44; machine_offset() adds it. The
     // work coordinates stay: the machine position shifts (like a lathe T word).
-    static constexpr std::uint32_t kLengthCompCode = 1u << 13;   // tool-length-comp-plus/minus/cancel
     int length_sign_ = 0;      // +1 G43, −1 G44, 0 G49 (power-on)
     int length_h_ = 0;         // the H number in force
     double length_mm_ = 0;     // the signed offset on Z, mm
     void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
-    static constexpr std::uint32_t kCornerSlowdownCode = 1u << 14;   // corner-slowdown, -cancel (seed 004 G28/G29)
-    static constexpr std::uint32_t kApproachOffsetCode = 1u << 15;  // axial-offset-direction-plus (seed 004 G43)
     struct Slowdown {
         double k_mm = 0;       // the distance before each G01 end point
         double fraction = 0;   // F percent / 100: the reduction
@@ -447,13 +456,6 @@ private:
     // the move is not slowed (move() then runs it whole).
     bool slowed_move(const Position& to, const Frame& f, const ast::BlockView& view);
     bool approach_offset_move(const ast::BlockView& view, const Position& to);
-    static constexpr std::uint32_t kArcApproachCode = 1u << 16;    // arc-approach, arc-exit (seed 004 G12/G13)
-    // Every class has a bit of its own (the plane: two bits for three values); a branch adding a
-    // class must not reuse one (two merges did).
-    static_assert(std::popcount(kCycleCode | kPathChangerCode | kIncrementalCode | kPerRevolutionCode | kCssCode |
-                                kInchCode | kPlaneYZCode | kOneShotCode | kMotionCode | kPositionOffsetCode |
-                                kRadiusCompCode | kTransformCode | kLengthCompCode | kCornerSlowdownCode |
-                                kApproachOffsetCode | kArcApproachCode) == 17);
     // G12/G13 X Y: a quarter arc from the programmed point to X Y, run as a G03 (G41, G40) or G02
     // (G42) block with its centre words; true when it moved.
     bool arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to);

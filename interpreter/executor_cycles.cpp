@@ -59,9 +59,9 @@ void Executor::classify_codes() {
             code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
         if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel)
             code_class_[i] |= kLengthCompCode;   // [length offsets] executor_length.cpp
-        if (f == "corner-slowdown" || f == "corner-slowdown-cancel") code_class_[i] |= kCornerSlowdownCode;
-        if (f == "axial-offset-direction-plus") code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp
-        if (f == "arc-approach" || f == "arc-exit") code_class_[i] |= kArcApproachCode;
+        if (f == fn::corner_slowdown || f == fn::corner_slowdown_cancel) code_class_[i] |= kCornerSlowdownCode;
+        if (f == fn::axial_offset_plus) code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp
+        if (f == fn::arc_approach || f == fn::arc_exit) code_class_[i] |= kArcApproachCode;
         // The modal flags update_flags() derives (executor.cpp).
         if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;
         if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;

@@ -18,7 +18,7 @@ namespace fn = dialects::functions;
 void Executor::apply_corner_slowdown(const ast::BlockView& view, const BlockWords& words) {
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || !(code_class_of(*c.info) & kCornerSlowdownCode)) continue;
-        if (c.info->function == "corner-slowdown-cancel") {
+        if (c.info->function == fn::corner_slowdown_cancel) {
             slowdown_.reset();
             continue;
         }
