@@ -26,6 +26,14 @@ inline Step thread(double x, double z) { return {EventKind::thread, x, z}; }
 inline Step cw(double x, double z) { return {EventKind::arc_cw, x, z}; }
 inline Step ccw(double x, double z) { return {EventKind::arc_ccw, x, z}; }
 
+// `program` with {0} the cycle's code in a G-code system, run under run_bare without alarms
+// (REQUIREd): the cycle tests run one program in each system where the number differs.
+inline Run run_clean(std::string_view program, const char* code, const char* dialect) {
+    const Run r = run_bare(fmt::format(fmt::runtime(program), code), dialect);
+    require_clean(r);
+    return r;
+}
+
 inline std::string describe(const Event& e) {
     return fmt::format("{} X{:.4f} Z{:.4f}", interpreter::to_string(e.kind), e.end[X], e.end[Z]);
 }

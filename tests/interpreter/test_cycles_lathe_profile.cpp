@@ -85,12 +85,10 @@ TEST_CASE("G71 type I reproduces the O0071 pass table of cycles.md §2; G70 runs
 TEST_CASE("G71 levels meet an arc of the profile where the circle says (cycles.md §2)") {
     for (const System& s : kSystems) {
         INFO(s.dialect);
-        const std::string text = fmt::format(
+        const Run r = run_clean(
             "O1\nG0 X62. Z2.\n{0} U3. R0.5\n{0} P10 Q40 U0 W0 F0.25\nN10 G0 X20.\nN20 G1 Z-10.\n"
             "N30 G2 X40. Z-20. R10.\nN40 G1 X60.\nM30\n",
-            s.turning);
-        const Run r = run_bare(text, s.dialect);
-        require_clean(r);
+            s.turning, s.dialect);
         std::vector<Step> want;
         const double levels[][2] = {{56, -20}, {50, -20}, {44, -20}, {38, -19.94987}, {32, -19.16515}, {26, -17.14143}};
         for (const auto& [x, z] : levels) {
@@ -115,12 +113,10 @@ TEST_CASE("G71 levels meet an arc of the profile where the circle says (cycles.m
 TEST_CASE("G72 facing levels, relief and allowance pass derived by hand (cycles.md §3)") {
     for (const System& s : kSystems) {
         INFO(s.dialect);
-        const std::string text = fmt::format(
+        const Run r = run_clean(
             "O1\nG0 X82. Z2.\n{0} W2. R0.5\n{0} P10 Q40 U0.4 W0.2 F0.2\nN10 G0 Z-6.\nN20 G1 X60.\n"
             "N30 X40. Z-2.\nN40 X20.\nM30\n",
-            s.facing);
-        const Run r = run_bare(text, s.dialect);
-        require_clean(r);
+            s.facing, s.dialect);
         check_path(r, 4,
                    {rapid(82, 0), feed(20.4, 0), feed(21.4, 0.5), rapid(82, 0.5),          //
                     rapid(82, -2), feed(41.4, -2), feed(42.4, -1.5), rapid(82, -1.5),      //
@@ -137,12 +133,10 @@ TEST_CASE("G72 facing levels, relief and allowance pass derived by hand (cycles.
 TEST_CASE("G73 repeats the shifted profile d times (cycles.md §4)") {
     for (const System& s : kSystems) {
         INFO(s.dialect);
-        const std::string text = fmt::format(
+        const Run r = run_clean(
             "O1\nG0 X60. Z5.\n{0} U2. W1. R2\n{0} P10 Q30 U0.4 W0.1 F0.2\nN10 G0 X20. Z1.\nN20 G1 Z-10.\n"
             "N30 X40. Z-20.\nM30\n",
-            s.pattern);
-        const Run r = run_bare(text, s.dialect);
-        require_clean(r);
+            s.pattern, s.dialect);
         check_path(r, 4,
                    {rapid(64.4, 6.1), rapid(24.4, 2.1), feed(24.4, -8.9), feed(44.4, -18.9), rapid(60, 5),
                     rapid(60.4, 5.1), rapid(20.4, 1.1), feed(20.4, -9.9), feed(40.4, -19.9), rapid(60, 5)});
@@ -228,12 +222,10 @@ TEST_CASE("G71 type II roughs a pocket level by level, following the profile (cy
         rapid(50, 2)};
     for (const System& s : kSystems) {
         INFO(s.dialect);
-        const std::string text = fmt::format(
+        const Run r = run_clean(
             "O1\nG0 X50. Z2.\n{0} U2. R0.5\n{0} P10 Q50 U0 W0 F0.2\nN10 G0 X20. W0\nN20 G1 Z-10.\n"
             "N30 X40. Z-20.\nN40 X28. Z-25.\nN45 Z-30.\nN50 X46. Z-38.\nM30\n",
-            s.turning);
-        const Run r = run_bare(text, s.dialect);
-        require_clean(r);
+            s.turning, s.dialect);
         check_path(r, 4, want);
     }
 }

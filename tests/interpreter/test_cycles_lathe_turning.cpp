@@ -31,8 +31,7 @@ constexpr Codes kSystems[] = {
 TEST_CASE("G74 peck drilling reproduces O0009 (cycles.md §5)") {
     for (const Codes& c : kSystems) {
         INFO(c.dialect);
-        const Run r = run_bare(fmt::format("O1\nG0 X0 Z3.\n{0} R0.5\n{0} Z-60. Q20000 F0.2\nM30\n", c.face_peck), c.dialect);
-        require_clean(r);
+        const Run r = run_clean("O1\nG0 X0 Z3.\n{0} R0.5\n{0} Z-60. Q20000 F0.2\nM30\n", c.face_peck, c.dialect);
         check_path(r, 4, {feed(0, -17), rapid(0, -16.5), feed(0, -37), rapid(0, -36.5), feed(0, -57), rapid(0, -56.5),
                           feed(0, -60), rapid(0, 3)});
     }
@@ -60,9 +59,7 @@ TEST_CASE("G74 face grooving steps columns and relieves at the bottom (cycles.md
 TEST_CASE("G75 grooving reproduces O0010 (cycles.md §6)") {
     for (const Codes& c : kSystems) {
         INFO(c.dialect);
-        const Run r =
-            run_bare(fmt::format("O1\nG0 X80. Z-55.\n{0} R.5\n{0} X69. Z-28. P3000 Q2500 F.1\nM30\n", c.grooving), c.dialect);
-        require_clean(r);
+        const Run r = run_clean("O1\nG0 X80. Z-55.\n{0} R.5\n{0} X69. Z-28. P3000 Q2500 F.1\nM30\n", c.grooving, c.dialect);
         std::vector<Step> want;
         std::vector<double> plunges;
         for (int k = 0; k <= 10; ++k) plunges.push_back(-55 + 2.5 * k);
@@ -91,11 +88,9 @@ TEST_CASE("G76 reproduces the O0011 pass depths (cycles.md §7)") {
     const double listed[] = {59.000, 58.586, 58.268, 58.000, 57.764, 57.551, 57.460, 57.400};
     for (const Codes& c : kSystems) {
         INFO(c.dialect);
-        const Run r = run_bare(fmt::format("O1\nG97 S500 M3\nG0 X62. Z4.\n{0} P010060 Q50 R0.03\n"
-                                           "{0} X57.4 Z-30. R0 P1300 Q500 F2.\nM30\n",
-                                           c.threading),
-                               c.dialect);
-        require_clean(r);
+        const Run r = run_clean("O1\nG97 S500 M3\nG0 X62. Z4.\n{0} P010060 Q50 R0.03\n"
+                                "{0} X57.4 Z-30. R0 P1300 Q500 F2.\nM30\n",
+                                c.threading, c.dialect);
         std::vector<Step> want;
         for (std::size_t i = 0; i < 8; ++i) {
             const double x = 57.4 + 2 * (1.3 - depths[i]);
@@ -118,10 +113,8 @@ TEST_CASE("G76 reproduces the O0011 pass depths (cycles.md §7)") {
 TEST_CASE("G92 single thread cycle with run-out, repeated by X blocks (cycles.md §8.2)") {
     for (const Codes& c : kSystems) {
         INFO(c.dialect);
-        const Run r = run_bare(
-            fmt::format("O1\nG97 S400 M3\nG0 X35. Z5.\n{0} X29.4 Z-20. F1.5\nX28.8\nG0 X100.\nM30\n", c.thread_one),
-            c.dialect);
-        require_clean(r);
+        const Run r =
+            run_clean("O1\nG97 S400 M3\nG0 X35. Z5.\n{0} X29.4 Z-20. F1.5\nX28.8\nG0 X100.\nM30\n", c.thread_one, c.dialect);
         check_path(r, 4, {rapid(29.4, 5), thread(29.4, -18.5), thread(32.4, -20), rapid(35, -20), rapid(35, 5)});
         check_path(r, 5, {rapid(28.8, 5), thread(28.8, -18.5), thread(31.8, -20), rapid(35, -20), rapid(35, 5)});
         check_path(r, 6, {rapid(100, 5)});
@@ -138,10 +131,7 @@ TEST_CASE("G92 single thread cycle with run-out, repeated by X blocks (cycles.md
 TEST_CASE("G90 turning cycle, modal repeat and taper R (cycles.md §8.1)") {
     for (const Codes& c : kSystems) {
         INFO(c.dialect);
-        const Run r = run_bare(fmt::format("O1\nG0 X52. Z2.\n{0} X45. Z-20. F0.2\nX40.\n{0} X40. Z-20. R-2.\nG0 X60.\nM30\n",
-                                           c.turning),
-                               c.dialect);
-        require_clean(r);
+        const Run r = run_clean("O1\nG0 X52. Z2.\n{0} X45. Z-20. F0.2\nX40.\n{0} X40. Z-20. R-2.\nG0 X60.\nM30\n", c.turning, c.dialect);
         check_path(r, 3, {rapid(45, 2), feed(45, -20), feed(52, -20), rapid(52, 2)});
         check_path(r, 4, {rapid(40, 2), feed(40, -20), feed(52, -20), rapid(52, 2)});
         check_path(r, 5, {rapid(36, 2), feed(40, -20), feed(52, -20), rapid(52, 2)});
@@ -154,9 +144,7 @@ TEST_CASE("G90 turning cycle, modal repeat and taper R (cycles.md §8.1)") {
 TEST_CASE("G94 facing cycle and taper R (cycles.md §8.3)") {
     for (const Codes& c : kSystems) {
         INFO(c.dialect);
-        const Run r = run_bare(fmt::format("O1\nG0 X52. Z2.\n{0} X20. Z-2. F0.2\n{0} X20. Z-4. R-1.\nM30\n", c.facing),
-                               c.dialect);
-        require_clean(r);
+        const Run r = run_clean("O1\nG0 X52. Z2.\n{0} X20. Z-2. F0.2\n{0} X20. Z-4. R-1.\nM30\n", c.facing, c.dialect);
         check_path(r, 3, {rapid(52, -2), feed(20, -2), feed(20, 2), rapid(52, 2)});
         check_path(r, 4, {rapid(52, -5), feed(20, -4), feed(20, 2), rapid(52, 2)});
     }
