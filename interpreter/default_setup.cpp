@@ -61,7 +61,6 @@ cycles::Settings cycle_settings(const machine::Machine& m) {
     s.thread_chamfer_leads = sw.thread_chamfer;
     s.peck_clearance = sw.peck_clearance;
     s.high_speed_retract = sw.high_speed_retract;
-    s.dwell_p_seconds = sw.dwell_p_unit == machine::DwellUnit::s;
     s.adv400_k_first_peck_only = sw.adv400_g83_k == machine::Adv400G83K::initial_depth;
     s.tapping_reverses = sw.adv400_g84 == machine::Adv400G84::tapping;
     s.repeat_l = sw.drill_repeat_l == machine::DrillRepeatL::fanuc;

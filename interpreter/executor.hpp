@@ -279,6 +279,8 @@ private:
     void note_path_changers(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
+    // A P dwell word in seconds: ms, or s on ADV400 (semantics.md §8.2); G04 and the drilling cycles.
+    double dwell_p_seconds(double p) const { return setup_.dwell_p_in_seconds ? p : p / 1000.0; }
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     void call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     bool apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words);

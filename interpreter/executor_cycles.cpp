@@ -147,6 +147,7 @@ public:
     Position position() const override { return ex_.comp_path_.value_or(ex_.position_); }
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
+    double dwell_seconds(double p) const override { return ex_.dwell_p_seconds(p); }
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
     cycles::SingleCycleModal& single_cycle() override { return ex_.single_cycle_; }
     cycles::DrillModal& drill() override { return ex_.drill_modal_; }

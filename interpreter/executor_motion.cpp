@@ -272,7 +272,7 @@ void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) 
     const auto* u = words.incremental.count('X') ? &words.incremental.at('X') : words.get('U');
     if (const auto* x = words.get('X')) seconds = x->value;
     else if (u) seconds = u->value;
-    else if (const auto* p = words.get('P')) seconds = setup_.dwell_p_in_seconds ? p->value : p->value / 1000.0;
+    else if (const auto* p = words.get('P')) seconds = dwell_p_seconds(p->value);
     else if (const auto* f = words.get('F'); f && setup_.dwell_f_seconds) {
         seconds = f->value;
         Event warn = event_at(EventKind::message, *frame_, view);

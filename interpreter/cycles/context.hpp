@@ -93,6 +93,7 @@ public:
     virtual Position position() const = 0;
     virtual bool diameter_x() const = 0;
     virtual const Settings& settings() const = 0;
+    virtual double dwell_seconds(double p) const = 0;      // a P dwell word: ms, or s (ADV400; semantics.md §8.2)
     virtual Parameters& parameters() = 0;                  // persistent across the run (§0)
     virtual SingleCycleModal& single_cycle() = 0;          // G90/G92/G94 values for repeat blocks
     virtual DrillModal& drill() = 0;                       // drilling cycle values for repeat blocks

@@ -179,7 +179,7 @@ bool drill_hole(Context& ctx, const Hole& h) {
 
 double dwell_seconds(const Context& ctx, std::optional<double> p) {
     if (!p) return 0;
-    return ctx.settings().dwell_p_seconds ? *p : *p / 1000.0;
+    return ctx.dwell_seconds(*p);
 }
 
 // Program units per mm along the axis: X diameters move twice a radius distance (§10 G87).

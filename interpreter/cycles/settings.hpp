@@ -45,7 +45,6 @@ struct Settings {
     double thread_chamfer_leads = 1.0;      // G92 run-out length in leads (cycles.md §8.2)
     double peck_clearance = 0.5;            // mm: G83/G87 re-approach above the last depth (cycles.md §10)
     double high_speed_retract = 0.1;        // mm: G73 retract d after each peck ([FANUC] parameter 5114)
-    bool dwell_p_seconds = false;           // P of a drilling cycle in seconds (ADV400), else ms (semantics.md §8.2)
     bool adv400_k_first_peck_only = false;  // ADV400 G83 K: the first depth only (cycles.md §11.3, §21.7)
     bool tapping_reverses = true;           // ADV400 G84: tapping (false: drilling with dwell, §11.2, gcode-tables §8.6)
     bool repeat_l = true;                   // L repeats a drilling cycle (cycles.md §11.1, §21.8)

@@ -165,7 +165,7 @@ TEST_CASE("ADV400 G81 repeats by L") {
 // Q1 = 1 s at R, G98 back to Z1. With adv400_g84 = drill-dwell no reverse: rapid out.
 TEST_CASE("ADV400 G84 dwells P at the bottom and Q at R") {
     const std::string program = "O1\nG0 X0 Y0 Z1.\nG98 G84 X-2. Y-1. Z-0.5 Q1 R0.1 F15.625 P.5\nM30\n";
-    const Run r = run_bare(program, "adv400-mill", [](Setup& s) { s.cycles.dwell_p_seconds = true; });
+    const Run r = run_bare(program, "adv400-mill", [](Setup& s) { s.dwell_p_in_seconds = true; });
     require_clean(r);
     check_path3(r, 3, kXYZ,
                 {rapid3(-2, -1, 1), rapid3(-2, -1, 0.1), feed3(-2, -1, -0.5), feed3(-2, -1, 0.1), rapid3(-2, -1, 1)});
@@ -173,9 +173,9 @@ TEST_CASE("ADV400 G84 dwells P at the bottom and Q at R") {
     REQUIRE(dwells.size() == 2);
     CHECK(dwells[0].time_s == Approx(0.5));
     CHECK(dwells[1].time_s == Approx(1.0));
-    CHECK(kerf::interpreter::default_setup(dialect("adv400-mill")).cycles.dwell_p_seconds);
+    CHECK(kerf::interpreter::default_setup(dialect("adv400-mill")).dwell_p_in_seconds);
     const Run dd = run_bare(program, "adv400-mill", [](Setup& s) {
-        s.cycles.dwell_p_seconds = true;
+        s.dwell_p_in_seconds = true;
         s.cycles.tapping_reverses = false;
     });
     check_path3(dd, 3, kXYZ, {rapid3(-2, -1, 1), rapid3(-2, -1, 0.1), feed3(-2, -1, -0.5), rapid3(-2, -1, 1)});
