@@ -38,12 +38,8 @@ runs=${KERF_DRYRUN_RUNS:-3}
 
 kerf="$build/kerf"
 gbench="$build/bench/kerf_bench_dryrun"
-for exe in "$kerf" "$gbench"; do
-    if [ ! -x "$exe" ]; then
-        echo "dryrun_vs_rs274.sh: $exe is missing; build with: cmake -S . -B $build -DCMAKE_BUILD_TYPE=Release -DKERF_BENCH=ON && cmake --build $build --target kerf kerf_bench_dryrun" >&2
-        exit 2
-    fi
-done
+. "$here/common.sh"
+require_built dryrun_vs_rs274.sh "$build" kerf kerf_bench_dryrun
 rs274=$(command -v rs274 || true)
 if [ -z "$rs274" ]; then
     echo "dryrun_vs_rs274.sh: rs274 is missing (Debian package linuxcnc-uspace; make bench installs it)" >&2

@@ -20,12 +20,8 @@ mb=${KERF_BENCH_MB:-100}
 if [ "$mb" = 100 ]; then file="$build/bench-100mb.nc"; else file="$build/bench-${mb}mb.nc"; fi
 bench="$build/bench/kerf_bench"
 kerf="$build/kerf"
-for exe in "$bench" "$kerf"; do
-    if [ ! -x "$exe" ]; then
-        echo "run.sh: $exe is missing; build with: cmake -S . -B $build -DCMAKE_BUILD_TYPE=Release -DKERF_BENCH=ON && cmake --build $build --target kerf_bench kerf" >&2
-        exit 2
-    fi
-done
+. "$here/common.sh"
+require_built run.sh "$build" kerf_bench kerf
 
 if [ ! -s "$file" ]; then
     echo "== generating $file ($mb MB)"
