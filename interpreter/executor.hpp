@@ -474,6 +474,11 @@ private:
         double origin_deg = 0;    // polar: the rotary position at G112 = the plane's angle 0
         Position programmed{};    // the programmed point: rotary axis as mm of the virtual axis / arc
         std::string code;         // the code that started the mode (texts)
+        std::optional<motion::P2> tool;   // under G41/G42: the tool centre in the plane (else the programmed point)
+    };
+    struct PathSpan {             // the axes outside the plane: from → to over the part [u0, u1] of a block
+        Position from, to;
+        double u0 = 0, u1 = 1;
     };
     std::optional<PlaneTransform> transform_;   // active mode, else nullopt
     // The block under a mode (or starting/ending one): true/false = moved or not, handled here;
@@ -487,6 +492,16 @@ private:
     motion::ArcResult transform_arc(bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const;
     void warn_rotary_speed(const ast::BlockView& view, const std::vector<motion::MappedPoint>& pieces, motion::P2 start);
     void transform_piece(EventKind kind, const Position& to, double length_mm, const ast::BlockView& view);
+    void run_plane_path(EventKind kind, const std::function<motion::P2(double)>& path, const PathSpan& span,
+                        const ast::BlockView& view);
+    void transform_arc_alarm(const ast::BlockView& view, const motion::ArcResult& geometry);
+    static motion::P2 arc_point(const motion::Arc& arc, double u);
+    // G41/G42 in the mode (polar_compensation.cpp): the element of the plane, the compensated block.
+    std::optional<compensation::Programmed> transform_element(const BlockWords& words, const Position& start,
+                                                              const Position& to, int side, double radius, bool quiet);
+    bool transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves);
+    void run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to, const ast::BlockView& view);
+    bool transform_switch_allowed(const ast::BlockView& view, const std::string& spelling);
     motion::P2 transform_point(const Position& p) const;
     double plane_mm(std::size_t axis, double value) const;      // program value → geometric mm (X radius)
     double program_value(std::size_t axis, double mm) const;    // and back

@@ -76,6 +76,12 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
     std::vector<CompPiece> pieces;
     programmed_end = to;
     const std::string_view motion = flags_.motion;
+    if (transform_) {   // [polar] the Cartesian plane of G112/G107 (polar_compensation.cpp)
+        const auto element = transform_element(words, start, to, side, radius, quiet);
+        if (!element) return std::nullopt;
+        pieces.push_back({*element, to});
+        return pieces;
+    }
     if (motion == fn::linear && drawing_words(view) && quiet) {
         // Read ahead: the direction towards the named end is enough for the corner (a corner
         // word or an angle-only block is resolved when the block runs).

@@ -210,13 +210,6 @@ void Executor::thread_move(const ast::BlockView& view, const BlockWords& words, 
 bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
     // [polar] G112/G107 modes: the block's path is in the Cartesian plane (polar.cpp).
     if (transform_ || (scan_.classes & kTransformCode)) {
-        if (transform_ && (scan_.classes & kRadiusCompCode)) {
-            // Compensation in the Cartesian plane of G112/G107 is not joined up yet: say so rather
-            // than run a compensated program as if it were not (semantics.md §5, cycles.md §18).
-            Event e = event_at(EventKind::message, *frame_, view);
-            e.text = "radius compensation (G40-G42) inside G112/G107 is not applied yet: the trace follows the programmed path";
-            emit(e);
-        }
         if (const auto moved = apply_plane_transform(view, words)) return *moved;
     }
     if (const auto reference = apply_reference_motion(view, words)) {

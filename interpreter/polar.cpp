@@ -74,9 +74,11 @@ std::optional<bool> Executor::apply_plane_transform(const ast::BlockView& view, 
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info) continue;
         const std::string& f = c.info->function;
-        if (f == fn::polar_interpolation_off && transform_ && transform_->map.kind == motion::PlaneMap::Kind::polar)
+        if (f == fn::polar_interpolation_off && transform_ && transform_->map.kind == motion::PlaneMap::Kind::polar) {
+            if (!transform_switch_allowed(view, c.info->spelling)) return false;
             transform_.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
-        else if (f == fn::polar_interpolation_on && !transform_) {
+        } else if (f == fn::polar_interpolation_on && !transform_) {
+            if (!transform_switch_allowed(view, c.info->spelling)) return false;
             if (words.get('C')) return start_polar_with_c(view, words, c.info->spelling);
             start_polar(c.info->spelling);
         } else if (f == fn::cylindrical_interpolation) {
@@ -166,6 +168,7 @@ bool Executor::cylindrical_code(const ast::BlockView& view, const BlockWords& wo
 }
 
 // A block in the mode: its end point in the Cartesian plane, the line or arc there, its pieces.
+// Under G41/G42 the tool centre's path is offset in the Cartesian plane first (polar_compensation.cpp).
 bool Executor::transform_move(const ast::BlockView& view, const BlockWords& words) {
     PlaneTransform& t = *transform_;
     bool moves = false;
@@ -174,6 +177,7 @@ bool Executor::transform_move(const ast::BlockView& view, const BlockWords& word
     const Position to = target_position(words, moves);
     position_ = real;
     note_path_changers(view);
+    if (compensating() || (scan_.classes & kRadiusCompCode)) return transform_compensated(view, words, to, moves);
     const std::string_view motion = flags_.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves) return false;
@@ -183,26 +187,42 @@ bool Executor::transform_move(const ast::BlockView& view, const BlockWords& word
     if (arc) {
         const auto geometry = transform_arc(motion == fn::circular_cw, a, b, words);
         if (!geometry) {
-            alarm(*frame_, view, geometry.error().fanuc_alarm,
-                  fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", t.code,
-                              motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed));
+            transform_arc_alarm(view, geometry);
             return false;
         }
-        path = [g = geometry.arc()](double u) {
-            const motion::Vec3 p = motion::point_at(g, u);
-            return motion::P2{p.x, p.y};
-        };
+        path = [g = geometry.arc()](double u) { return arc_point(g, u); };
     }
+    run_plane_path(motion == fn::rapid ? EventKind::rapid : EventKind::linear, path, {real, to, 0, 1}, view);
+    if (!stopped_) t.programmed = to;
+    return true;
+}
+
+void Executor::transform_arc_alarm(const ast::BlockView& view, const motion::ArcResult& geometry) {
+    alarm(*frame_, view, geometry.error().fanuc_alarm,
+          fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", transform_->code,
+                      motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed));
+}
+
+motion::P2 Executor::arc_point(const motion::Arc& arc, double u) {
+    const motion::Vec3 p = motion::point_at(arc, u);
+    return {p.x, p.y};
+}
+
+// A path of the Cartesian plane from the tool's point (path(0)) run as pieces of the real axes;
+// the axes outside the plane go from span.from toward span.to over the part [u0, u1] of the block.
+void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(double)>& path, const PathSpan& span,
+                              const ast::BlockView& view) {
+    const PlaneTransform& t = *transform_;
     const double start_deg = position_[t.rotary] - t.origin_deg;
-    const std::vector<motion::MappedPoint> pieces =
-        motion::map_path(t.map, path, start_deg, setup_.transform_tolerance);
-    if (motion != fn::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(view, pieces, a);
-    const EventKind kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
+    const std::vector<motion::MappedPoint> pieces = motion::map_path(t.map, path, start_deg, setup_.transform_tolerance);
+    const motion::P2 a = path(0);
+    if (kind != EventKind::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(view, pieces, a);
     motion::P2 previous = a;
     for (const motion::MappedPoint& p : pieces) {
-        Position end = to;   // the axes outside the plane move linearly along the path
+        const double u = span.u0 + (span.u1 - span.u0) * p.t;
+        Position end = span.to;   // the axes outside the plane move linearly along the block
         for (std::size_t axis = 0; axis < kAxisCount; ++axis)
-            end[axis] = real[axis] + (to[axis] - real[axis]) * p.t;
+            end[axis] = span.from[axis] + (span.to[axis] - span.from[axis]) * u;
         end[t.linear] = program_value(t.linear, p.machine.a);
         end[t.rotary] = t.origin_deg + p.machine.b;
         double other_mm2 = 0;   // travel of the linear axes outside the plane
@@ -212,11 +232,9 @@ bool Executor::transform_move(const ast::BlockView& view, const BlockWords& word
                 other_mm2 += d * d;
             }
         transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), view);
-        if (stopped_) return true;
+        if (stopped_) return;
         previous = p.cartesian;
     }
-    t.programmed = to;
-    return true;
 }
 
 // G02/G03 in the Cartesian plane (counter-clockwise from its first axis toward the second): R,

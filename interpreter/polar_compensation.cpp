@@ -1,0 +1,139 @@
+// G41/G42 inside G112/G107 (reference/cycles.md §18 "Tool-radius compensation is computed in the
+// Cartesian plane"; semantics.md §5 "In G112 mode the compensation works in the Cartesian plane
+// with the cutter radius (§10.5 'R → 4, T → 9')"). The block's programmed line or arc of the
+// Cartesian plane and the next block read ahead go through the same state machine as any other
+// compensated block (compensation::RadiusCompensation); each tool-centre move it returns, a line
+// or an arc of the Cartesian plane, is then cut into pieces of the real axes (polar.cpp
+// run_plane_path). The controlled point is the cutter's centre: a live tool is tip 0 or 9
+// (semantics.md §5), so no imaginary-tip shift applies in the plane.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "dialects/functions.hpp"
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace fn = dialects::functions;
+using compensation::Programmed;
+
+namespace {
+
+// [FANUC] PS0145 "illegal conditions in polar coordinate interpolation": G12.1/G13.1 while the
+// compensation holds an offset (the plane would change under the offset vector).
+constexpr int kIllegalConditions = 145;
+
+}  // namespace
+
+// The block's element in the Cartesian plane from the programmed point `start` (read ahead too:
+// comp_pieces comes here while a mode is on).
+std::optional<Programmed> Executor::transform_element(const BlockWords& words, const Position& start, const Position& to,
+                                                       int side, double radius, bool quiet) {
+    const motion::P2 a = transform_point(start), b = transform_point(to);
+    const std::string_view motion = flags_.motion;
+    const int signed_side = radius < 0 ? -side : side;   // a negative radius puts the tool on the other side
+    if (motion == fn::circular_cw || motion == fn::circular_ccw) {
+        const motion::ArcResult geometry = transform_arc(motion == fn::circular_cw, a, b, words);
+        if (!geometry) {
+            if (!quiet) transform_arc_alarm(*view_, geometry);
+            return std::nullopt;
+        }
+        const motion::Vec3 c = geometry.arc().center;
+        return Programmed{{a, b, true, {c.x, c.y}, !geometry.arc().cw}, signed_side, std::fabs(radius)};
+    }
+    return Programmed{{a, b, false, {}, true}, signed_side, std::fabs(radius)};
+}
+
+bool Executor::transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves) {
+    PlaneTransform& t = *transform_;
+    const int side = comp_side_of_block(comp_side_);
+    const std::string_view motion = flags_.motion;
+    const bool runs = motion == fn::rapid || motion == fn::linear || motion == fn::circular_cw || motion == fn::circular_ccw;
+    if (!moves || !runs) {
+        comp_side_ = side;   // G41/G42/G40 without motion: in force from the next move
+        return false;
+    }
+    const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
+    const EventKind kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
+    if (!arc && motion::norm(transform_point(to) - transform_point(t.programmed)) <= 1e-9) {
+        // A move off the plane only (a Z plunge): the offset stays, the compensation goes on with
+        // the next move in the plane (as executor_compensation.cpp, semantics.md §5).
+        comp_side_ = side;
+        const motion::P2 at = t.tool.value_or(transform_point(t.programmed));
+        run_plane_path(kind, [at](double) { return at; }, {position_, to, 0, 1}, view);
+        if (!stopped_) t.programmed = to;
+        return true;
+    }
+    Position programmed_end = to;
+    const auto pieces = comp_pieces(view, words, t.programmed, to, false, programmed_end);
+    comp_side_ = side;
+    if (!pieces || pieces->empty()) return false;
+    const Programmed& current = pieces->front().programmed;
+    const std::optional<Programmed> next = comp_look_ahead(scan_.block, to);
+    if (stopped_) return false;   // the block read ahead raised an alarm
+    const compensation::Step step = radius_comp_.step(current, next);
+    if (step.alarm) {
+        radius_comp_.reset();
+        alarm(*frame_, view, step.alarm->number, step.alarm->text);
+        return false;
+    }
+    run_transform_moves(step, kind, to, view);
+    if (stopped_) return true;
+    t.programmed = to;
+    if (!radius_comp_.engaged()) t.tool.reset();   // cancelled: on the programmed point again
+    return true;
+}
+
+// The tool-centre moves of one step, each cut into pieces; the axes outside the plane share the
+// block's travel in proportion to the moves' lengths.
+void Executor::run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to,
+                                   const ast::BlockView& view) {
+    PlaneTransform& t = *transform_;
+    const Position from = position_;
+    std::vector<std::function<motion::P2(double)>> paths;
+    std::vector<double> lengths;
+    motion::P2 tool = t.tool.value_or(transform_point(t.programmed));
+    for (const compensation::ToolMove& m : step.moves) {
+        std::function<motion::P2(double)> path = [a = tool, b = m.end](double u) { return a + (b - a) * u; };
+        double length = motion::norm(m.end - tool);
+        if (m.arc) {
+            motion::ArcOptions options;
+            options.radius_tolerance = std::max(setup_.arc_tolerance, 1e-4);
+            const motion::ArcResult arc =
+                motion::arc_from_center({tool.a, tool.b, 0}, {m.end.a, m.end.b, 0}, motion::Plane::xy,
+                                        m.ccw ? motion::ArcDirection::ccw : motion::ArcDirection::cw,
+                                        {m.center.a - tool.a, m.center.b - tool.b, 0}, options);
+            if (arc) {   // a degenerate arc piece runs as its chord
+                path = [g = arc.arc()](double u) { return arc_point(g, u); };
+                length = motion::length(arc.arc());
+            }
+        }
+        paths.push_back(path);
+        lengths.push_back(length);
+        tool = m.end;
+    }
+    double total = 0;
+    for (const double l : lengths) total += l;
+    double done = 0;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        const double u0 = total > 0 ? done / total : 0;
+        done += lengths[i];
+        const double u1 = total > 0 ? done / total : 1;
+        run_plane_path(kind, paths[i], {from, to, u0, u1}, view);
+        if (stopped_) return;
+        t.tool = paths[i](1);
+    }
+}
+
+// G12.1/G13.1 may only be given with the compensation cancelled ([FANUC] PS0145; every seed
+// program gives G40 before G113, cycles.md §18).
+bool Executor::transform_switch_allowed(const ast::BlockView& view, const std::string& spelling) {
+    if (!radius_comp_.engaged()) return true;
+    alarm(*frame_, view, kIllegalConditions,
+          fmt::format("{} while tool radius compensation is on: cancel it with G40 and a move first ([FANUC] alarm {})",
+                      spelling, kIllegalConditions));
+    return false;
+}
+
+}  // namespace kerf::interpreter
