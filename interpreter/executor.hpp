@@ -438,6 +438,7 @@ private:
                         const ast::BlockView& view);
     // A G70 finishing path under G41/G42: each element offset with the next one as look-ahead.
     bool compensate_path(const std::vector<cycles::ProfileMove>& path, const ast::BlockView& view);
+    void leave_offset_for_cycle();   // a cycle's own move under G41/G42: the offset is left (executor_cycles.cpp)
     // --- G43/G44/G49 tool length offsets (executor_length.cpp, semantics.md §7, §2.7) ----------
     // The H register's length (geometry + wear) on Z, +G43 / −G44; machine_offset() adds it. The
     // work coordinates stay: the machine position shifts (like a lathe T word).

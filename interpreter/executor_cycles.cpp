@@ -143,7 +143,8 @@ public:
     double modal_feed() const override { return ex_.feed_; }
 
     // Under G41/G42 the tool stands at an offset point: the cycle starts from the programmed one
-    // (the start point A of G70–G73 is the point of the block before, cycles.md §1).
+    // (the start point A of G70–G73 is the point of the block before, cycles.md §1); after the
+    // cycle's first move (leave_offset_for_cycle) the tool runs on programmed points.
     Position position() const override { return ex_.comp_path_.value_or(ex_.position_); }
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
@@ -162,7 +163,9 @@ public:
     }
     bool arc(bool cw, const Position& to, const Position& center, std::optional<double> f) override {
         if (f) ex_.feed_ = *f;
-        return ex_.cycle_arc(cw, to, center, view_);
+        const bool ok = ex_.cycle_arc(cw, to, center, view_);
+        ex_.leave_offset_for_cycle();
+        return ok;
     }
     bool finishing_path(const std::vector<cycles::ProfileMove>& path) override {
         if (ex_.compensating()) return ex_.compensate_path(path, view_);   // executor_compensation.cpp
@@ -214,6 +217,7 @@ private:
         if (ex_.stopped_) return false;
         if (to == ex_.position_ && kind != EventKind::thread) return true;   // nothing to move
         ex_.move(kind, to, *ex_.frame_, view_);
+        ex_.leave_offset_for_cycle();
         return !ex_.stopped_;
     }
 
@@ -256,6 +260,18 @@ bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, 
         cycle_profile_blocks_->first >= frame->block)
         frame->block = cycle_profile_blocks_->last + 1;
     return true;
+}
+
+// Rough cycles do not apply the compensation (cycles.md §2 "Roughing ignores nose-radius
+// compensation", semantics.md §5): the cycle's first move leaves the offset point and the cycle
+// runs on programmed points; G41/G42 stays in force, so the next compensated move (G70's path)
+// starts up again from the cycle's end. Before that first move the cycle reads the programmed
+// point (comp_path_) as its start.
+void Executor::leave_offset_for_cycle() {
+    if (!radius_comp_.engaged() && !comp_path_) return;
+    radius_comp_.reset();
+    comp_path_.reset();
+    programmed_.reset();
 }
 
 void Executor::cancel_cycle_by_motion_code() {

@@ -86,3 +86,57 @@ TEST_CASE("G70 without compensation runs the profile as written") {
     CHECK(m[3].end[X] == Approx(20));
     CHECK(m[3].end[Z] == Approx(5));
 }
+
+// G71 under G42 (cycles.md §2 "Roughing ignores nose-radius compensation"; semantics.md §5 "Rough
+// cycles G71–G73 do not apply the compensation; G70 does"): O0071 of cycles.md §2 after a G42
+// start-up, tool 1 with r = 0.8 and tip 3 (imaginary tip at −X −Z of the centre), machine switch
+// rough_return = x_then_z.
+//   line 4 `G0 G42 Z1.` from X105 Z5 along −Z; the look-ahead stops at the cycle, so the centre
+//          ends perpendicular, 0.8 to the right of −Z (+X): (Z1, x 53.3); the tip 3 point is
+//          (Z1 − 0.8, x 53.3 − 0.8) = X105. Z0.2.
+//   line 6 the roughing: O0071's pass table as in the uncompensated run (the first rapid from the
+//          offset point), then the return to A = X105 Z1 X first: from X102 Z-88 to X105 Z-88, then
+//          Z1 (the cycle reads where the tool stands, not the programmed start point).
+//   line 12 G70: the offset is taken up again from A; its path is the one of a G42 given at A
+//          without motion before G70 (the G70 test above derives that path by hand).
+TEST_CASE("G71 under G42 roughs programmed points, returns X then Z, and G70 starts up from A") {
+    const auto profile = std::string("N100 G0 X40.\nN110 G1 Z-30.\nN120 X60. Z-60.\nN130 Z-80.\nN140 X100. Z-90.\n");
+    const auto setup = [](Setup& st) {
+        st.tools[1].nose_radius = 0.8;
+        st.tools[1].tip = 3;
+        st.cycles.rough_return = kerf::interpreter::cycles::Return::x_then_z;
+    };
+    const Run r = run_bare("O1\nT0101\nG0 X105. Z5.\nG0 G42 Z1.\nG71 U3. R1.\nG71 P100 Q140 U2. W2. F0.3\n" + profile +
+                               "N150 G70 P100 Q140\nG40 G0 X200. Z200.\nM30\n",
+                           "fanuc-lathe-a", setup);
+    require_clean(r);
+    const auto start = moves_on_line(r, 4);
+    REQUIRE(start.size() == 1);
+    CHECK(start[0].end[X] == Approx(105).margin(0.001));
+    CHECK(start[0].end[Z] == Approx(0.2).margin(0.001));
+    const auto rough = moves_on_line(r, 6);
+    REQUIRE(rough.size() == 10 * 4 + 5 + 2);
+    CHECK(rough[0].kind == EventKind::rapid);   // O0071's first level: X99 at Z1, from the offset point
+    CHECK(rough[0].end[X] == Approx(99).margin(0.001));
+    CHECK(rough[0].end[Z] == Approx(1).margin(0.001));
+    const Event& x_back = rough[rough.size() - 2];
+    CHECK(x_back.kind == EventKind::rapid);
+    CHECK(x_back.end[X] == Approx(105).margin(0.001));
+    CHECK(x_back.end[Z] == Approx(-88).margin(0.001));
+    CHECK(rough.back().end[X] == Approx(105).margin(0.001));
+    CHECK(rough.back().end[Z] == Approx(1).margin(0.001));
+    const Run at_a = run_bare("O1\nT0101\nG0 X105. Z1.\nG42\nG70 P100 Q140\nM30\n" + profile, "fanuc-lathe-a", setup);
+    require_clean(at_a);
+    const auto want = moves_on_line(at_a, 5);
+    const auto got = moves_on_line(r, 12);
+    REQUIRE(!want.empty());
+    REQUIRE(got.size() == want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        INFO("G70 move " << i);
+        CHECK(got[i].kind == want[i].kind);
+        CHECK(got[i].end[X] == Approx(want[i].end[X]).margin(0.001));
+        CHECK(got[i].end[Z] == Approx(want[i].end[Z]).margin(0.001));
+    }
+    // The G70 profile's first element from A is a start-up: the tool is not at a programmed point.
+    CHECK(got[0].end[Z] != Approx(1).margin(0.01));
+}
