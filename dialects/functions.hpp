@@ -116,6 +116,7 @@ inline constexpr std::string_view side_boring_cycle = "side-boring-cycle";
 inline constexpr std::string_view corner_slowdown = "corner-slowdown";
 inline constexpr std::string_view corner_slowdown_cancel = "corner-slowdown-cancel";
 inline constexpr std::string_view axial_offset_plus = "axial-offset-direction-plus";
+inline constexpr std::string_view axial_offset_minus = "axial-offset-direction-minus";
 inline constexpr std::string_view arc_approach = "arc-approach";
 inline constexpr std::string_view arc_exit = "arc-exit";
 

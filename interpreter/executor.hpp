@@ -446,6 +446,7 @@ private:
     int length_h_ = 0;         // the H number in force
     double length_mm_ = 0;     // the signed offset on Z, mm
     void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
+    bool axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const;   // seed-004 G43/G44
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
     struct Slowdown {
         double k_mm = 0;       // the distance before each G01 end point
@@ -459,6 +460,10 @@ private:
     // the move is not slowed (move() then runs it whole).
     bool slowed_move(const Position& to, const Frame& f, const ast::BlockView& view);
     bool approach_offset_move(const ast::BlockView& view, const Position& to);
+    // G43/G44 without H (a length offset otherwise): G43's approach, or what the seed leaves
+    // open said; nullopt when the block then runs as usual.
+    std::optional<bool> axial_offset_motion(const ast::BlockView& view, const BlockWords& words, const Position& to,
+                                            bool moves);
     // G12/G13 X Y: a quarter arc from the programmed point to X Y, run as a G03 (G41, G40) or G02
     // (G42) block with its centre words; true when it moved.
     bool arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to);

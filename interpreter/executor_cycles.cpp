@@ -27,7 +27,6 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
 
 // Function ids (docs/functions.md) whose path the trace does not model yet.
 constexpr std::string_view kPathChangers[] = {
-    "axial-offset-direction-plus", "axial-offset-direction-minus",
     "polar-coordinate-command", "scaling", "mirror",
 };
 
@@ -57,10 +56,12 @@ void Executor::classify_codes() {
             code_class_[i] |= kPathChangerCode;
         if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)
             code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
-        if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel)
-            code_class_[i] |= kLengthCompCode;   // [length offsets] executor_length.cpp
+        if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel ||
+            f == fn::axial_offset_plus || f == fn::axial_offset_minus)
+            code_class_[i] |= kLengthCompCode;   // [length offsets] executor_length.cpp (seed-004 G43/G44 with H)
         if (f == fn::corner_slowdown || f == fn::corner_slowdown_cancel) code_class_[i] |= kCornerSlowdownCode;
-        if (f == fn::axial_offset_plus) code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp
+        if (f == fn::axial_offset_plus || f == fn::axial_offset_minus)
+            code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp (without H)
         if (f == fn::arc_approach || f == fn::arc_exit) code_class_[i] |= kArcApproachCode;
         // The modal flags update_flags() derives (executor.cpp).
         if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;

@@ -71,6 +71,30 @@ bool Executor::slowed_move(const Position& to, const Frame& f, const ast::BlockV
     return true;
 }
 
+// G43/G44 of seed 004 without H (with H they are the axial length offset, executor_length.cpp).
+// G43 in a G00/G01 move is the approach of §9.4; G44 is only "the opposite direction of G43"
+// (semantics.md §7, the seed's chapter 8 is missing): it moves nothing else and says so, as does
+// a G43 without a move.
+std::optional<bool> Executor::axial_offset_motion(const ast::BlockView& view, const BlockWords& words, const Position& to,
+                                                  bool moves) {
+    const dialects::CodeInfo* code = nullptr;
+    for (const ast::CodeRef& c : scan_.g)
+        if (c.info && (code_class_of(*c.info) & kApproachOffsetCode)) code = c.info;
+    if (!code || axial_offset_is_length(*code, words)) return std::nullopt;
+    const bool straight = flags_.motion == fn::rapid || flags_.motion == fn::linear;
+    if (code->function == fn::axial_offset_plus && moves && straight) return approach_offset_move(view, to);
+    Event m = event_at(EventKind::message, *frame_, view);
+    m.text = code->function == fn::axial_offset_plus
+                 ? fmt::format("{} without H and without a G00/G01 move: no approach to shorten (semantics.md §9.4); "
+                               "give H for an axial offset",
+                               code->spelling)
+                 : fmt::format("{} without H: seed 004 defines it only as the opposite direction of G43 (semantics.md §7, "
+                               "its chapter 8 is missing): no offset applied; give H for an axial offset",
+                               code->spelling);
+    emit(m);
+    return std::nullopt;
+}
+
 // §9.4 (example 6 `N60 G0 G43 X140. Y35. D08`): the tool stops D short of the programmed point
 // along the approach from the programmed start [inference, flagged in a message; machine switch
 // iso_g43]. Under G41/G42 the tool then stands at an offset point of the programmed end (the

@@ -16,13 +16,33 @@ namespace kerf::interpreter {
 
 namespace fn = dialects::functions;
 
+namespace {
+
+// +1 / −1 for the codes that set a direction, 0 for a cancel.
+int length_sign_of(std::string_view f) {
+    if (f == fn::tool_length_comp_plus || f == fn::axial_offset_plus) return 1;
+    if (f == fn::tool_length_comp_minus || f == fn::axial_offset_minus) return -1;
+    return 0;
+}
+
+}  // namespace
+
+// seed 004 (iso-legacy-mill): "G43 and G44 define the directions of the axial offset" (semantics.md
+// §7), the offset's registers addressed by H; G43 without H in a move is the approach of §9.4
+// (executor_iso_specials.cpp). So G43/G44 are a length offset when the block has H, or always
+// with the machine switch iso_g43 = "length-offset" (semantics.md §12.9).
+bool Executor::axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const {
+    if (code.function != fn::axial_offset_plus && code.function != fn::axial_offset_minus) return true;
+    return !setup_.iso_g43_approach || words.get('H') != nullptr;
+}
+
 void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords& words) {
     int sign = length_sign_;
     const dialects::CodeInfo* code = nullptr;
     for (const ast::CodeRef& c : scan_.g) {
-        if (!c.info || !(code_class_of(*c.info) & kLengthCompCode)) continue;
+        if (!c.info || !(code_class_of(*c.info) & kLengthCompCode) || !axial_offset_is_length(*c.info, words)) continue;
         code = c.info;   // several in one block: the last one wins (semantics.md §1.1)
-        sign = c.info->function == fn::tool_length_comp_plus ? 1 : c.info->function == fn::tool_length_comp_minus ? -1 : 0;
+        sign = length_sign_of(c.info->function);
     }
     const auto* h_word = words.get('H');
     if (!code && !h_word) return;   // G43/G44 in force, nothing new in this block

@@ -221,10 +221,9 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     // which the block's coordinates are measured from (executor_drawing.cpp).
     const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
     if (apply_cycle(view, words, moves, to)) return false;
-    // [seed 004 G43] the approach stops D short of the point (executor_iso_specials.cpp, §9.4).
-    if ((scan_.classes & kApproachOffsetCode) && moves && setup_.iso_g43_approach &&
-        (flags_.motion == fn::rapid || flags_.motion == fn::linear))
-        return approach_offset_move(view, to);
+    // [seed 004 G43/G44 without H] the approach of §9.4 (executor_iso_specials.cpp).
+    if (scan_.classes & kApproachOffsetCode)
+        if (const auto moved = axial_offset_motion(view, words, to, moves)) return *moved;
     if ((scan_.classes & kArcApproachCode) && moves) return arc_approach_move(view, words, to);   // [seed 004 G12/G13]
     // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
     if ((scan_.classes & kRadiusCompCode) || compensating()) return compensate_motion(view, words, to, moves);

@@ -178,3 +178,63 @@ TEST_CASE("seed 004 example 4: G12/G13 under G41 give the path of the explicit a
     // The explicit run: the entry arc R28 about X95 Y50 (the golden trace of example 4).
     CHECK(m1[2].radius == Approx(28));
 }
+
+// G43/G44 with H (semantics.md §7: "G43 and G44 define the directions of the axial offset", the
+// offsets in registers addressed by H): the axial length offset on Z, + for G43, − for G44, as
+// executor_length.cpp applies FANUC's. H3 = 40 (length) − 1 (wear) = 39; bare setup: machine =
+// work + offset.
+//   line 2 G0 Z100            machine Z 100
+//   line 3 G43 H3 Z50.        machine 50 + 39 = 89; no approach shortening (H given): X Y not moved
+//   line 4 G44 H3 Z20.        machine 20 − 39 = −19
+//   line 5 G43 H0 Z0.         H0: no offset, machine 0
+TEST_CASE("seed 004 G43/G44 with H: the axial length offset on Z") {
+    const Run r = run_bare("O1\nG90 G17 G0 X10. Y10. Z100.\nG0 G43 H3 Z50.\nG0 G44 H3 Z20.\nG0 G43 H0 Z0.\nM30\n",
+                           "iso-legacy-mill", [](Setup& s) {
+                               s.tools[3].length = 40;
+                               s.tools[3].length_wear = -1;
+                               s.tools[3].radius = 5;
+                           });
+    require_clean(r);
+    const auto m = moves(r);
+    REQUIRE(m.size() == 4);
+    CHECK(m[1].end[Z] == Approx(50));
+    CHECK(m[1].machine_end[Z] == Approx(89));
+    CHECK(m[1].end[X] == Approx(10));
+    CHECK(m[2].machine_end[Z] == Approx(-19));
+    CHECK(m[3].machine_end[Z] == Approx(0));
+    const auto changes = of_kind(r, EventKind::coordinate_change);
+    REQUIRE(changes.size() == 3);
+    CHECK(changes[0].code == 3);
+    CHECK(count(r, EventKind::message) == 0);
+}
+
+// Machine switch iso_g43 = "length-offset" (semantics.md §12.9, machine/SCHEMA.md): G43 is the
+// axial offset even without H, so example 6's approach `G0 G43 X140. Y35. D08` is not shortened
+// (X140, not X130) and the modal H (H3 = 39 from line 2) shifts machine Z.
+TEST_CASE("seed 004 G43 with the length-offset switch: no approach shortening, the modal H on Z") {
+    const Run r = run_bare("O1\nG90 G17 G0 X75. Y35. Z10. H3\nG0 G43 X140. Y35. D08\nM30\n", "iso-legacy-mill",
+                           [](Setup& s) {
+                               s.tools[3].length = 39;
+                               s.tools[8].radius = 10;
+                               s.iso_g43_approach = false;
+                           });
+    require_clean(r);
+    const auto m = moves(r);
+    REQUIRE(m.size() == 2);
+    CHECK(m[1].end[X] == Approx(140));
+    CHECK(m[1].machine_end[Z] == Approx(49));
+    CHECK(count(r, EventKind::message) == 0);
+}
+
+// G44 without H: the seed gives only "the opposite direction of G43" (its chapter 8 is missing):
+// nothing is offset, the move runs as programmed and a message says why.
+TEST_CASE("seed 004 G44 without H: the move as programmed, the gap said") {
+    const Run r = run_bare("O1\nG90 G17 G0 X75. Y35.\nG0 G44 X140. Y35. D08\nM30\n", "iso-legacy-mill",
+                           [](Setup& s) { s.tools[8].radius = 10; });
+    require_clean(r);
+    const auto m = moves(r);
+    REQUIRE(m.size() == 2);
+    CHECK(m[1].end[X] == Approx(140));
+    REQUIRE(count(r, EventKind::message) == 1);
+    CHECK(of_kind(r, EventKind::message)[0].text.find("opposite direction of G43") != std::string::npos);
+}
