@@ -15,19 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "tests/interpreter/interpreter_fixture.hpp"
+#include "tests/interpreter/polar_plane.hpp"
 
 using namespace kerf;
 using namespace kerf::test;
 
 namespace {
-
-constexpr std::size_t C = 5;
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-// The plane point of a machine point: x = X/2·cos C, y = X/2·sin C.
-double plane_x(const Event& e) { return e.end[X] / 2 * std::cos(e.end[C] / kDeg); }
-double plane_y(const Event& e) { return e.end[X] / 2 * std::sin(e.end[C] / kDeg); }
 
 double time_of(const std::vector<Event>& events) {
     double t = 0;

@@ -14,18 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "tests/interpreter/interpreter_fixture.hpp"
+#include "tests/interpreter/polar_plane.hpp"
 
 using namespace kerf;
 using namespace kerf::test;
 
 namespace {
-
-constexpr std::size_t C = 5;
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
-double plane_x(const Event& e) { return e.end[X] / 2 * std::cos(e.end[C] / kDeg); }
-double plane_y(const Event& e) { return e.end[X] / 2 * std::sin(e.end[C] / kDeg); }
 
 Run run_polar(const std::string& text, double radius) {
     return run_bare(text, "fanuc-lathe-a", [&](Setup& s) {
