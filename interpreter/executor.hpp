@@ -367,29 +367,29 @@ private:
                                  const Position& to);
     // Reading a block ahead (direct drawing, compensation): the running block's scan, view,
     // position, programmed point and modal flags come back when this goes out of scope.
-    struct ReadAhead {
+    struct LookAheadScope {
         Executor& ex;
         BlockScan scan;
         const ast::BlockView* view;
         Position position;
         std::optional<Position> programmed;
         ModalFlags flags;
-        ReadAhead(Executor& e, const Frame& f, const ast::BlockView& next, std::uint32_t index)
+        LookAheadScope(Executor& e, const Frame& f, const ast::BlockView& next, std::uint32_t index)
             : ex(e), scan(e.scan_), view(e.view_), position(e.position_), programmed(e.programmed_), flags(e.flags_) {
             ex.view_ = nullptr;
             ex.scan_block(f, next);
             ex.scan_.block = index;
             ex.view_ = &next;
         }
-        ~ReadAhead() {
+        ~LookAheadScope() {
             ex.scan_ = scan;
             ex.view_ = view;
             ex.position_ = position;
             ex.programmed_ = programmed;
             ex.flags_ = flags;
         }
-        ReadAhead(const ReadAhead&) = delete;
-        ReadAhead& operator=(const ReadAhead&) = delete;
+        LookAheadScope(const LookAheadScope&) = delete;
+        LookAheadScope& operator=(const LookAheadScope&) = delete;
     };
     // The next code block after block `after` (up to block `last` when given) as the resolver
     // sees it, programmed from `from`; nullopt when there is none. Restores the running scan.

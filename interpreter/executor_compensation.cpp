@@ -138,7 +138,7 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
         if (next.block().kind != ast::BlockKind::code) continue;
         if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
         std::optional<Programmed> out;
-        const ReadAhead guard(*this, f, next, b);
+        const LookAheadScope guard(*this, f, next, b);
         // A cycle, a call or a return ends the look-ahead: the element then ends perpendicular.
         bool stop = scan_.macro_call || (scan_.classes & kCycleCode);
         for (const ast::CodeRef& c : scan_.m)

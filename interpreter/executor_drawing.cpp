@@ -81,7 +81,7 @@ std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::opt
         if (next.block().kind != ast::BlockKind::code) continue;
         if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
         // Read with the executor's own word evaluation; the running block's scan comes back after.
-        const ReadAhead guard(*this, f, next, scan_.block);
+        const LookAheadScope guard(*this, f, next, scan_.block);
         // The chain is G01 (only G01 blocks are drawn): the next block is G01 unless it says otherwise.
         std::string_view motion = fn::linear;
         for (const ast::CodeRef& c : scan_.g)
