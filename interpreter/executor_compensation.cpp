@@ -31,7 +31,8 @@ int Executor::comp_side_of_block(int current) const {
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || !(code_class_of(*c.info) & kRadiusCompCode)) continue;
         const std::string_view f = c.info->function;
-        const int left = setup_.g41_g42_swapped ? -1 : 1;   // semantics.md §12.12
+        // semantics.md §12.12; [transforms] a mirror of one plane axis swaps G41 and G42 [FANUC].
+        const int left = (setup_.g41_g42_swapped ? -1 : 1) * (program_frame().reverses(plane()) ? -1 : 1);
         side = f == fn::radius_comp_cancel ? 0 : f == fn::radius_comp_left ? left : -left;
     }
     return side;

@@ -26,10 +26,11 @@ constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-to
                                              "tailstock-coupling-carry", "tailstock-coupling-position"};
 
 // Function ids (docs/functions.md) whose path the trace does not model yet.
-constexpr std::string_view kPathChangers[] = {
-    "axial-offset-direction-plus", "axial-offset-direction-minus",
-    "polar-coordinate-command", "scaling", "mirror",
-};
+constexpr std::string_view kPathChangers[] = {"axial-offset-direction-plus", "axial-offset-direction-minus"};
+
+// [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp).
+constexpr std::string_view kProgramTransforms[] = {fn::polar_coordinate_command, fn::polar_coordinate_command_cancel,
+                                                   fn::scaling, fn::scaling_cancel, fn::mirror, fn::mirror_cancel};
 
 }  // namespace
 
@@ -55,6 +56,8 @@ void Executor::classify_codes() {
             code_class_[i] |= kTransformCode;   // [polar] polar.cpp
         if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
             code_class_[i] |= kPathChangerCode;
+        if (std::find(std::begin(kProgramTransforms), std::end(kProgramTransforms), f) != std::end(kProgramTransforms))
+            code_class_[i] |= kProgramTransformCode;
         if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)
             code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
         if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel)

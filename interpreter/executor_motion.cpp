@@ -48,7 +48,7 @@ Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, d
 }
 
 Position Executor::target_position(const BlockWords& words, bool& moves) const {
-    // Built in the program's frame (G68 undone), then turned back into work coordinates.
+    // Built in the program's frame (G68, G51, G51.1 undone), then taken back into work coordinates.
     const Position start = to_program(position_);
     Position to = start;
     moves = false;
@@ -74,6 +74,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
         moves = true;
     }
+    if (polar_command_ && moves) polar_target(words, start, to);   // [transforms] G16 (executor_transforms.cpp)
     return from_program(to);
 }
 
