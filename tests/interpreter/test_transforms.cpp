@@ -10,22 +10,6 @@ using namespace kerf::test;
 
 namespace {
 
-struct Pt {
-    double x, y;
-};
-
-// The end points of the moves, in order (X and Y, 0.001 mm).
-void check_ends(const std::vector<Event>& m, std::initializer_list<Pt> expected) {
-    REQUIRE(m.size() == expected.size());
-    std::size_t i = 0;
-    for (const Pt& p : expected) {
-        INFO("move " << i << " on line " << m[i].source.line << " ends at " << m[i].end[X] << " " << m[i].end[Y]);
-        CHECK(m[i].end[X] == Approx(p.x).margin(0.001));
-        CHECK(m[i].end[Y] == Approx(p.y).margin(0.001));
-        ++i;
-    }
-}
-
 void check_centre(const Event& arc, Pt c, double radius) {
     REQUIRE(arc.center);
     CHECK((*arc.center)[X] == Approx(c.x).margin(0.001));
@@ -54,7 +38,7 @@ TEST_CASE("G16 G90: a hexagon of absolute angles about the work origin; G15 canc
     const Run r = run_bare("O1\nG90 G17 G0 X0. Y0.\nG16\nG1 X50. Y0. F100.\nY60.\nY120.\nY180.\nY240.\nY300.\nY360.\n"
                            "G15\nG0 X0. Y0.\nM30\n");
     require_clean(r);
-    check_ends(moves(r), {{0, 0}, {50, 0}, {25, 43.301}, {-25, 43.301}, {-50, 0}, {-25, -43.301}, {25, -43.301},
+    check_path(moves(r), {{0, 0}, {50, 0}, {25, 43.301}, {-25, 43.301}, {-50, 0}, {-25, -43.301}, {25, -43.301},
                           {50, 0}, {0, 0}});
     CHECK(changes(r) == std::vector<std::string>{"polar coordinate command (G16)", "polar coordinate command cancel (G15)"});
     CHECK_FALSE(says_not_applied(r));
@@ -69,7 +53,7 @@ TEST_CASE("G16 G90: a hexagon of absolute angles about the work origin; G15 canc
 TEST_CASE("G16 G91: incremental angle about the origin, incremental radius from the current point", "[transforms]") {
     const Run r = run_bare("O1\nG90 G17 G0 X0. Y0.\nG16\nG1 X40. Y45. F100.\nG91 Y90.\nX10. Y0.\nG90 X20. Y-90.\nG15\nM30\n");
     require_clean(r);
-    check_ends(moves(r), {{0, 0}, {28.284, 28.284}, {-28.284, 28.284}, {-35.355, 35.355}, {0, -20}});
+    check_path(moves(r), {{0, 0}, {28.284, 28.284}, {-28.284, 28.284}, {-35.355, 35.355}, {0, -20}});
 }
 
 // FANUC's bolt-hole example with G81: radius 100 at 30°, 150°, 270° → (86.603, 50), (−86.603, 50),
@@ -80,7 +64,7 @@ TEST_CASE("G16 with G81: a bolt circle of three holes", "[transforms]") {
     std::vector<Event> bottoms;
     for (const Event& e : moves(r))
         if (e.kind == EventKind::linear) bottoms.push_back(e);
-    check_ends(bottoms, {{86.603, 50}, {-86.603, 50}, {0, -100}});
+    check_path(bottoms, {{86.603, 50}, {-86.603, 50}, {0, -100}});
     for (const Event& e : bottoms) CHECK(e.end[Z] == Approx(-20));
 }
 
@@ -91,7 +75,7 @@ TEST_CASE("G16: an arc with R to a polar end point", "[transforms]") {
     const auto a = arcs(r);
     REQUIRE(a.size() == 1);
     CHECK(a[0].kind == EventKind::arc_ccw);
-    check_ends(a, {{0, 30}});
+    check_path(a, {{0, 30}});
     check_centre(a[0], {0, 0}, 30);
 }
 
@@ -109,7 +93,7 @@ TEST_CASE("G51 P: scaling about a centre, an arc by R and by I/J; G50 cancels", 
                                    centre + "\nG1 X10. Y10.\nG50\nG0 X0. Y0.\nM30\n");
             require_clean(r);
             const auto m = moves(r);
-            check_ends(m, {{0, 0}, {30, 10}, {10, 30}, {10, 10}, {0, 0}});
+            check_path(m, {{0, 0}, {30, 10}, {10, 30}, {10, 10}, {0, 0}});
             CHECK(m[2].kind == EventKind::arc_ccw);
             check_centre(m[2], {10, 10}, 20);
             CHECK(changes(r) == std::vector<std::string>{"scaling (G51) about X10 Y10 Z0, magnification X2 Y2 Z2",
@@ -122,7 +106,7 @@ TEST_CASE("G51 P without a point in the machine's unit", "[transforms]") {
     const Run r = run_bare("O1\nG90 G17 G0 X0. Y0.\nG51 X0. Y0. P200000\nG1 X20. F100.\nG50\nM30\n", "fanuc-mill",
                            [](Setup& s) { s.scaling_unit = 0.00001; });
     require_clean(r);
-    check_ends(moves(r), {{0, 0}, {40, 0}});
+    check_path(moves(r), {{0, 0}, {40, 0}});
 }
 
 // G51 I-1000 J1000 (each axis; I −1 mirrors X about the centre X0):
@@ -136,7 +120,7 @@ TEST_CASE("G51 with a negative I: the X axis mirrored, the arc reversed", "[tran
                                centre + "\nG50\nM30\n");
         require_clean(r);
         const auto m = moves(r);
-        check_ends(m, {{0, 0}, {-10, 0}, {0, 10}});
+        check_path(m, {{0, 0}, {-10, 0}, {0, 10}});
         CHECK(m[2].kind == EventKind::arc_cw);
         check_centre(m[2], {0, 0}, 10);
     }
@@ -155,7 +139,7 @@ TEST_CASE("G51.1: a mirrored arc runs the other way (G03 becomes clockwise)", "[
     const Run r = run_bare("O1\nG90 G17 G0 X0. Y10.\nG51.1 Y5.\nG1 X10. Y0. F100.\nG3 X0. Y10. R10.\nG50.1 Y0.\nG0 X0. Y0.\nM30\n");
     require_clean(r);
     const auto m = moves(r);
-    check_ends(m, {{0, 10}, {10, 10}, {0, 0}, {0, 0}});
+    check_path(m, {{0, 10}, {10, 10}, {0, 0}, {0, 0}});
     CHECK(m[2].kind == EventKind::arc_cw);
     check_centre(m[2], {0, 10}, 10);
     CHECK(changes(r) == std::vector<std::string>{"mirror image (G51.1) about Y5", "mirror image cancel (G50.1) Y"});
@@ -167,7 +151,7 @@ TEST_CASE("G51.1: a mirrored arc runs the other way (G03 becomes clockwise)", "[
 TEST_CASE("G50.1 cancels per axis", "[transforms]") {
     const Run r = run_bare("O1\nG90 G17\nG51.1 X5. Y5.\nG0 X0. Y0.\nG50.1 X0.\nG0 X0. Y0.\nG50.1\nG0 X0. Y0.\nM30\n");
     require_clean(r);
-    check_ends(moves(r), {{10, 10}, {0, 10}, {0, 0}});
+    check_path(moves(r), {{10, 10}, {0, 10}, {0, 0}});
 }
 
 // The 20 × 20 square of test_compensation_mill.cpp with G42 D1 (r 5, outside when run
@@ -181,7 +165,7 @@ TEST_CASE("G51.1 with G42: the compensation side swaps and the path is the mirro
                            "G40 Y-10.\nG50.1 X0.\nM30\n",
                            "fanuc-mill", [](Setup& s) { s.tools[1].radius = 5; });
     require_clean(r);
-    check_ends(moves(r), {{0, 0}, {10, 0}, {0, -5}, {-25, -5}, {-25, 25}, {5, 25}, {5, 0}, {0, -10}});
+    check_path(moves(r), {{0, 0}, {10, 0}, {0, -5}, {-25, -5}, {-25, 25}, {5, 25}, {5, 0}, {0, -10}});
 }
 
 // FANUC: a G68 given in G51 mode has its centre scaled; scaling first, then rotation.
@@ -191,7 +175,7 @@ TEST_CASE("G51.1 with G42: the compensation side swaps and the path is the mirro
 TEST_CASE("G51 then G68: the rotation centre is scaled", "[transforms]") {
     const Run r = run_bare("O1\nG90 G17 G0 X0. Y0.\nG51 X0. Y0. P2000\nG68 X10. Y0. R90.\nG1 X20. Y0. F100.\nG69\nG50\nM30\n");
     require_clean(r);
-    check_ends(moves(r), {{0, 0}, {20, 20}});
+    check_path(moves(r), {{0, 0}, {20, 20}});
 }
 
 // All three nested the FANUC way (G51.1 ⊃ G51 ⊃ G68): work = mirror(scale(rotate(p))).
@@ -205,7 +189,20 @@ TEST_CASE("G51.1, G51 and G68 together", "[transforms]") {
                            "G3 X5. Y10. R5.\nG69\nG50\nG50.1 X0.\nM30\n");
     require_clean(r);
     const auto m = moves(r);
-    check_ends(m, {{0, 0}, {10, 20}, {20, 10}});
+    check_path(m, {{0, 0}, {10, 20}, {20, 10}});
     CHECK(m[2].kind == EventKind::arc_cw);
     check_centre(m[2], {10, 10}, 10);
+}
+
+// A drilling cycle whose block names only X still drills at the transformed point: G68 R90. about
+// (0, 0) turns the programmed (10, 0) to (0, 10), so Y moves although the block has no Y word
+// (cycles/drilling.cpp takes every axis the transform moved). The bottom feed ends at (0, 10, −5).
+TEST_CASE("G68 with G81 X only: the hole is at the rotated point", "[transforms]") {
+    const Run r = run_bare("O1\nG90 G17 G0 X0. Y0. Z10.\nG68 X0. Y0. R90.\nG98 G81 X10. Z-5. R2. F100.\nG80 G69\nM30\n");
+    require_clean(r);
+    std::vector<Event> bottoms;
+    for (const Event& e : moves(r))
+        if (e.kind == EventKind::linear) bottoms.push_back(e);
+    check_path(bottoms, {{0, 10}});
+    CHECK(bottoms[0].end[Z] == Approx(-5));
 }
