@@ -124,8 +124,10 @@ void Executor::set_mirror(const ast::BlockView& view, const BlockWords& words, b
 // absolute angle is the angle; an incremental one is added to the angle of the current point
 // about the origin (FANUC's bolt-hole example: `G91 Y120.` steps 120° round the circle); a block
 // without an angle word keeps that angle, one without a radius word the current point's distance
-// from the origin. `start` and `to` are in the program's frame (transforms.hpp undone), so G16
-// inside G51/G68 describes the pattern before it is scaled and turned.
+// from the origin. An arc's end point is polar, its R a radius and its I/J/K Cartesian as ever.
+// `start` and `to` are in the program's frame (transforms.hpp undone), so G16 inside G51/G68
+// describes the pattern before it is scaled and turned. G51/G51.1/G68/G52/G92/G10 blocks do not
+// come here (their words are centres and values, not polar: [FANUC]).
 void Executor::polar_target(const BlockWords& words, const Position& start, Position& to) const {
     const auto [i, j] = plane_indices(flags_.plane);
     const auto word = [&](std::size_t axis) -> const Word* {
