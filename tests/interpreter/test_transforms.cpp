@@ -61,9 +61,7 @@ TEST_CASE("G16 G91: incremental angle about the origin, incremental radius from 
 TEST_CASE("G16 with G81: a bolt circle of three holes", "[transforms]") {
     const Run r = run_bare("O1\nG90 G17 G0 X0. Y0. Z10.\nG16\nG98 G81 X100. Y30. Z-20. R5. F200.\nY150.\nY270.\nG80 G15\nM30\n");
     require_clean(r);
-    std::vector<Event> bottoms;
-    for (const Event& e : moves(r))
-        if (e.kind == EventKind::linear) bottoms.push_back(e);
+    const std::vector<Event> bottoms = of_kind(r, EventKind::linear);   // the feeds to the hole bottoms
     check_path(bottoms, {{86.603, 50}, {-86.603, 50}, {0, -100}});
     for (const Event& e : bottoms) CHECK(e.end[Z] == Approx(-20));
 }
@@ -200,9 +198,19 @@ TEST_CASE("G51.1, G51 and G68 together", "[transforms]") {
 TEST_CASE("G68 with G81 X only: the hole is at the rotated point", "[transforms]") {
     const Run r = run_bare("O1\nG90 G17 G0 X0. Y0. Z10.\nG68 X0. Y0. R90.\nG98 G81 X10. Z-5. R2. F100.\nG80 G69\nM30\n");
     require_clean(r);
-    std::vector<Event> bottoms;
-    for (const Event& e : moves(r))
-        if (e.kind == EventKind::linear) bottoms.push_back(e);
+    const std::vector<Event> bottoms = of_kind(r, EventKind::linear);   // the feeds to the hole bottoms
     check_path(bottoms, {{0, 10}});
     CHECK(bottoms[0].end[Z] == Approx(-5));
+}
+
+// G18 G16: the plane's first axis is Z (the radius), the second X (the angle). Z10. X90.: radius
+// 10 at 90° from +Z towards +X → Z = 10·cos 90° = 0, X = 10·sin 90° = 10; Y untouched.
+TEST_CASE("G16 in G18: Z is the radius, X the angle", "[transforms]") {
+    const Run r = run_bare("O1\nG90 G18 G0 X0. Y5. Z0.\nG16\nG1 Z10. X90. F100.\nG15\nM30\n");
+    require_clean(r);
+    const auto m = moves(r);
+    REQUIRE(m.size() == 2);
+    CHECK(m[1].end[Z] == Approx(0).margin(0.001));
+    CHECK(m[1].end[X] == Approx(10).margin(0.001));
+    CHECK(m[1].end[Y] == Approx(5));
 }
