@@ -57,6 +57,13 @@ inline constexpr std::string_view stroke_check_off = "stroke-check-off";
 inline constexpr std::string_view polar_interpolation_on = "polar-interpolation-on";     // G12.1/G112 (cycles.md §18)
 inline constexpr std::string_view polar_interpolation_off = "polar-interpolation-off";   // G13.1/G113
 inline constexpr std::string_view cylindrical_interpolation = "cylindrical-interpolation";   // G07.1/G107 (cycles.md §19)
+// [FANUC] programmable transforms of mills (interpreter/executor_transforms.cpp).
+inline constexpr std::string_view polar_coordinate_command = "polar-coordinate-command";                 // G16
+inline constexpr std::string_view polar_coordinate_command_cancel = "polar-coordinate-command-cancel";   // G15
+inline constexpr std::string_view scaling = "scaling";                                                   // G51
+inline constexpr std::string_view scaling_cancel = "scaling-cancel";                                     // G50
+inline constexpr std::string_view mirror = "mirror";                                                     // G51.1
+inline constexpr std::string_view mirror_cancel = "mirror-cancel";                                       // G50.1
 // "work-coordinate-1" ... "work-coordinate-6" are G54 ... G59.
 inline constexpr std::string_view work_coordinate_prefix = "work-coordinate-";
 

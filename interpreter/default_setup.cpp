@@ -97,6 +97,7 @@ Setup make_setup(const machine::Machine& m) {
     s.g28_point_in_machine = sw.g28_intermediate == machine::PointFrame::machine;
     s.g30_default_p = sw.g30_default_p;
     s.g68_positive_cw = sw.g68_positive == machine::RotationSign::cw;
+    s.scaling_unit = sw.scaling_unit == machine::ScalingUnit::thousandth ? 0.001 : 0.00001;
     s.arc_tolerance = sw.arc_tolerance;
     s.transform_tolerance = sw.transform_tolerance;
     s.arc_negative_r = sw.arc_negative_r == machine::ArcLargeR::negative_r;

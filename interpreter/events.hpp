@@ -48,6 +48,10 @@ namespace kerf_warning {
 // A thread's axis speed, lead × rpm (the larger lead of a G34), is over the machine's maximum
 // cutting feed (cycles.md §9): the control cannot keep the lead at that speed.
 inline constexpr int thread_speed_over_limit = 90101;
+// The dry run does not model what the block does (a code whose meaning the reference leaves open,
+// a cycle or motion no part of the interpreter expands): the trace is not the machine's there, and
+// the analyzer's K5009 says so.
+inline constexpr int not_modelled = 90102;
 }  // namespace kerf_warning
 
 struct Event {

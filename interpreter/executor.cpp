@@ -268,6 +268,8 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     apply_modal_codes(view);
     if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
     if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
+    // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
+    if ((scan_.classes & kProgramTransformCode) && !apply_program_transforms(view, words)) return false;
     if (!apply_coordinate_operations(view, words) || stopped_) return false;
     const bool moved = apply_motion(view, words);
     if (stopped_) return moved;

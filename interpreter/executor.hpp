@@ -17,6 +17,7 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/macro/evaluate.hpp"
 #include "interpreter/macro/variables.hpp"
+#include "interpreter/transforms.hpp"
 #include "motion/arc.hpp"
 #include "motion/polar.hpp"
 #include "motion/vec.hpp"
@@ -113,14 +114,6 @@ struct ModalFlags {
     motion::Plane plane = motion::Plane::xy;
     const dialects::CodeInfo* modal_cycle = nullptr;   // a modal canned cycle (G81.., lathe G83..)
     const dialects::CodeInfo* motion_cycle = nullptr;  // group 01 is a cycle (G90/G92/G94): X/Z blocks repeat it
-};
-
-// G68 coordinate rotation (semantics.md §2.9): programmed points are turned about `center` by
-// `angle` (radians, counter-clockwise positive in the plane frame) in `plane`.
-struct Rotation {
-    motion::Plane plane = motion::Plane::xy;
-    double center_first = 0, center_second = 0;
-    double angle = 0;
 };
 
 // G66 modal macro call: called after each move block until G67 (dialects.md §3.7).
@@ -256,7 +249,7 @@ private:
     std::uint32_t code_class_of(const dialects::CodeInfo& code) const;
     // What a code of the dialect is, as bits (classify_codes, once per run): a block ORs its codes'
     // classes into scan_.classes and skips whole families of checks with one test.
-    static constexpr std::uint32_t kCycleCode = 1, kPathChangerCode = 2, kIncrementalCode = 4, kPerRevolutionCode = 8,
+    static constexpr std::uint32_t kCycleCode = 1, kIncrementalCode = 4, kPerRevolutionCode = 8,
                                   kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
                                   kPlaneYZCode = 192,   // the plane: two bits
                                   kOneShotCode = 1u << 8,         // group 00 (G04, G10, G28, G53 ...)
@@ -267,16 +260,17 @@ private:
                                   kLengthCompCode = 1u << 13,     // G43/G44/G49 (executor_length.cpp)
                                   kCornerSlowdownCode = 1u << 14, // seed 004 G28/G29 (executor_iso_specials.cpp)
                                   kApproachOffsetCode = 1u << 15, // seed 004 G43 approach
-                                  kArcApproachCode = 1u << 16;    // seed 004 G12/G13
+                                  kArcApproachCode = 1u << 16,    // seed 004 G12/G13
+                                  kProgramTransformCode = 1u << 17;   // G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp)
     // Every class has a bit of its own (the plane: two bits for three values); a branch adding a
     // class must not reuse one (two merges did).
-    static_assert(std::popcount(kCycleCode | kPathChangerCode | kIncrementalCode | kPerRevolutionCode | kCssCode |
+    static_assert(std::popcount(kCycleCode | kIncrementalCode | kPerRevolutionCode | kCssCode |
                                 kInchCode | kPlaneYZCode | kOneShotCode | kMotionCode | kPositionOffsetCode |
                                 kRadiusCompCode | kTransformCode | kLengthCompCode | kCornerSlowdownCode |
-                                kApproachOffsetCode | kArcApproachCode) == 17);
+                                kApproachOffsetCode | kArcApproachCode | kProgramTransformCode) == 17);
     std::vector<std::uint32_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
     std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
-    void note_path_changers(const ast::BlockView& view);
+    void note_drawing_outside_g01(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
     // A P dwell word in seconds: ms, or s on ADV400 (semantics.md §8.2); G04 and the drilling cycles.
@@ -294,8 +288,8 @@ private:
     bool modal_active(std::string_view function) const;
     double axis_value(const BlockWords::Word& w, char letter) const;
     Position target_position(const BlockWords& words, bool& moves) const;
-    Position to_program(const Position& work) const;     // undo G68
-    Position from_program(const Position& program) const;   // apply G68
+    Position to_program(const Position& work) const;     // undo G51.1, G51, G68 (transforms.hpp)
+    Position from_program(const Position& program) const;   // apply G68, G51, G51.1
     Position machine_offset() const;
     Position tool_offset() const;
     double unit_scale() const { return flags_.inch ? 25.4 : 1.0; }
@@ -472,6 +466,19 @@ private:
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);
+    // --- [transforms] G15/G16 polar coordinate command, G50/G51 scaling, G50.1/G51.1 mirror image
+    // (executor_transforms.cpp; the geometry with G68 in transforms.hpp) -----------------------
+    bool polar_command_ = false;          // G16 (power-on G15)
+    std::optional<Scaling> scaling_;      // G51 (power-on G50)
+    Mirror mirror_{};                     // G51.1 per axis (power-on G50.1)
+    ProgramFrame program_frame() const { return {mirror_, scaling_, rotation_}; }
+    bool apply_program_transforms(const ast::BlockView& view, const BlockWords& words);   // false: no motion
+    void start_scaling(const ast::BlockView& view, const BlockWords& words);
+    double magnification(const Word& w) const;   // a P/I/J/K word: with a point the factor, else units
+    void set_mirror(const ast::BlockView& view, const BlockWords& words, bool on);
+    void note_transform(const ast::BlockView& view, std::string text);   // a coordinate_change event
+    // The plane's two axis words of a G16 block as radius and angle into `to` ([FANUC] rules there).
+    void polar_target(const BlockWords& words, const Position& start, Position& to) const;
     // --- [polar] G112/G113 polar and G107 cylindrical interpolation (polar.cpp, cycles.md §18–§19) --
     struct PlaneTransform {
         motion::PlaneMap map;

@@ -11,37 +11,29 @@
 
 namespace kerf::interpreter {
 
-namespace {
-
-// I/J/K of a rotated block are in the program's frame: turn the vector with the rotation.
-motion::Vec3 rotate_vector(motion::Vec3 v, const std::optional<Rotation>& rotation) {
-    if (!rotation) return v;
-    const motion::PlaneAxes axes = motion::plane_axes(rotation->plane);
-    const double u = motion::get(v, axes.first), w = motion::get(v, axes.second);
-    motion::set(v, axes.first, u * std::cos(rotation->angle) - w * std::sin(rotation->angle));
-    motion::set(v, axes.second, u * std::sin(rotation->angle) + w * std::cos(rotation->angle));
-    return v;
-}
-
-
-}  // namespace
-
 motion::ArcResult Executor::arc_geometry(bool cw, const Position& from, const Position& to,
                                          const BlockWords& words) const {
     const double scale = unit_scale();
     const motion::Vec3 start = geometric_mm(from, setup_.diameter_x, scale);
     const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
-    const motion::ArcDirection dir = cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
+    // [transforms] G68/G51/G51.1 (transforms.hpp): under a mirror of one plane axis the arc runs
+    // the other way round ([FANUC] G02 ↔ G03); R is scaled, I/J/K turned, scaled and mirrored.
+    const ProgramFrame frame = program_frame();
+    const bool turned = cw != frame.reverses(plane());
+    const motion::ArcDirection dir = turned ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
     motion::ArcOptions options;
     options.radius_tolerance = setup_.arc_tolerance;
     options.allow_negative_r = setup_.arc_negative_r;
     options.enlarge_small_r = setup_.arc_enlarge_small_r;
-    if (const auto* r = words.get('R')) return motion::arc_from_radius(start, end, plane(), dir, axis_value(*r, 'R') * scale, options);
+    if (const auto* r = words.get('R')) {
+        const double radius = axis_value(*r, 'R') * scale * frame.radius_factor(plane());
+        return motion::arc_from_radius(start, end, plane(), dir, radius, options);
+    }
     motion::Vec3 offset{};
     if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * scale;
     if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * scale;
     if (const auto* k = words.get('K')) offset.z = axis_value(*k, 'K') * scale;
-    return motion::arc_from_center(start, end, plane(), dir, rotate_vector(offset, rotation_), options);
+    return motion::arc_from_center(start, end, plane(), dir, frame.vector_to_work(offset), options);
 }
 
 void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view) {

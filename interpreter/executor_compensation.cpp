@@ -31,7 +31,8 @@ int Executor::comp_side_of_block(int current) const {
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || !(code_class_of(*c.info) & kRadiusCompCode)) continue;
         const std::string_view f = c.info->function;
-        const int left = setup_.g41_g42_swapped ? -1 : 1;   // semantics.md §12.12
+        // semantics.md §12.12; [transforms] a mirror of one plane axis swaps G41 and G42 [FANUC].
+        const int left = (setup_.g41_g42_swapped ? -1 : 1) * (program_frame().reverses(plane()) ? -1 : 1);
         side = f == fn::radius_comp_cancel ? 0 : f == fn::radius_comp_left ? left : -left;
     }
     return side;
@@ -191,7 +192,6 @@ bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool c
 bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves_words) {
     bool moves = moves_words;
     const Position start = comp_path_.value_or(position_);
-    if (scan_.classes & kPathChangerCode) note_path_changers(view);   // G43 approach, G112 ... not modelled here
     const bool circle = full_circle(words);
     const int side = comp_side_of_block(comp_side_);
     // An angle-only block of direct drawing moves without axis words (semantics.md §10.1).

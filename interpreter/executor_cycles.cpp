@@ -3,8 +3,7 @@
 // parameters and moves through the executor's move()/emit_arc() (times, soft limits, machine
 // positions as for any block). A cycle no family of cycles/ expands does not run its words as a
 // plain move (the tool would cut through the part): it says so in a message and keeps the tool
-// where it is. Codes that change the path (G41/G42, G112, G45–G48,
-// ,C ,R) let the programmed path run and say that it is not the compensated one.
+// where it is (a message with kerf_warning::not_modelled).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -25,10 +24,9 @@ namespace {
 constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-tool-rigid-tapping-cancel",
                                              "tailstock-coupling-carry", "tailstock-coupling-position"};
 
-// Function ids (docs/functions.md) whose path the trace does not model yet.
-constexpr std::string_view kPathChangers[] = {
-    "polar-coordinate-command", "scaling", "mirror",
-};
+// [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp).
+constexpr std::string_view kProgramTransforms[] = {fn::polar_coordinate_command, fn::polar_coordinate_command_cancel,
+                                                   fn::scaling, fn::scaling_cancel, fn::mirror, fn::mirror_cancel};
 
 }  // namespace
 
@@ -52,8 +50,8 @@ void Executor::classify_codes() {
         if (codes[i].binder_traits & dialects::CodeInfo::kMotionGroup) code_class_[i] |= kMotionCode;
         if (f == fn::polar_interpolation_on || f == fn::polar_interpolation_off || f == fn::cylindrical_interpolation)
             code_class_[i] |= kTransformCode;   // [polar] polar.cpp
-        if (std::find(std::begin(kPathChangers), std::end(kPathChangers), f) != std::end(kPathChangers))
-            code_class_[i] |= kPathChangerCode;
+        if (std::find(std::begin(kProgramTransforms), std::end(kProgramTransforms), f) != std::end(kProgramTransforms))
+            code_class_[i] |= kProgramTransformCode;
         if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)
             code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
         if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel ||
@@ -249,7 +247,8 @@ bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, 
     CycleContext context(*this, *cycle, view, words, has_axis_words, to);
     if (!cycles::expand(context)) {
         Event e = event_at(EventKind::message, *frame_, view);
-        e.text = fmt::format("{} ({}) is not expanded yet (cycles: next issue): the tool stays at its start point",
+        e.code = kerf_warning::not_modelled;
+        e.text = fmt::format("{} ({}) is not expanded by kerf: the tool stays at its start point",
                              cycle->spelling, cycle->function);
         emit(e);
         return true;
@@ -414,15 +413,7 @@ bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, co
     return !stopped_;
 }
 
-void Executor::note_path_changers(const ast::BlockView& view) {
-    for (const ast::CodeRef& c : scan_.g) {
-        if (c.info && (code_class_of(*c.info) & kPathChangerCode)) {
-            Event e = event_at(EventKind::message, *frame_, view);
-            e.text = fmt::format("{} ({}) is not applied yet (next issue): the trace follows the programmed path",
-                                 c.info->spelling, c.info->function);
-            emit(e);
-        }
-    }
+void Executor::note_drawing_outside_g01(const ast::BlockView& view) {
     if (drawing_words(view)) {
         // Direct drawing is a G01 feature (semantics.md §10.1); G01 blocks never come here.
         Event e = event_at(EventKind::message, *frame_, view);

@@ -84,6 +84,7 @@ std::optional<bool> Executor::axial_offset_motion(const ast::BlockView& view, co
     const bool straight = flags_.motion == fn::rapid || flags_.motion == fn::linear;
     if (code->function == fn::axial_offset_plus && moves && straight) return approach_offset_move(view, to);
     Event m = event_at(EventKind::message, *frame_, view);
+    m.code = kerf_warning::not_modelled;
     m.text = code->function == fn::axial_offset_plus
                  ? fmt::format("{} without H and without a G00/G01 move: no approach to shorten (semantics.md §9.4); "
                                "give H for an axial offset",

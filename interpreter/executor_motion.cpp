@@ -48,7 +48,7 @@ Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, d
 }
 
 Position Executor::target_position(const BlockWords& words, bool& moves) const {
-    // Built in the program's frame (G68 undone), then turned back into work coordinates.
+    // Built in the program's frame (G68, G51, G51.1 undone), then taken back into work coordinates.
     const Position start = to_program(position_);
     Position to = start;
     moves = false;
@@ -74,6 +74,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
         moves = true;
     }
+    if (polar_command_ && moves) polar_target(words, start, to);   // [transforms] G16 (executor_transforms.cpp)
     return from_program(to);
 }
 
@@ -231,7 +232,7 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     if (const auto factor = position_offset_factor(); factor && moves)
         return position_offset_move(view, words, *factor, programmed_.value_or(position_), to);
     if (moves) programmed_.reset();
-    note_path_changers(view);
+    note_drawing_outside_g01(view);
     const std::string_view motion = flags_.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
     const auto centre_word = [&](char letter) {
@@ -248,8 +249,9 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     else if (motion == fn::thread_cutting || motion == fn::variable_lead_thread_cutting) thread_move(view, words, to);
     else {
         Event e = event_at(EventKind::message, f, view);
+        if (!motion.empty()) e.code = kerf_warning::not_modelled;
         e.text = motion.empty() ? std::string("axis words without a motion code (no G00/G01/G02/G03 active): no motion")
-                                : fmt::format("motion '{}' is not expanded yet (next issue): no motion", motion);
+                                : fmt::format("motion '{}' is not expanded by kerf: no motion", motion);
         emit(e);
         return false;
     }

@@ -8,32 +8,14 @@
 
 namespace kerf::interpreter {
 
-namespace {
-
-// The plane's (first, second) axes as Position indices (motion::Axis x, y, z are 0, 1, 2 there too).
-std::pair<std::size_t, std::size_t> plane_indices(motion::Plane plane) {
-    const motion::PlaneAxes axes = motion::plane_axes(plane);
-    return {static_cast<std::size_t>(axes.first), static_cast<std::size_t>(axes.second)};
-}
-
-Position rotate(const Position& p, const Rotation& r, double angle) {
-    const auto [i, j] = plane_indices(r.plane);
-    const double u = p[i] - r.center_first;
-    const double v = p[j] - r.center_second;
-    Position out = p;
-    out[i] = r.center_first + u * std::cos(angle) - v * std::sin(angle);
-    out[j] = r.center_second + u * std::sin(angle) + v * std::cos(angle);
-    return out;
-}
-
-}  // namespace
-
+// The whole programmed-point stage (G68 with G51 scaling and G51.1 mirror image) is one map,
+// transforms.hpp; a G68 given inside G51/G51.1 has its centre in their frame (FANUC nesting).
 Position Executor::to_program(const Position& work) const {
-    return rotation_ ? rotate(work, *rotation_, -rotation_->angle) : work;
+    return program_frame().to_program(work);
 }
 
 Position Executor::from_program(const Position& program) const {
-    return rotation_ ? rotate(program, *rotation_, rotation_->angle) : program;
+    return program_frame().to_work(program);
 }
 
 // `G68 <centre words of the plane> R<angle>`: a missing centre word is the current position, a

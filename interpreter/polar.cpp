@@ -176,7 +176,7 @@ bool Executor::transform_move(const ast::BlockView& view, const BlockWords& word
     position_ = t.programmed;   // the block's words are measured from the programmed point
     const Position to = target_position(words, moves);
     position_ = real;
-    note_path_changers(view);
+    note_drawing_outside_g01(view);
     if (compensating() || (scan_.classes & kRadiusCompCode)) return transform_compensated(view, words, to, moves);
     const std::string_view motion = flags_.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;

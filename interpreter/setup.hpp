@@ -56,6 +56,7 @@ struct Setup {
     bool g28_point_in_machine = false; // G28/G30 intermediate point in machine coordinates (semantics.md §2.8)
     int g30_default_p = 2;             // G30 without P (semantics.md §2.8)
     bool g68_positive_cw = false;      // ADV400: positive G68 R turns clockwise (semantics.md §2.9, §12.4)
+    double scaling_unit = 0.001;       // G51 P/I/J/K without a point: the factor per unit ([FANUC] SCR)
     double arc_tolerance = 0.01;       // mm, end-point radius mismatch allowed (semantics.md §3)
     double transform_tolerance = 0.01; // mm, G112/G107 path → pieces of linear real-axis motion (cycles.md §18, §19)
     bool arc_negative_r = true;        // R < 0 = arc over 180° (semantics.md §3, §12.5)

@@ -56,6 +56,7 @@ enum class ArcMismatch { alarm, enlarge };              // |chord| > 2|R| (seman
 enum class CompStartup { type_a, type_b };              // cutter compensation start-up (semantics.md §6)
 enum class CompCorners { intersection, arc };          // outside corners: FANUC C or ADV400 arcs (semantics.md §6)
 enum class DwellUnit { ms, s };                         // G04 P (semantics.md §8.2)
+enum class ScalingUnit { thousandth, hundred_thousandth };   // G51 P/I/J/K without a point ([FANUC] SCR)
 enum class DwellF { seconds, reject };                  // `G4F1` (semantics.md §8.2, §12.15)
 enum class AllowanceU { diameter, radius };             // G71–G73 Δu (dialects.md §11.2, cycles.md §21.2)
 enum class CyclePQUnits { increment, micron, tenth_micron };   // G74–G76/G83/G87 P, Q (cycles.md §0, §21.1)
@@ -117,6 +118,7 @@ struct Switches {
     // Units of words
     CyclePQUnits cycle_pq_units = CyclePQUnits::increment;    // cycles.md §0, §21.1 ("tens of microns")
     DwellUnit dwell_p_unit = DwellUnit::ms;                   // semantics.md §8.2 (ADV400: s)
+    ScalingUnit scaling_unit = ScalingUnit::thousandth;       // G51 P1000 = ×1 ([FANUC] parameter 5400#7 SCR)
     DwellF dwell_f_word = DwellF::seconds;                    // semantics.md §8.2, §12.15 (`G4F1`, with a warning)
 
     // Cycles

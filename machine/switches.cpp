@@ -203,6 +203,11 @@ std::vector<SwitchDef> make_defs() {
     d.push_back(choice<DwellUnit>("dwell_p_unit", &S::dwell_p_unit, {{"ms", DwellUnit::ms}, {"s", DwellUnit::s}}, false,
                                   "semantics.md §8.2; gcode-tables.md §2 (ADV400 G04)",
                                   "G04 P in milliseconds (FANUC) or seconds (ADV400)"));
+    d.push_back(choice<ScalingUnit>("scaling_unit", &S::scaling_unit,
+                                    {{"0.001", ScalingUnit::thousandth}, {"0.00001", ScalingUnit::hundred_thousandth}},
+                                    false, "[FANUC] parameter 5400#7 SCR (gcode-tables.md §338 lists G51 as [FANUC])",
+                                    "unit of the G51 magnification words P, I, J, K written without a decimal point "
+                                    "(P1000 = ×1 with 0.001); a value with a point is the factor itself"));
     d.push_back(choice<DwellF>("dwell_f_word", &S::dwell_f_word,
                                {{"seconds", DwellF::seconds}, {"reject", DwellF::reject}}, false,
                                "semantics.md §8.2, §12.15 (`G4F1`, seed 001 §8.1)",

@@ -165,8 +165,7 @@ class NotExpanded : public DynamicCheck {
 public:
     void event(const RunContext& run, const Event& e, Reporter& out) override {
         if (e.kind != EventKind::message || e.source.file != run.checked_file) return;
-        // The interpreter's placeholder messages (interpreter/executor_cycles.cpp).
-        if (e.text.find("not expanded") == std::string::npos && e.text.find("not applied yet") == std::string::npos) return;
+        if (e.code != interpreter::kerf_warning::not_modelled) return;   // interpreter/events.hpp
         out.report(where(run, e), e.text, "the dry run does not check this motion yet");
     }
 };
@@ -202,8 +201,10 @@ void add_motion(Registry& r) {
         {"A feed move before any tool is selected.", "The control cuts with whatever tool is in the spindle or turret.",
          "G01 X10. F0.2", "T0101\nG01 X10. F0.2", "dialects.md §3.5"})));
     r.add(opt_in(dynamic_rule<NotExpanded>(rule("K5009", "not-checked-by-dry-run", S::info,
-        {"A cycle or compensation the dry run does not expand yet, so its motion is not checked.",
-         "Nothing on the machine: a note about kerf's coverage (opt-in).", "G112\nG01 X10. C5. F0.2", "", "docs/trace.md"}))));
+        {"A block whose motion the dry run does not model (a code the reference leaves open, such as seed 004's G44 "
+         "without H, or a cycle no part of kerf expands), so its motion is not checked.",
+         "Nothing on the machine: a note about kerf's coverage (opt-in).", "G44 X10. Y5.", "G43 H1 Z10.",
+         "docs/trace.md"}))));
     r.add(dynamic_rule<FirstOnly<NoSpeed, NoSpeedSay>>(rule("K5010", "spindle-without-speed", S::warning,
         {"M03/M04 with no spindle speed programmed.", "The spindle does not turn (S0) and the first cut breaks the tool.",
          "M03\nG01 X10. F0.2", "S800 M03\nG01 X10. F0.2", "semantics.md §4.1"})));

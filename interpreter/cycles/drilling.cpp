@@ -236,7 +236,9 @@ Positions positions(const Context& ctx, const Form& form) {
     const Position end = ctx.end_point();
     Positions p{start, {}};
     for (std::size_t a = 0; a < kAxisCount; ++a) {
-        if (a == form.axis || !ctx.names_axis(kAxisLetters[a])) continue;
+        // An axis the block does not name moves too when the programmed point is transformed
+        // (G16 polar angle, G68, G51, G51.1: executor_transforms.cpp); otherwise end = start there.
+        if (a == form.axis || (!ctx.names_axis(kAxisLetters[a]) && end[a] == start[a])) continue;
         p.first[a] = end[a];
         const bool inc = ctx.incremental() || ctx.increment(kAxisLetters[a]).has_value();
         if (inc) p.step[a] = end[a] - start[a];

@@ -197,6 +197,23 @@ inline std::optional<double> x_at(const Run& r, double tag) {
     return x;
 }
 
+// A point of a plane: X and the second axis (Y on mills, Z with check_path's `second`).
+struct Pt {
+    double x, y;
+};
+
+// The end points of the moves `m`, in order, to 0.001 (REQUIRE the count, two CHECKs a move).
+inline void check_path(const std::vector<Event>& m, std::initializer_list<Pt> expected, std::size_t second = Y) {
+    REQUIRE(m.size() == expected.size());
+    std::size_t i = 0;
+    for (const Pt& p : expected) {
+        INFO("move " << i << " on line " << m[i].source.line << ": " << m[i].end[X] << " " << m[i].end[second]);
+        CHECK(m[i].end[X] == Approx(p.x).margin(0.001));
+        CHECK(m[i].end[second] == Approx(p.y).margin(0.001));
+        ++i;
+    }
+}
+
 // --- outcome ------------------------------------------------------------------------------------------
 
 inline std::string alarm_list(const Run& r) {

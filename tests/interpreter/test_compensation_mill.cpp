@@ -10,21 +10,6 @@ using namespace kerf::test;
 
 namespace {
 
-struct Pt {
-    double x, y;
-};
-
-void check_path(const std::vector<Event>& m, std::initializer_list<Pt> expected, std::size_t second = Y) {
-    REQUIRE(m.size() == expected.size());
-    std::size_t i = 0;
-    for (const Pt& p : expected) {
-        INFO("move " << i << " on line " << m[i].source.line << ": " << m[i].end[X] << " " << m[i].end[second]);
-        CHECK(m[i].end[X] == Approx(p.x).margin(0.001));
-        CHECK(m[i].end[second] == Approx(p.y).margin(0.001));
-        ++i;
-    }
-}
-
 void seed_registers(Setup& s) {
     s.tools[1].radius = 15;   // D1, ex. 2 finishing
     s.tools[2].radius = 20;   // D02, ex. 2 roughing

@@ -65,6 +65,7 @@ const std::vector<Expectation>& expectations() {
         {"cycle_pq_units", "increment", "increment", {}},                // cycles.md §0
         {"dwell_p_unit", "ms", "ms", {{"adv400-mill", "s"}, {"adv400-lathe", "s"}}},   // semantics.md §8.2
         {"dwell_f_word", "seconds", "seconds", {}},                      // semantics.md §12.15
+        {"scaling_unit", "0.001", "0.001", {}},                          // [FANUC] parameter 5400#7 SCR
         {"finish_allowance_u", "diameter", "diameter", {}},              // dialects.md §11.2
         {"rough_relief", "feed", "feed", {}},                            // cycles.md §2 step 6
         {"rough_return", "simultaneous", "simultaneous", {}},            // cycles.md §21.3

@@ -4,7 +4,7 @@
 # (line, the text the finding starts at, severity). The column is where that text starts on the
 # line: the position is what I (the author) say the defect is, not what kerf prints.
 import os, sys
-L, M = "fanuc-lathe-a", "fanuc-mill"
+L, M, ISO = "fanuc-lathe-a", "fanuc-mill", "iso-legacy-mill"
 E, W, I, H = "error", "warning", "info", "hint"
 def prog(*lines): return "O0001\n" + "\n".join(lines) + "\nM30\n"
 F = {
@@ -74,7 +74,7 @@ F = {
  "K5007-rapid-at-cut-depth": (M, prog("T1 M06", "G00 X0. Y0. Z5.", "G01 Z-5. F100.", "G01 X50. Y50.", "G00 X25. Y20."),
                               prog("T1 M06", "G00 X0. Y0. Z5.", "G01 Z-5. F100.", "G01 X50. Y50.", "G00 Z5.", "G00 X25. Y20."), [(6, "G00", W)]),
  "K5008-cut-without-tool": (L, prog("G01 X10. Z-1. F0.2"), prog("T0101", "G01 X10. Z-1. F0.2"), [(2, "G01", W)]),
- "K5009-not-checked-by-dry-run": (M, prog("G00 X0. Y0.", "G51.1 X0.", "G01 X10. Y5. F100.", "G50.1 X0."), prog("G00 X0. Y0.", "G01 X-10. Y5. F100."), [(3, "G51.1", I)]),
+ "K5009-not-checked-by-dry-run": (ISO, prog("G00 X0. Y0.", "G43 D1", "G01 X10. Y5. F100."), prog("G00 X0. Y0.", "G01 X10. Y5. F100."), [(3, "G43", I)]),
  "K5010-spindle-without-speed": (L, prog("M03"), prog("G97 S800 M03"), [(2, "M03", W)]),
  "K5011-css-without-clamp": (L, prog("G96 S200 M03"), prog("G50 S2000", "G96 S200 M03"), [(2, "G96", W)]),
  "K5012-thread-in-css": (L, prog("G50 S2000", "G96 S150 M03", "G00 X20. Z2.", "G32 Z-20. F1.5"), prog("G50 S2000", "G97 S800 M03", "G00 X20. Z2.", "G32 Z-20. F1.5"), [(5, "G32", W)]),
