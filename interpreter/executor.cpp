@@ -269,9 +269,12 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
     if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
-    if ((scan_.classes & kProgramTransformCode) && !apply_program_transforms(view, words)) return false;
-    if (!apply_coordinate_operations(view, words) || stopped_) return false;
-    const bool moved = apply_motion(view, words);
+    // A block that sets a frame (G10, G50/G92 X Z, G52, G68, G51, G51.1) does not move; its M
+    // codes still run (G68 X0 Y0 R45 M08 turns the coolant on).
+    const bool frame_only = ((scan_.classes & kProgramTransformCode) && !apply_program_transforms(view, words)) ||
+                            !apply_coordinate_operations(view, words);
+    if (stopped_) return false;
+    const bool moved = !frame_only && apply_motion(view, words);
     if (stopped_) return moved;
     apply_dwell(view, words);
     apply_m_codes(frame, view, words);   // may end the program: `frame` is gone after M30

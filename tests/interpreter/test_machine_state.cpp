@@ -398,3 +398,18 @@ TEST_CASE("soft limits check the whole arc, not only its end", "[machine-state]"
     REQUIRE(r.result.alarms.size() == 1);
     CHECK(r.result.alarms[0].code == 500);
 }
+
+// A block that sets a frame does not move, but its M codes run: the coolant of `G68 ... M08`
+// (and of G52 and G51.1 blocks, same path in executor.cpp apply_block_words) comes on.
+TEST_CASE("M codes in a G68, G52 or G51.1 block still run", "[machine-state]") {
+    for (const char* frame : {"G68 X0. Y0. R45.", "G52 X10. Y0.", "G51.1 X0."}) {
+        INFO(frame);
+        const Run r = run(std::string("O1\nG17 G90 G0 X0. Y0.\n") + frame + " M08\nG1 X10. F100.\nM09\nM30\n", "fanuc-mill");
+        require_clean(r);
+        const auto coolant = of_kind(r, EventKind::coolant);
+        REQUIRE(coolant.size() == 2);
+        CHECK(coolant[0].source.line == 3);
+        CHECK(coolant[0].code == 8);
+        CHECK(moves_on_line(r, 3).empty());
+    }
+}
