@@ -29,6 +29,13 @@ Run run_polar(const std::string& text, double radius) {
     });
 }
 
+// The last piece of a block ends on the plane point (x, y).
+void check_plane_end(const std::vector<Event>& m, double x, double y) {
+    REQUIRE(!m.empty());
+    CHECK(plane_x(m.back()) == Approx(x).margin(0.001));
+    CHECK(plane_y(m.back()) == Approx(y).margin(0.001));
+}
+
 bool has_alarm(const Run& r, int number) {
     for (const Event& e : r.events)
         if (e.kind == EventKind::alarm && e.code == number) return true;
@@ -93,8 +100,7 @@ TEST_CASE("G112 with G42: the square's tool path is offset outside by the cutter
             INFO("piece " << i);
             CHECK((side.fixed == 'x' ? plane_x(m[i]) : plane_y(m[i])) == Approx(side.value).margin(0.001));
         }
-        CHECK(plane_x(m.back()) == Approx(side.end_x).margin(0.001));
-        CHECK(plane_y(m.back()) == Approx(side.end_y).margin(0.001));
+        check_plane_end(m, side.end_x, side.end_y);
     }
     // The cancel ends on the programmed point X40 C0: (20, 0).
     const auto cancel = moves_on_line(r, 11);
@@ -111,10 +117,7 @@ TEST_CASE("G112 with G42 and a zero radius runs the programmed square", "[polar]
     const double corners[][3] = {{5, 10, -10}, {6, 10, 10}, {7, -10, 10}, {8, -10, -10}, {9, 10, -10}, {10, 10, 0}};
     for (const auto& [line, x, y] : corners) {
         INFO("line " << line);
-        const auto m = moves_on_line(r, static_cast<std::uint32_t>(line));
-        REQUIRE(!m.empty());
-        CHECK(plane_x(m.back()) == Approx(x).margin(0.001));
-        CHECK(plane_y(m.back()) == Approx(y).margin(0.001));
+        check_plane_end(moves_on_line(r, static_cast<std::uint32_t>(line)), x, y);
     }
 }
 
@@ -130,23 +133,16 @@ TEST_CASE("G112 with G41 on an arc: the tool's arc is the programmed one less th
                             "G40 X-60\nG113\nM30\n",
                             2);
     require_clean(r);
-    const auto up = moves_on_line(r, 5);
-    REQUIRE(!up.empty());
-    CHECK(plane_x(up.back()) == Approx(18).margin(0.001));
-    CHECK(plane_y(up.back()) == Approx(0).margin(0.001));
+    check_plane_end(moves_on_line(r, 5), 18, 0);
     const auto arc = moves_on_line(r, 6);
     REQUIRE(arc.size() >= 4);   // no polar piece turns more than 45° (motion/polar.hpp)
     for (const Event& e : arc) CHECK(std::hypot(plane_x(e), plane_y(e)) == Approx(18).margin(0.001));
-    CHECK(plane_x(arc.back()) == Approx(-18).margin(0.001));
-    CHECK(plane_y(arc.back()) == Approx(0).margin(0.001));
+    check_plane_end(arc, -18, 0);
     CHECK(arc.back().end[C] == Approx(180).margin(0.001));
     const auto down = moves_on_line(r, 7);
     REQUIRE(!down.empty());
     for (const Event& e : down) CHECK(plane_x(e) == Approx(-18).margin(0.001));
-    const auto cancel = moves_on_line(r, 8);
-    REQUIRE(!cancel.empty());
-    CHECK(plane_x(cancel.back()) == Approx(-30).margin(0.001));
-    CHECK(plane_y(cancel.back()) == Approx(-20).margin(0.001));
+    check_plane_end(moves_on_line(r, 8), -30, -20);
 }
 
 TEST_CASE("G112 or G113 while the compensation holds an offset is alarm 145", "[polar][compensation]") {
@@ -167,10 +163,6 @@ TEST_CASE("G112 with G42: a block with only Z keeps the offset", "[polar][compen
     const auto plunge = moves_on_line(r, 6);
     REQUIRE(plunge.size() == 1);
     CHECK(plunge[0].end[Z] == Approx(-2));
-    CHECK(plane_x(plunge[0]) == Approx(12).margin(0.001));
-    CHECK(plane_y(plunge[0]) == Approx(-10).margin(0.001));
-    const auto side = moves_on_line(r, 7);
-    REQUIRE(!side.empty());
-    CHECK(plane_x(side.back()) == Approx(12).margin(0.001));
-    CHECK(plane_y(side.back()) == Approx(12).margin(0.001));
+    check_plane_end(plunge, 12, -10);
+    check_plane_end(moves_on_line(r, 7), 12, 12);
 }
