@@ -350,6 +350,7 @@ private:
     bool read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
                               cycles::Profile& profile, std::uint32_t last);
     bool cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view);
+    motion::ArcOptions computed_arc_options() const;   // arcs kerf computed: radius check ≥ 0.1 µm
     // --- direct drawing (executor_drawing.cpp; the resolver is direct_drawing.hpp) ---------------
     // The programmed point when the tool stands elsewhere (past a corner of direct drawing): the
     // next block's coordinates are measured from it (semantics.md §10.1).
@@ -428,6 +429,9 @@ private:
                                                       Position& programmed_end);
     // The next motion block's first element (look-ahead; up to two blocks without motion between).
     std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from);
+    std::optional<compensation::Step> comp_step(const compensation::Programmed& current,
+                                                const std::optional<compensation::Programmed>& next,
+                                                const ast::BlockView& view);
     bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
                         const ast::BlockView& view);
     // A G70 finishing path under G41/G42: each element offset with the next one as look-ahead.
@@ -510,8 +514,8 @@ private:
     void transform_arc_alarm(const ast::BlockView& view, const motion::ArcResult& geometry);
     static motion::P2 arc_point(const motion::Arc& arc, double u);
     // G41/G42 in the mode (polar_compensation.cpp): the element of the plane, the compensated block.
-    std::optional<compensation::Programmed> transform_element(const BlockWords& words, const Position& start,
-                                                              const Position& to, int side, double radius, bool quiet);
+    std::optional<motion::Element> transform_element(const BlockWords& words, const Position& start, const Position& to,
+                                                     bool quiet);
     bool transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves);
     void run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to, const ast::BlockView& view);
     bool transform_switch_allowed(const ast::BlockView& view, const std::string& spelling);

@@ -78,9 +78,9 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
     programmed_end = to;
     const std::string_view motion = flags_.motion;
     if (transform_) {   // [polar] the Cartesian plane of G112/G107 (polar_compensation.cpp)
-        const auto element = transform_element(words, start, to, side, radius, quiet);
+        const auto element = transform_element(words, start, to, quiet);
         if (!element) return std::nullopt;
-        pieces.push_back({*element, to});
+        pieces.push_back({with_comp(*element, side, radius), to});
         return pieces;
     }
     if (motion == fn::linear && drawing_words(view) && quiet) {
@@ -174,6 +174,17 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
     return std::nullopt;
 }
 
+// The state machine's moves for `current`; nullopt after its alarm (034, 041), which forgets the
+// compensation.
+std::optional<compensation::Step> Executor::comp_step(const Programmed& current, const std::optional<Programmed>& next,
+                                                      const ast::BlockView& view) {
+    compensation::Step step = radius_comp_.step(current, next);
+    if (!step.alarm) return step;
+    radius_comp_.reset();
+    alarm(*frame_, view, step.alarm->number, step.alarm->text);
+    return std::nullopt;
+}
+
 bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
                               const ast::BlockView& view) {
     const motion::P2 tip = tip_offset();
@@ -227,13 +238,9 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
                                                                          : comp_look_ahead(scan_.block, programmed_end);
         if (stopped_) return false;   // the block read ahead raised an alarm
         const bool cancels = radius_comp_.engaged() && cur.side == 0;
-        const compensation::Step step = radius_comp_.step(cur, next);
-        if (step.alarm) {
-            radius_comp_.reset();
-            alarm(*frame_, view, step.alarm->number, step.alarm->text);
-            return false;
-        }
-        if (!run_comp_moves(step, rapid, cancels, (*pieces)[i].end, view)) return true;
+        const auto step = comp_step(cur, next, view);
+        if (!step) return false;
+        if (!run_comp_moves(*step, rapid, cancels, (*pieces)[i].end, view)) return true;
     }
     if (radius_comp_.engaged()) {
         comp_path_ = pieces->empty() ? start : pieces->back().end;
@@ -266,14 +273,10 @@ bool Executor::compensate_path(const std::vector<cycles::ProfileMove>& path, con
         std::optional<Programmed> next;
         for (std::size_t k = i + 1; k < elements.size() && !next; ++k)
             if (elements[k].moves()) next = elements[k];
-        const compensation::Step step = radius_comp_.step(elements[i], next);
-        if (step.alarm) {
-            radius_comp_.reset();
-            alarm(*frame_, view, step.alarm->number, step.alarm->text);
-            return false;
-        }
+        const auto step = comp_step(elements[i], next, view);
+        if (!step) return false;
         if (path[i].feed) feed_ = *path[i].feed;
-        if (!run_comp_moves(step, path[i].kind == EventKind::rapid, false, path[i].end, view)) return false;
+        if (!run_comp_moves(*step, path[i].kind == EventKind::rapid, false, path[i].end, view)) return false;
     }
     comp_path_ = path.back().end;
     programmed_ = path.back().end;

@@ -395,31 +395,28 @@ bool Executor::read_profile_drawing(const ast::BlockView& block, const BlockWord
     return true;
 }
 
+// An arc kerf computed (a cycle's, a compensated tool path's): its ends and centre carry rounding
+// of the computation, not the program's digits, so the radius check is at least 0.1 µm.
+motion::ArcOptions Executor::computed_arc_options() const {
+    motion::ArcOptions options;
+    options.radius_tolerance = std::max(setup_.arc_tolerance, 1e-4);
+    return options;
+}
+
 // An arc of a cycle from the current point to `to` about `center` (work coordinates).
 bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view) {
     const double scale = unit_scale();
     const motion::Vec3 start = geometric_mm(position_, setup_.diameter_x, scale);
     const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
     const motion::Vec3 c = geometric_mm(center, setup_.diameter_x, scale);
-    motion::ArcOptions options;
-    options.radius_tolerance = std::max(setup_.arc_tolerance, 1e-4);
     const motion::ArcResult arc = motion::arc_from_center(start, end, plane(), cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw,
-                                                          c - start, options);
+                                                          c - start, computed_arc_options());
     if (!arc) {
         move(EventKind::linear, to, *frame_, view);   // a degenerate piece of an arc: its chord
         return !stopped_;
     }
     emit_arc(arc.arc(), to, view);
     return !stopped_;
-}
-
-void Executor::note_drawing_outside_g01(const ast::BlockView& view) {
-    if (drawing_words(view)) {
-        // Direct drawing is a G01 feature (semantics.md §10.1); G01 blocks never come here.
-        Event e = event_at(EventKind::message, *frame_, view);
-        e.text = "direct drawing (,A ,C ,R) in a block that is not G01: the words are ignored (semantics.md §10.1)";
-        emit(e);
-    }
 }
 
 }  // namespace kerf::interpreter

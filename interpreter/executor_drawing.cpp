@@ -143,4 +143,13 @@ bool Executor::draw_block(const ast::BlockView& view, const BlockWords& words, c
     return !r->moves.empty();
 }
 
+void Executor::note_drawing_outside_g01(const ast::BlockView& view) {
+    if (drawing_words(view)) {
+        // Direct drawing is a G01 feature (semantics.md §10.1); G01 blocks never come here.
+        Event e = event_at(EventKind::message, *frame_, view);
+        e.text = "direct drawing (,A ,C ,R) in a block that is not G01: the words are ignored (semantics.md §10.1)";
+        emit(e);
+    }
+}
+
 }  // namespace kerf::interpreter

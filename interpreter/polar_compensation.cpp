@@ -28,11 +28,10 @@ constexpr int kIllegalConditions = 145;
 
 // The block's element in the Cartesian plane from the programmed point `start` (read ahead too:
 // comp_pieces comes here while a mode is on).
-std::optional<Programmed> Executor::transform_element(const BlockWords& words, const Position& start, const Position& to,
-                                                       int side, double radius, bool quiet) {
+std::optional<motion::Element> Executor::transform_element(const BlockWords& words, const Position& start,
+                                                            const Position& to, bool quiet) {
     const motion::P2 a = transform_point(start), b = transform_point(to);
     const std::string_view motion = flags_.motion;
-    const int signed_side = radius < 0 ? -side : side;   // a negative radius puts the tool on the other side
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
         const motion::ArcResult geometry = transform_arc(motion == fn::circular_cw, a, b, words);
         if (!geometry) {
@@ -40,9 +39,9 @@ std::optional<Programmed> Executor::transform_element(const BlockWords& words, c
             return std::nullopt;
         }
         const motion::Vec3 c = geometry.arc().center;
-        return Programmed{{a, b, true, {c.x, c.y}, !geometry.arc().cw}, signed_side, std::fabs(radius)};
+        return motion::Element{a, b, true, {c.x, c.y}, !geometry.arc().cw};
     }
-    return Programmed{{a, b, false, {}, true}, signed_side, std::fabs(radius)};
+    return motion::Element{a, b, false, {}, true};
 }
 
 bool Executor::transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves) {
@@ -72,13 +71,9 @@ bool Executor::transform_compensated(const ast::BlockView& view, const BlockWord
     const Programmed& current = pieces->front().programmed;
     const std::optional<Programmed> next = comp_look_ahead(scan_.block, to);
     if (stopped_) return false;   // the block read ahead raised an alarm
-    const compensation::Step step = radius_comp_.step(current, next);
-    if (step.alarm) {
-        radius_comp_.reset();
-        alarm(*frame_, view, step.alarm->number, step.alarm->text);
-        return false;
-    }
-    run_transform_moves(step, kind, to, view);
+    const auto step = comp_step(current, next, view);
+    if (!step) return false;
+    run_transform_moves(*step, kind, to, view);
     if (stopped_) return true;
     t.programmed = to;
     if (!radius_comp_.engaged()) t.tool.reset();   // cancelled: on the programmed point again
@@ -98,12 +93,10 @@ void Executor::run_transform_moves(const compensation::Step& step, EventKind kin
         std::function<motion::P2(double)> path = [a = tool, b = m.end](double u) { return a + (b - a) * u; };
         double length = motion::norm(m.end - tool);
         if (m.arc) {
-            motion::ArcOptions options;
-            options.radius_tolerance = std::max(setup_.arc_tolerance, 1e-4);
             const motion::ArcResult arc =
                 motion::arc_from_center({tool.a, tool.b, 0}, {m.end.a, m.end.b, 0}, motion::Plane::xy,
                                         m.ccw ? motion::ArcDirection::ccw : motion::ArcDirection::cw,
-                                        {m.center.a - tool.a, m.center.b - tool.b, 0}, options);
+                                        {m.center.a - tool.a, m.center.b - tool.b, 0}, computed_arc_options());
             if (arc) {   // a degenerate arc piece runs as its chord
                 path = [g = arc.arc()](double u) { return arc_point(g, u); };
                 length = motion::length(arc.arc());
