@@ -45,16 +45,9 @@ namespace {
 using kerf::bench::Meter;
 namespace interp = kerf::interpreter;
 
-std::string bench_file_path() {
-    const char* env = std::getenv("KERF_DRYRUN_FILE");
-    return env && *env ? env : "bench-dryrun-100mb.nc";
-}
+std::string bench_file_path() { return kerf::bench::env_or("KERF_DRYRUN_FILE", "bench-dryrun-100mb.nc"); }
 
-int big_iterations() {
-    const char* env = std::getenv("KERF_BENCH_ITERS");
-    const int n = env ? std::atoi(env) : 0;
-    return n > 0 ? n : 3;
-}
+int big_iterations() { return kerf::bench::big_iterations(3); }
 
 const kerf::bench::Input& input() {
     static const kerf::bench::Input in = kerf::bench::read_input(bench_file_path(), "set KERF_DRYRUN_FILE, or generate it: python3 bench/gen_mill.py bench-dryrun-100mb.nc 100 --runnable");

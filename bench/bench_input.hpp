@@ -4,6 +4,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -12,6 +13,19 @@
 #include "dialects/dialect.hpp"
 
 namespace kerf::bench {
+
+// The environment variable `name`, or `fallback` when it is unset or empty.
+inline std::string env_or(const char* name, const char* fallback) {
+    const char* env = std::getenv(name);
+    return env && *env ? env : fallback;
+}
+
+// KERF_BENCH_ITERS when it is a positive number, else `fallback`: the big benchmarks' iterations.
+inline int big_iterations(int fallback) {
+    const char* env = std::getenv("KERF_BENCH_ITERS");
+    const int n = env ? std::atoi(env) : 0;
+    return n > 0 ? n : fallback;
+}
 
 struct Input {
     std::optional<std::string> text;

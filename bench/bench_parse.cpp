@@ -40,16 +40,9 @@
 
 namespace {
 
-std::string bench_file_path() {
-    const char* env = std::getenv("KERF_BENCH_FILE");
-    return env && *env ? env : "bench-100mb.nc";
-}
+std::string bench_file_path() { return kerf::bench::env_or("KERF_BENCH_FILE", "bench-100mb.nc"); }
 
-int big_iterations() {
-    const char* env = std::getenv("KERF_BENCH_ITERS");
-    const int n = env ? std::atoi(env) : 0;
-    return n > 0 ? n : 5;
-}
+int big_iterations() { return kerf::bench::big_iterations(5); }
 
 // The input, read once. nullopt (with `error` set) if the file is missing or empty.
 const kerf::bench::Input& input() {
