@@ -4,6 +4,9 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
+#include <tuple>
+
 #include "analyzer/registry.hpp"
 
 namespace kerf::analyzer {
@@ -16,42 +19,46 @@ const std::optional<Severity>* lookup(const CheckConfig& c, const Rule& rule) {
     return nullptr;
 }
 
-std::string where(std::string_view source, const toml::source_region& r) {
-    return fmt::format("{}:{}:{}", source, r.begin.line, r.begin.column);
+void error(ConfigResult& r, const toml::source_region& at, std::string message) {
+    r.errors.push_back({static_cast<int>(at.begin.line), static_cast<int>(at.begin.column), std::move(message)});
 }
 
-std::vector<std::string> strings(const toml::node* node, std::string_view source, std::string_view key,
-                                 std::vector<std::string>& errors) {
+std::vector<std::string> strings(const toml::node* node, std::string_view key, ConfigResult& r) {
     std::vector<std::string> out;
     if (!node) return out;
     const toml::array* array = node->as_array();
     if (!array) {
-        errors.push_back(fmt::format("{}: check.{} must be an array of glob strings", where(source, node->source()), key));
+        error(r, node->source(), fmt::format("check.{}: expected an array of glob strings, e.g. [\"**/*.nc\"]", key));
         return out;
     }
     for (const toml::node& item : *array) {
-        if (const auto s = item.value<std::string>()) out.push_back(*s);
-        else errors.push_back(fmt::format("{}: check.{}: a glob must be a string", where(source, item.source()), key));
+        if (const auto s = item.value<std::string>(); s && item.is_string()) out.push_back(*s);
+        else error(r, item.source(), fmt::format("check.{}: a glob must be a string", key));
     }
     return out;
 }
 
-void read_rules(const toml::table& table, std::string_view source, ConfigResult& result) {
+void read_rules(const toml::table& table, std::string_view where, ConfigResult& result) {
     for (const auto& [key, node] : table) {
         const std::string_view id = key.str();
-        const std::optional<std::string> value = node.value<std::string>();
+        const std::optional<std::string> value = node.is_string() ? node.value<std::string>() : std::nullopt;
         if (!builtin_rules().find(id)) {
-            result.errors.push_back(fmt::format("{}: unknown rule '{}' (kerf check --list-rules lists them)",
-                                                where(source, key.source()), id));
+            error(result, key.source(), fmt::format("{}.{}: unknown rule (`kerf check --list-rules` lists the ids and names)", where, id));
             continue;
         }
         if (!value || (*value != "off" && !parse_severity(*value))) {
-            result.errors.push_back(fmt::format("{}: rule '{}': use \"error\", \"warning\", \"info\", \"hint\" or \"off\"",
-                                                where(source, node.source()), id));
+            error(result, node.source(), fmt::format("{}.{}: expected \"error\", \"warning\", \"info\", \"hint\" or \"off\"", where, id));
             continue;
         }
         result.config.rules[std::string(id)] = parse_severity(*value);
     }
+}
+
+const toml::table* table_at(const toml::node* node, std::string_view key, ConfigResult& r) {
+    if (!node) return nullptr;
+    if (const toml::table* t = node->as_table()) return t;
+    error(r, node->source(), fmt::format("{}: expected a table ([{}])", key, key));
+    return nullptr;
 }
 
 }  // namespace
@@ -74,13 +81,21 @@ Severity CheckConfig::severity(const Rule& rule) const {
     return s && s->has_value() ? **s : rule.severity;
 }
 
+namespace {
+
+const std::string* first_match(const std::vector<std::string>& globs, std::string_view relative) {
+    for (const std::string& g : globs)
+        if (glob_match(g, relative)) return &g;
+    return nullptr;
+}
+
+}  // namespace
+
+const std::string* CheckConfig::included_by(std::string_view relative) const { return first_match(include, relative); }
+const std::string* CheckConfig::excluded_by(std::string_view relative) const { return first_match(exclude, relative); }
+
 bool CheckConfig::selects(std::string_view relative) const {
-    bool in = include.empty();
-    for (const std::string& g : include) in = in || glob_match(g, relative);
-    if (!in) return false;
-    for (const std::string& g : exclude)
-        if (glob_match(g, relative)) return false;
-    return true;
+    return (include.empty() || included_by(relative)) && !excluded_by(relative);
 }
 
 bool glob_match(std::string_view p, std::string_view s) {
@@ -104,21 +119,28 @@ bool glob_match(std::string_view p, std::string_view s) {
     return glob_match(p.substr(1), s.substr(1));
 }
 
-ConfigResult parse_check_config(std::string_view text, std::string_view source) {
+ConfigResult parse_check_config(std::string_view text) {
     ConfigResult result;
     toml::table root;
     try {
-        root = toml::parse(text, source);
+        root = toml::parse(text);
     } catch (const toml::parse_error& e) {
-        result.errors.push_back(fmt::format("{}: {}", where(source, e.source()), e.description()));
+        error(result, e.source(), std::string(e.description()));
         return result;
     }
-    if (const toml::table* check = root["check"].as_table()) {
-        result.config.include = strings(check->get("include"), source, "include", result.errors);
-        result.config.exclude = strings(check->get("exclude"), source, "exclude", result.errors);
-        if (const toml::table* rules = (*check)["rules"].as_table()) read_rules(*rules, source, result);
+    if (const toml::table* check = table_at(root.get("check"), "check", result)) {
+        for (const auto& [key, node] : *check)
+            if (key.str() != "include" && key.str() != "exclude" && key.str() != "rules")
+                error(result, key.source(), fmt::format("check.{}: unknown key; the keys of [check] are include, exclude and rules", key.str()));
+        result.config.include = strings(check->get("include"), "include", result);
+        result.config.exclude = strings(check->get("exclude"), "exclude", result);
+        if (const toml::table* rules = table_at(check->get("rules"), "check.rules", result)) read_rules(*rules, "check.rules", result);
     }
-    if (const toml::table* rules = root["rules"].as_table()) read_rules(*rules, source, result);
+    if (const toml::table* rules = table_at(root.get("rules"), "rules", result)) read_rules(*rules, "rules", result);
+    // In the order of the file (a TOML table iterates by key).
+    std::sort(result.errors.begin(), result.errors.end(), [](const ConfigError& a, const ConfigError& b) {
+        return std::tie(a.line, a.column) < std::tie(b.line, b.column);
+    });
     return result;
 }
 

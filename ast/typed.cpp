@@ -138,22 +138,36 @@ void ProgramSplitter::feed(const SyntaxTree& tree, std::uint32_t local, std::uin
         current_.first_block = block;
         open_ = true;
     };
+    // The O word that starts a program: the first word of a program_start block, or the word right
+    // after the '%' of a percent block (`%O0003(...)`: the tape's leader and the program number on
+    // one line start program O0003 as on the control).
+    auto o_word = [&]() -> std::int32_t {
+        for (std::uint32_t t = b.first_token; t < tree.block_token_end(local); ++t) {
+            const Token& token = tree.tokens[t];
+            if (token.kind == TokenKind::word && token.letter == 'O') return static_cast<std::int32_t>(t);
+            if (b.kind == BlockKind::percent && token.kind != TokenKind::percent && token.kind != TokenKind::comment &&
+                token.kind != TokenKind::bom)
+                return -1;
+        }
+        return -1;
+    };
+    auto start = [&](std::int32_t o) {
+        close(block);
+        current_ = Program{};
+        current_.first_block = block;
+        current_.o_token = o;
+        if (o >= 0) current_.number = integer_value(tree, tree.tokens[static_cast<std::size_t>(o)]);
+        open_ = true;
+        has_code_ = true;
+    };
     switch (b.kind) {
         case BlockKind::program_start:
-            close(block);
-            current_ = Program{};
-            current_.first_block = block;
-            for (std::uint32_t t = b.first_token; t < tree.block_token_end(local); ++t) {
-                if (tree.tokens[t].kind == TokenKind::word && tree.tokens[t].letter == 'O') {
-                    current_.o_token = static_cast<std::int32_t>(t);
-                    current_.number = integer_value(tree, tree.tokens[t]);
-                    break;
-                }
-            }
-            open_ = true;
-            has_code_ = true;
+            start(o_word());
             break;
         case BlockKind::percent:
+            close(block);
+            if (const std::int32_t o = o_word(); o >= 0) start(o);
+            break;
         case BlockKind::tail:
             close(block);
             break;

@@ -5,7 +5,8 @@
 
 #include "analyzer/output.hpp"
 #include "cli/commands.hpp"
-#include "cli/config.hpp"
+#include "cli/progress.hpp"
+#include "project/workspace.hpp"
 
 namespace kerf::cli {
 
@@ -40,8 +41,9 @@ int run_explain(const ExplainOptions& o) {
         std::cout << analyzer::format_rule_docs(*rule);
         return kExitClean;
     }
-    RegistryResult reg = make_registry({o.dialect_files.begin(), o.dialect_files.end()});
-    for (const std::string& e : reg.errors) std::cerr << "kerf: " << e << "\n";
+    const project::DialectRegistry reg =
+        project::load_dialects({o.dialect_files.begin(), o.dialect_files.end()}, project::DiskFileSystem());
+    ProblemPrinter().print(reg.problems);
     const dialects::Dialect* d = reg.registry.find(o.dialect);
     if (!d) {
         std::cerr << fmt::format("kerf: unknown dialect '{}'; `kerf dialects` lists them\n", o.dialect);
@@ -85,8 +87,9 @@ Command add_dialects_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("dialects", "list the dialects");
     cmd->add_option("--dialect-file", *files, "also load a dialect data file (TOML)");
     return [files] {
-        RegistryResult reg = make_registry({files->begin(), files->end()});
-        for (const std::string& e : reg.errors) std::cerr << "kerf: " << e << "\n";
+        const project::DialectRegistry reg =
+            project::load_dialects({files->begin(), files->end()}, project::DiskFileSystem());
+        const bool errors = ProblemPrinter().print(reg.problems);
         for (const std::string& id : reg.registry.ids()) {
             const dialects::Dialect* d = reg.registry.find(id);
             std::size_t g = 0, m = 0;
@@ -94,7 +97,7 @@ Command add_dialects_command(CLI::App& app) {
             std::cout << fmt::format("{:<18} {:<5} {:>3} G {:>3} M  {}\n", id,
                                      d->machine == dialects::MachineKind::lathe ? "lathe" : "mill", g, m, d->name);
         }
-        return reg.errors.empty() ? kExitClean : kExitUsage;
+        return errors ? kExitUsage : kExitClean;
     };
 }
 

@@ -8,9 +8,10 @@
 #include "ast/dump.hpp"
 #include "ast/printer.hpp"
 #include "cli/commands.hpp"
-#include "cli/config.hpp"
-#include "grammar/detect.hpp"
+#include "cli/dry_run.hpp"
+#include "cli/progress.hpp"
 #include "grammar/parse.hpp"
+#include "project/workspace.hpp"
 
 namespace kerf::cli {
 
@@ -34,43 +35,27 @@ void print_diagnostic(const std::string& file, const ast::LineIndex& lines, cons
 }
 
 int run_parse(const ParseOptions& o) {
-    std::string error;
     const bool from_stdin = o.file == "-";
     std::optional<std::string> text;
     if (from_stdin) {
         text = std::string(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
     } else {
-        text = read_file(o.file, error);
+        project::ReadResult read = project::DiskFileSystem().read(o.file);
+        if (!read.text) {
+            std::cerr << "kerf: " << read.error << "\n";
+            return kExitUsage;
+        }
+        text = std::move(read.text);
     }
-    if (!text) {
-        std::cerr << "kerf: " << error << "\n";
-        return kExitUsage;
-    }
-    std::vector<std::string> config_errors;
-    const ProjectConfig config = find_config(from_stdin ? std::filesystem::current_path() : std::filesystem::path(o.file), config_errors);
-    std::vector<std::filesystem::path> files(o.dialect_files.begin(), o.dialect_files.end());
-    files.insert(files.end(), config.dialect_files.begin(), config.dialect_files.end());
-    RegistryResult reg = make_registry(files);
-    for (const std::string& e : config_errors) std::cerr << "kerf: " << e << "\n";
-    for (const std::string& e : reg.errors) std::cerr << "kerf: " << e << "\n";
-    if (!reg.errors.empty()) return kExitUsage;
-
-    // The flag wins over the config, the config over detection.
-    std::string id = o.dialect;
-    std::string why;
-    if (id == "auto" && !config.dialect.empty() && config.dialect != "auto") {
-        id = config.dialect;
-        why = fmt::format("dialect {} from {}", id, config.path->string());
-    }
-    if (id == "auto") {
-        const grammar::Detection d = grammar::detect_dialect(*text);
-        id = d.dialect;
-        why = fmt::format("dialect {} detected (score {})", id, d.confidence);
-        for (const std::string& r : d.reasons) why += "\n  " + r;
-    } else if (why.empty()) {
-        why = fmt::format("dialect {} from --dialect", id);
-    }
-    const dialects::Dialect* dialect = reg.registry.find(id);
+    // The flag wins over the config, the config over the header and detection (project/workspace.hpp).
+    project::Workspace workspace(std::make_shared<project::DiskFileSystem>(), overrides_of(o.dialect, o.dialect_files, ""));
+    const project::Resolved resolved = workspace.resolve(from_stdin ? "<stdin>" : o.file, *text);
+    const bool bad_project = ProblemPrinter().print(resolved.project->problems());
+    if (bad_project) return kExitUsage;
+    const std::string& id = resolved.choice.id;
+    std::string why = resolved.choice.why;
+    for (const std::string& r : resolved.choice.evidence) why += "\n  " + r;
+    const dialects::Dialect* dialect = resolved.dialect;
     if (!dialect) {
         std::cerr << fmt::format("kerf: unknown dialect '{}'; `kerf dialects` lists them\n", id);
         return kExitUsage;

@@ -4,12 +4,12 @@
 #include <fmt/format.h>
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include "cli/commands.hpp"
 #include "cli/dry_run.hpp"
 #include "plot/svg.hpp"
+#include "project/writer.hpp"
 
 namespace kerf::cli {
 
@@ -21,30 +21,30 @@ struct PlotCliOptions {
 };
 
 // "file.nc (dialect)": the picture says what it shows.
-std::string title_of(const DryRun& run, const std::string& file) {
-    return fmt::format("{} ({})", std::filesystem::path(file).filename().string(), run.dialect_id);
+std::string title_of(const project::DryRun& run, const std::string& file) {
+    return fmt::format("{} ({})", std::filesystem::path(file).filename().string(), run.choice.id);
 }
 
-// Written only after the run, so a failed run leaves no half file; an unwritable file is exit 2.
+// Written only after the run, and atomically (project/writer.hpp): never half a picture; an
+// unwritable file is exit 2.
 bool write_svg(const std::string& svg, const std::string& output) {
     if (output.empty()) {
         std::cout << svg;
         return static_cast<bool>(std::cout.flush());
     }
-    std::ofstream out(output, std::ios::binary);
-    if (!(out << svg) || !out.flush()) {
-        std::cerr << fmt::format("kerf: {}: cannot write the picture\n", output);
+    if (const auto error = project::write_atomically(output, svg)) {
+        std::cerr << fmt::format("{}: error: cannot write the picture: {}\n", output, *error);
         return false;
     }
     return true;
 }
 
 int run_plot(const PlotCliOptions& o) {
-    auto prepared = prepare_dry_run(o.run);
+    auto prepared = prepare(o.run);
     if (const int* code = std::get_if<int>(&prepared)) return *code;
-    DryRun& run = *std::get<std::unique_ptr<DryRun>>(prepared);
+    project::DryRun& run = *std::get<std::unique_ptr<project::DryRun>>(prepared);
     interpreter::VectorSink sink;
-    const interpreter::RunResult result = execute(run, sink);
+    const interpreter::RunResult result = project::execute(run, sink, o.run.lenient);
     const plot::SvgOptions options{run.dialect->machine, run.setup.diameter_x, title_of(run, o.run.file)};
     const std::string svg = plot::render_svg(sink.events, options);
     const int code = report_alarms(run, result);

@@ -47,12 +47,12 @@ private:
     fmt::memory_buffer buffer_;
 };
 
-void print_summary(const DryRun& run, const interpreter::RunResult& result, const std::string& axes) {
+void print_summary(const project::DryRun& run, const interpreter::RunResult& result, const std::string& axes) {
     std::string final_position;
     for (std::size_t a = 0; a < interpreter::kAxisCount; ++a)
         if (axes.find(interpreter::kAxisLetters[a]) != std::string::npos)
             final_position += fmt::format(" {}{:.3f}", interpreter::kAxisLetters[a], result.final_position[a]);
-    std::cout << fmt::format("dialect {}\nblocks executed {}\ncycle time {:.1f} s ({:.2f} min)\n", run.dialect_id,
+    std::cout << fmt::format("dialect {}\nblocks executed {}\ncycle time {:.1f} s ({:.2f} min)\n", run.choice.id,
                              result.blocks, result.total_time_s, result.total_time_s / 60);
     std::cout << fmt::format("feed distance {:.1f} mm, rapid distance {:.1f} mm\nfinal position{}\n",
                              result.feed_distance_mm, result.rapid_distance_mm, final_position);
@@ -61,9 +61,9 @@ void print_summary(const DryRun& run, const interpreter::RunResult& result, cons
 }
 
 int run_run(const RunCliOptions& o) {
-    auto prepared = prepare_dry_run(o.run);
+    auto prepared = prepare(o.run);
     if (const int* code = std::get_if<int>(&prepared)) return *code;
-    DryRun& run = *std::get<std::unique_ptr<DryRun>>(prepared);
+    project::DryRun& run = *std::get<std::unique_ptr<project::DryRun>>(prepared);
     std::ofstream trace_file;
     if (!o.trace.empty()) {
         trace_file.open(o.trace, std::ios::binary);
@@ -75,7 +75,7 @@ int run_run(const RunCliOptions& o) {
     // The machine's axes (a lathe has no Y even where the dialect knows the letter).
     const std::string axes = run.setup.axis_order.empty() ? run.dialect->lexical.axes : run.setup.axis_order;
     JsonLinesSink sink(o.trace.empty() ? nullptr : &trace_file, run.programs, axes);
-    const interpreter::RunResult result = execute(run, sink, o.state);
+    const interpreter::RunResult result = project::execute(run, sink, o.run.lenient, o.state);
     sink.flush();
     if (o.json)
         std::cout << boost::json::serialize(interpreter::summary_to_json(result, axes)) << "\n";

@@ -4,7 +4,6 @@
 #include <map>
 
 #include "cli/commands.hpp"
-#include "cli/config.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"kerf: read, check and convert FANUC-family CNC programs"};

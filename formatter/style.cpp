@@ -100,6 +100,12 @@ std::optional<std::string> spelling_of(const toml::node& node) {
     return std::nullopt;
 }
 
+std::string option_keys() {
+    std::string keys;
+    for (const Option& o : kOptions) keys += (keys.empty() ? "" : ", ") + std::string(o.info.key);
+    return keys;
+}
+
 }  // namespace
 
 std::span<const OptionInfo> options() {
@@ -131,7 +137,7 @@ StyleResult style_from_toml(std::string_view toml_text, std::string_view source_
         const Option* o = find_option(key.str());
         const std::optional<std::string> value = spelling_of(node);
         std::optional<std::string> error;
-        if (!o) error = "unknown key; `kerf fmt --help` lists the options";
+        if (!o) error = fmt::format("unknown key; the keys of [format] are {}", option_keys());
         else if (!value) error = fmt::format("expected {}", o->info.values == "integer" ? "an integer" : "a string");
         else error = o->set(r.style, o->info.values, *value);
         if (error) r.errors.push_back({fmt::format("{}: format.{}: {}", source_name, key.str(), *error), line, column});

@@ -65,7 +65,7 @@ TEST_CASE("kerf plot: usage and I/O errors exit 2") {
     CHECK(run("plot").code == 2);
     const Run r = run("plot --dialect fanuc-lathe-a " + shell_quote(nc) + " -o /nonexistent/dir/out.svg");
     CHECK(r.code == 2);
-    CHECK(r.err.find("/nonexistent/dir/out.svg: cannot write the picture") != std::string::npos);
+    CHECK(r.err.find("/nonexistent/dir/out.svg: error: cannot write the picture") != std::string::npos);
 }
 
 TEST_CASE("kerf plot: a program without motion is a clean run and a picture saying so") {
@@ -101,7 +101,7 @@ TEST_CASE("kerf plot/run --machine: a good machine file changes the run, a bad o
     }
     const Run missing = run("plot --machine /nonexistent/m.toml " + shell_quote(nc));
     CHECK(missing.code == 2);
-    CHECK(missing.err.find("/nonexistent/m.toml: cannot open file") != std::string::npos);
+    CHECK(missing.err.find("/nonexistent/m.toml: error: cannot open file") != std::string::npos);
 }
 
 TEST_CASE("kerf run --machine: the machine's rates change the cycle time") {

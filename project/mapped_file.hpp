@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace kerf::cli {
+namespace kerf::project {
 
 class MappedFile {
 public:
@@ -32,4 +32,4 @@ private:
     std::string copy_;
 };
 
-}  // namespace kerf::cli
+}  // namespace kerf::project

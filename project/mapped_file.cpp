@@ -1,4 +1,4 @@
-#include "cli/mapped_file.hpp"
+#include "project/mapped_file.hpp"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -7,9 +7,9 @@
 
 #include <fmt/format.h>
 
-#include "cli/config.hpp"
+#include "project/files.hpp"
 
-namespace kerf::cli {
+namespace kerf::project {
 
 std::optional<MappedFile> MappedFile::open(const std::filesystem::path& path, std::string& error) {
     MappedFile file;
@@ -27,9 +27,12 @@ std::optional<MappedFile> MappedFile::open(const std::filesystem::path& path, st
     } else if (fd >= 0) {
         ::close(fd);
     }
-    std::optional<std::string> text = read_file(path, error);   // pipes, empty and special files
-    if (!text) return std::nullopt;
-    file.copy_ = std::move(*text);
+    ReadResult read = DiskFileSystem().read(path);   // pipes, empty and special files
+    if (!read.text) {
+        error = std::move(read.error);
+        return std::nullopt;
+    }
+    file.copy_ = std::move(*read.text);
     return file;
 }
 
@@ -51,4 +54,4 @@ void MappedFile::release(std::size_t begin, std::size_t end) const {
     if (last > first) madvise(const_cast<char*>(mapped_) + first, last - first, MADV_DONTNEED);
 }
 
-}  // namespace kerf::cli
+}  // namespace kerf::project

@@ -1,0 +1,63 @@
+#include "project/dry_run.hpp"
+
+#include <fmt/format.h>
+
+namespace kerf::project {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Hooks the mapped program up as a stream (the run parses it piece by piece and the pages of
+// parsed pieces are dropped: memory stays flat however long the file), the loader of the program
+// index, and finds the main program.
+bool load_program(DryRun& run, Workspace& workspace, const fs::path& file) {
+    interpreter::StreamOptions stream;
+    stream.read_ahead = true;   // the grammar on the second core (bench/RESULTS.md)
+    stream.release = [source = run.source.get()](std::size_t begin, std::size_t end) { source->release(begin, end); };
+    const std::uint32_t main_file = run.programs.add_stream(file.string(), run.source->text(), *run.dialect, stream);
+    run.programs.set_loader(workspace.loader_for(file), run.dialect);
+    const std::optional<interpreter::ProgramRef> main = run.programs.first_program(main_file);
+    if (!main) return false;
+    run.main = *main;
+    return true;
+}
+
+}  // namespace
+
+PreparedRun prepare_dry_run(std::shared_ptr<Workspace> workspace, const fs::path& file) {
+    PreparedRun prepared;
+    std::string error;
+    std::optional<MappedFile> source = MappedFile::open(file, error);
+    if (!source) {
+        prepared.problems.push_back({Level::error, file.string(), 0, 0, "cannot open file"});
+        return prepared;
+    }
+    auto run = std::make_unique<DryRun>();
+    run->source = std::make_unique<MappedFile>(std::move(*source));
+    run->workspace = std::move(workspace);
+    Resolved resolved = run->workspace->resolve(file, run->source->text());
+    prepared.problems = std::move(resolved.problems);
+    if (!resolved.ok() || has_errors(prepared.problems)) return prepared;
+    run->project = resolved.project;
+    run->dialect = resolved.dialect;
+    run->choice = std::move(resolved.choice);
+    run->setup = *resolved.setup;
+    if (!load_program(*run, *run->workspace, file)) {
+        prepared.problems.push_back({Level::error, file.string(), 0, 0, "no program to run"});
+        prepared.outcome = PreparedRun::Outcome::no_program;
+        return prepared;
+    }
+    prepared.run = std::move(run);
+    prepared.outcome = PreparedRun::Outcome::ready;
+    return prepared;
+}
+
+interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink, bool lenient, bool emit_state) {
+    interpreter::RunOptions options;
+    options.lenient = lenient;
+    options.emit_state = emit_state;
+    return interpreter::run(run.programs, run.main, *run.dialect, run.setup, sink, options);
+}
+
+}  // namespace kerf::project

@@ -1,0 +1,159 @@
+// The project layer's entry point, shared by the command line and the language server (clangd's
+// ClangdServer beside its index: `cli/` and `lsp/` are two faces of this layer). A Workspace
+// answers, for any program file:
+//
+//   - its Project: the .kerf.toml found by walking up from the file's folder (project/config.hpp),
+//     the dialect registry (built-ins, then the override's dialect files, then the .kerf.toml's)
+//     and a cache of one interpreter Setup per dialect; projects are read once and shared;
+//   - its dialect: the override (--dialect, the client's kerf.dialect), then the .kerf.toml's
+//     `dialect`, then the `(DIALECT: ...)` header and detection (grammar/detect.hpp);
+//   - its machine: the override (--machine, kerf.machine), then `machine = ...`, then the dialect's
+//     built-in machine;
+//   - the programs its calls reach: the program index (project/index.hpp) of its folder and the
+//     .kerf.toml's [programs] library folders, as a ProgramSet loader.
+//
+// Everything is read through a FileSystem (project/files.hpp): the disk for the command line,
+// open documents over the disk for the server. Thread-safe: batch commands resolve files from
+// many threads.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dialects/dialect.hpp"
+#include "interpreter/program_set.hpp"
+#include "interpreter/setup.hpp"
+#include "project/config.hpp"
+#include "project/files.hpp"
+#include "project/index.hpp"
+#include "project/problem.hpp"
+#include "project/walk.hpp"
+
+namespace kerf::project {
+
+// What the user says above every .kerf.toml: the command line's flags, or the server's settings.
+struct Overrides {
+    std::string dialect;                                 // "" or "auto": not overridden
+    std::vector<std::filesystem::path> dialect_files;    // loaded before the .kerf.toml's
+    std::filesystem::path machine;                       // "": not overridden
+    std::string dialect_origin = "--dialect";            // how problems name the override ("kerf.dialect")
+    std::string machine_origin = "--machine";
+};
+
+enum class DialectSource { override_setting, config, detection };
+
+struct DialectChoice {
+    std::string id;
+    DialectSource source = DialectSource::detection;
+    std::string why;                     // "dialect fanuc-mill from --dialect", "... detected (score 7)"
+    std::vector<std::string> evidence;   // detection's reasons (the header comment when it decided)
+};
+
+// Pure: the override, else the configuration's dialect, else the header and detection on `text`.
+DialectChoice choose_dialect(const Overrides& overrides, const Config& config, std::string_view text);
+
+// The built-in dialects and the user dialect files, in order (dialects/SCHEMA.md); a file that
+// cannot be read or has errors is a problem and adds nothing.
+struct DialectRegistry {
+    dialects::Registry registry;
+    std::vector<Problem> problems;
+};
+DialectRegistry load_dialects(const std::vector<std::filesystem::path>& dialect_files, const FileSystem& files);
+
+class Project {
+public:
+    Project(Config config, std::vector<Problem> problems, const Overrides& overrides, const FileSystem& files);
+
+    const Config& config() const { return config_; }
+    const dialects::Registry& dialects() const { return registry_; }
+    // The problems of the .kerf.toml and the dialect files (reported once per project).
+    const std::vector<Problem>& problems() const { return problems_; }
+    // The machine file in force: the override, else the .kerf.toml's; empty for the built-in machine.
+    const std::filesystem::path& machine_file() const { return machine_file_; }
+
+    struct SetupEntry {
+        std::optional<interpreter::Setup> setup;   // nullopt when the machine file has errors
+        std::vector<Problem> problems;             // the machine file's (warnings too)
+    };
+    // The Setup for `dialect`, read once per dialect id.
+    const SetupEntry& setup(const dialects::Dialect& dialect) const;
+    // The folders a call from `file` reaches: the file's own folder, then the library folders.
+    Scope program_scope(const std::filesystem::path& file) const;
+
+private:
+    Config config_;
+    std::vector<Problem> problems_;
+    dialects::Registry registry_;
+    std::filesystem::path machine_file_;
+    const FileSystem& files_;
+    mutable std::mutex setups_mutex_;
+    mutable std::map<std::string, std::unique_ptr<SetupEntry>> setups_;
+};
+
+// What analysing one file needs. `dialect` and `setup` point into `project`.
+struct Resolved {
+    std::shared_ptr<const Project> project;
+    const dialects::Dialect* dialect = nullptr;
+    DialectChoice choice;
+    const interpreter::Setup* setup = nullptr;
+    std::vector<Problem> problems;   // the project's, an unknown dialect, the machine file's
+    bool ok() const { return dialect && setup; }
+};
+
+class Workspace {
+public:
+    explicit Workspace(std::shared_ptr<const FileSystem> files = std::make_shared<DiskFileSystem>(), Overrides overrides = {});
+
+    const FileSystem& files() const { return *files_; }
+    ReadResult read(const std::filesystem::path& file) const { return files_->read(file); }
+
+    // New overrides (the server's settings changed): projects are read again on next use.
+    void set_overrides(Overrides overrides);
+    Overrides overrides() const;
+    // A .kerf.toml (or a dialect or machine file) changed: every project is read again on next use.
+    void forget_projects();
+
+    // The project of a file (or folder): its .kerf.toml, or the defaults when there is none.
+    std::shared_ptr<const Project> project_for(const std::filesystem::path& file);
+    // The .kerf.toml that governs `file`, walking up from its folder; nullopt when none.
+    std::optional<std::filesystem::path> find_config(const std::filesystem::path& file) const;
+    // Project, dialect and Setup of a file whose text is `text`.
+    Resolved resolve(const std::filesystem::path& file, std::string_view text);
+
+    ProgramIndex& index() { return index_; }
+    const ProgramIndex& index() const { return index_; }
+    // Indexes the program files directly in `folder` (once; again after forget_folder).
+    void index_folder(const std::filesystem::path& folder);
+    void forget_folder(const std::filesystem::path& folder);
+    // Indexes what a call from `file` can reach: its folder and its project's library folders.
+    void index_for(const std::filesystem::path& file);
+    // The program `number` a call from `file` reaches outside `file` itself (index_for first).
+    std::optional<IndexedProgram> find_program(std::int64_t number, const std::filesystem::path& file);
+    // O number → (name, text) for interpreter::ProgramSet::set_loader: the program's file through
+    // the index. Names are relative when `file` is.
+    interpreter::ProgramSet::Loader loader_for(const std::filesystem::path& file);
+
+    // [check] include/exclude of each file's project, for collect_program_files in `kerf check`.
+    Selector check_selector();
+
+private:
+    std::shared_ptr<const Project> load_project(const std::optional<std::filesystem::path>& config);
+
+    std::shared_ptr<const FileSystem> files_;
+    mutable std::mutex mutex_;   // guards overrides_, projects_, config_of_, indexed_
+    Overrides overrides_;
+    std::map<std::filesystem::path, std::shared_ptr<const Project>> projects_;        // by .kerf.toml ("" = none)
+    std::map<std::filesystem::path, std::optional<std::filesystem::path>> config_of_;  // folder → .kerf.toml
+    std::set<std::filesystem::path> indexed_;
+    std::mutex index_mutex_;   // one folder indexed at a time
+    ProgramIndex index_;
+};
+
+}  // namespace kerf::project
