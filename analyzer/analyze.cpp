@@ -4,6 +4,7 @@
 #include <thread>
 
 #include <algorithm>
+#include <map>
 #include <unordered_set>
 
 #include "analyzer/suppress.hpp"
@@ -135,10 +136,26 @@ void finalize(std::vector<Finding>& findings, const ast::SyntaxTree& tree, const
     const auto from_run = [](const Finding& f) { return !f.notes.empty() && f.notes.front().starts_with("found by the dry run"); };
     std::unordered_set<std::string> static_lines, seen;
     const auto line_key = [&](const Finding& f) { return f.rule + ":" + std::to_string(lines.utf8(f.range.begin).line); };
-    for (const Finding& f : findings)
-        if (!from_run(f)) static_lines.insert(line_key(f));
+    // A static finding that explains the dry run's alarm on its line (K3003: the program is missing,
+    // so the run stops with alarm 078) hides the alarm's finding: one defect, one finding.
+    std::multimap<std::uint32_t, const Rule*> explanations;   // line → static rule that explains alarms there
+    for (const Finding& f : findings) {
+        if (from_run(f)) continue;
+        static_lines.insert(line_key(f));
+        if (const Rule* r = registry.find(f.rule); r && !r->explains.empty()) explanations.emplace(lines.utf8(f.range.begin).line, r);
+    }
+    const auto explained = [&](const Finding& f) {
+        const Rule* alarm_rule = registry.find(f.rule);
+        if (!alarm_rule || alarm_rule->alarms.empty()) return false;
+        const auto [lo, hi] = explanations.equal_range(lines.utf8(f.range.begin).line);
+        for (auto it = lo; it != hi; ++it)
+            for (const auto& [first, last] : it->second->explains)
+                for (const auto& [alarm_first, alarm_last] : alarm_rule->alarms)
+                    if (first <= alarm_last && alarm_first <= last) return true;
+        return false;
+    };
     std::erase_if(findings, [&](const Finding& f) {
-        if (from_run(f) && static_lines.count(line_key(f))) return true;
+        if (from_run(f) && (static_lines.count(line_key(f)) || explained(f))) return true;
         return !seen.insert(f.rule + ":" + std::to_string(f.range.begin)).second;
     });
 }
@@ -177,7 +194,8 @@ std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t
     const FileContext ctx{typed, dialect, setup, [&](std::int64_t n) {
                               if (!parallel) return programs.find_or_load(n, file).has_value();
                               return loaded.find_program(n).has_value() || (loader && loader(n).has_value());
-                          }};
+                          },
+                          options.program_files};
     run_static(ctx, rules, out);
     map_diagnostics(tree, tree.diagnostics, registry, rules, out);
     map_diagnostics(tree, typed.diagnostics(), registry, rules, out);

@@ -21,6 +21,9 @@ struct CheckOptions {
     bool dry_run = true;                  // run the interpreter for the dynamic rules
     // Files of this size or more run the dry run on a second thread beside the static rules.
     std::size_t parallel_from_bytes = std::size_t{1} << 20;
+    // The other files that hold program O`number`, in the order a call reaches them (the program
+    // index, project/index.hpp); empty or unset: not known (K3010 stays silent).
+    std::function<std::vector<std::string>(std::int64_t number)> program_files;
 };
 
 // Checks file `file` of `programs` (its first program is run as the main program).

@@ -60,13 +60,16 @@ private:
 // What a static check sees of the whole file.
 struct FileContext {
     FileContext(const ast::TypedFile& t, const dialects::Dialect& d, const interpreter::Setup& s,
-                std::function<bool(std::int64_t)> exists)
-        : typed(t), dialect(d), setup(s), program_exists(std::move(exists)) {}
+                std::function<bool(std::int64_t)> exists,
+                std::function<std::vector<std::string>(std::int64_t)> files = {})
+        : typed(t), dialect(d), setup(s), program_exists(std::move(exists)), program_files(std::move(files)) {}
     const ast::TypedFile& typed;
     const dialects::Dialect& dialect;
     const interpreter::Setup& setup;
-    // True when program O`number` can be found (this file, then the loader: the CLI's folder).
+    // True when program O`number` can be found (this file, then the loader: the program index).
     std::function<bool(std::int64_t)> program_exists;
+    // The other files holding program O`number`, as a call reaches them (CheckOptions::program_files).
+    std::function<std::vector<std::string>(std::int64_t)> program_files;
     const ast::SyntaxTree& tree() const { return typed.tree(); }
     // The labels of program `program` (typed.programs() index), computed on first use.
     const LabelTable& labels(std::size_t program) const;
@@ -142,6 +145,9 @@ struct Rule {
     RuleDocs docs;
     std::vector<std::string> diagnostics;         // parser/binder codes reported as this rule ("S0101")
     std::vector<std::pair<int, int>> alarms;      // interpreter alarm numbers [first, last]
+    // Alarms a finding of this static rule explains: the dry run's finding for such an alarm on the
+    // same line is dropped (K3003 explains alarm 078 at its call: one missing program, one finding).
+    std::vector<std::pair<int, int>> explains;
     bool has_fix = false;                         // documentation: the rule offers a fix
     // A fix for a mapped diagnostic (the letter O of "MO6" becomes 0), or nullopt.
     std::function<std::optional<Fix>(const ast::SyntaxTree&, const ast::Diagnostic&)> diagnostic_fix;

@@ -25,6 +25,12 @@ Analysis analyze(Workspace& workspace, const fs::path& path, std::string text, c
     a.programs->set_loader(workspace.loader_for(path), r.dialect);
     an::CheckOptions options;
     options.config = r.project->config().check;
+    options.program_files = [&workspace, path](std::int64_t number) {
+        std::vector<std::string> names;
+        for (const IndexedProgram& p : workspace.find_programs(number, path))
+            names.push_back(Workspace::display_name(p.file, path).string());
+        return names;
+    };
     a.findings = an::check_file(*a.programs, a.file, *r.dialect, *r.setup, options);
     return a;
 }

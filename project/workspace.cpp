@@ -218,12 +218,22 @@ void Workspace::index_for(const fs::path& file) {
     for (const fs::path& folder : project->program_scope(file).folders) index_folder(folder);
 }
 
-std::optional<IndexedProgram> Workspace::find_program(std::int64_t number, const fs::path& file) {
+std::vector<IndexedProgram> Workspace::find_programs(std::int64_t number, const fs::path& file) {
     index_for(file);
     const fs::path from = normal_path(file);
-    for (IndexedProgram& p : index_.find_all(number, from, project_for(file)->program_scope(file)))
-        if (p.file != from) return std::move(p);
-    return std::nullopt;
+    std::vector<IndexedProgram> found = index_.find_all(number, from, project_for(file)->program_scope(file));
+    std::erase_if(found, [&](const IndexedProgram& p) { return p.file == from; });
+    return found;
+}
+
+std::optional<IndexedProgram> Workspace::find_program(std::int64_t number, const fs::path& file) {
+    std::vector<IndexedProgram> found = find_programs(number, file);
+    if (found.empty()) return std::nullopt;
+    return std::move(found.front());
+}
+
+fs::path Workspace::display_name(const fs::path& found, const fs::path& from) {
+    return from.is_relative() ? found.lexically_proximate(fs::current_path()) : found;
 }
 
 interpreter::ProgramSet::Loader Workspace::loader_for(const fs::path& file) {
@@ -232,9 +242,7 @@ interpreter::ProgramSet::Loader Workspace::loader_for(const fs::path& file) {
         if (!found) return std::nullopt;
         ReadResult read = files_->read(found->file);
         if (!read.text) return std::nullopt;
-        // As the user named the calling file: relative names stay relative.
-        const fs::path name = file.is_relative() ? found->file.lexically_proximate(fs::current_path()) : found->file;
-        return std::make_pair(name.string(), std::move(*read.text));
+        return std::make_pair(display_name(found->file, file).string(), std::move(*read.text));
     };
 }
 

@@ -136,6 +136,11 @@ public:
     void index_for(const std::filesystem::path& file);
     // The program `number` a call from `file` reaches outside `file` itself (index_for first).
     std::optional<IndexedProgram> find_program(std::int64_t number, const std::filesystem::path& file);
+    // Every other file's program `number` a call from `file` can reach, the one it reaches first.
+    std::vector<IndexedProgram> find_programs(std::int64_t number, const std::filesystem::path& file);
+    // How messages name a file found through the index: relative to the current folder when the
+    // calling file was named relatively.
+    static std::filesystem::path display_name(const std::filesystem::path& found, const std::filesystem::path& from);
     // O number → (name, text) for interpreter::ProgramSet::set_loader: the program's file through
     // the index. Names are relative when `file` is.
     interpreter::ProgramSet::Loader loader_for(const std::filesystem::path& file);

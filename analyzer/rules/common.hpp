@@ -69,6 +69,11 @@ inline Rule with_alarms(Rule r, std::vector<std::pair<int, int>> alarms) {
     return r;
 }
 
+inline Rule explaining(Rule r, std::vector<std::pair<int, int>> alarms) {
+    r.explains = std::move(alarms);
+    return r;
+}
+
 // A static rule whose check is the class C (default-constructed per file).
 template <class C>
 Rule static_rule(Rule r) {

@@ -79,25 +79,54 @@ public:
     }
 };
 
-// M98 P / G65 P / G66 P: the program must exist (this file, or the folder: O1000, 1000.nc).
+struct CalledProgram {
+    std::int64_t number = 0;
+    std::uint32_t token = 0;   // the P word
+};
+
+// The program an M98 P, G65 P or G66 P block calls (a constant P), or nullopt.
+std::optional<CalledProgram> called_program(const BlockContext& b) {
+    if (b.has_function(fn::subprogram_call))
+        if (const auto call = b.view.subprogram_call(); call && number_word(b, 'P')) return CalledProgram{call->program, call->p_token};
+    if (b.has_function(fn::macro_call) || b.has_function(fn::modal_macro_call))
+        if (const auto p = number_word(b, 'P')) return CalledProgram{static_cast<std::int64_t>(p->value), p->token};
+    return std::nullopt;
+}
+
+bool in_this_file(const BlockContext& b, std::int64_t number) {
+    for (const ast::Program& p : b.file.typed.programs())
+        if (p.number == number) return true;
+    return false;
+}
+
+// M98 P / G65 P / G66 P: the program must exist (this file, or a file the program index reaches).
 class ProgramNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
-        std::optional<std::int64_t> program;
-        std::uint32_t token = 0;
-        if (b.has_function(fn::subprogram_call))
-            if (const auto call = b.view.subprogram_call(); call && number_word(b, 'P')) {
-                program = call->program;
-                token = call->p_token;
-            }
-        if (!program && (b.has_function(fn::macro_call) || b.has_function(fn::modal_macro_call)))
-            if (const auto p = number_word(b, 'P')) {
-                program = static_cast<std::int64_t>(p->value);
-                token = p->token;
-            }
-        if (!program || b.file.program_exists(*program)) return;
-        out.report(b.token(token).range(), fmt::format("program O{:04} is not in this file or its folder (alarm 078)", *program),
-                   fmt::format("put O{:04} into this file or next to it as O{:04} or {:04}.nc", *program, *program, *program));
+        const std::optional<CalledProgram> call = called_program(b);
+        if (!call || b.file.program_exists(call->number)) return;
+        out.report(b.token(call->token).range(),
+                   fmt::format("program O{:04} is not in this file, the files of its folder or the library folders (alarm 078)", call->number),
+                   fmt::format("put O{:04} into this file or a file of its folder, or name the folder that holds it in "
+                               ".kerf.toml [programs] library", call->number));
+    }
+};
+
+// A call whose program is in several other files (project/index.hpp): which one runs depends on
+// which was loaded into the control; kerf takes the nearest (same folder, nearest folder, path order).
+class ProgramInSeveralFiles : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        const std::optional<CalledProgram> call = called_program(b);
+        if (!call || !b.file.program_files || in_this_file(b, call->number)) return;
+        const std::vector<std::string> files = b.file.program_files(call->number);
+        if (files.size() < 2) return;
+        std::string others;
+        for (std::size_t i = 1; i < files.size(); ++i) others += (i > 1 ? ", " : "") + files[i];
+        out.report(b.token(call->token).range(),
+                   fmt::format("program O{:04} is in {} files: the dry run takes {}, also in {}", call->number, files.size(),
+                               files.front(), others),
+                   "keep one copy of the program, or give the copies their own numbers");
     }
 };
 
@@ -302,10 +331,12 @@ void add_references(Registry& r) {
         {"A jump (P/Q, GOTO, M98 Q) to a sequence number that several blocks carry.",
          "The control searches from the top and takes the first block: maybe not the one you meant.",
          "GOTO 10\nN10 X1.\nN10 X2.", "GOTO 10\nN10 X1.\nN20 X2.", "dialects.md §2 Sequence number"})));
-    r.add(static_rule<ProgramNotFound>(rule("K3003", "program-not-found", S::error,
-        {"M98 P, G65 P or G66 P to a program that is neither in the file nor in its folder.",
-         "The control stops with alarm 078 when the call is reached.", "M98 P1234", "M98 P1000 (O1000 in the folder)",
-         "dialects.md §3.6"})));
+    // One missing program is one finding: K3003 at the call hides the dry run's alarm 078 (K4009) there.
+    r.add(explaining(static_rule<ProgramNotFound>(rule("K3003", "program-not-found", S::error,
+        {"M98 P, G65 P or G66 P to a program that is in no file kerf can reach: this file, the files of its "
+         "folder (by the O numbers inside them) and the .kerf.toml's [programs] library folders.",
+         "The control stops with alarm 078 when the call is reached.", "M98 P1234", "M98 P1000 (O1000 in a file of the folder)",
+         "dialects.md §3.6"})), {{78, 78}}));
     r.add(with_alarms(static_rule<LoopsPairs>(rule("K3004", "loop-mismatch", S::error,
         {"DO m without END m, END m without DO m, loops crossing, or a loop number other than 1–3.",
          "The control stops with alarm 124 or 126.", "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 2",
@@ -328,6 +359,12 @@ void add_references(Registry& r) {
         {"An O number in O8000–O9999, the ranges FANUC parameter 3202 can protect.",
          "A protected program cannot be edited or loaded over; macro makers use these numbers on purpose.",
          "O9001", "O1001", "[FANUC] parameter 3202 NE8/NE9"})));
+    r.add(static_rule<ProgramInSeveralFiles>(rule("K3010", "program-in-several-files", S::warning,
+        {"M98 P, G65 P or G66 P to a program number that several other files of the folder (or the library "
+         "folders) hold.",
+         "The control runs whichever copy was loaded into its memory; the dry run takes the nearest file "
+         "(same folder, then the nearest folder, then path order) and may check another program than the machine runs.",
+         "M98 P1000 (O1000 in a.nc and in old/a.nc)", "M98 P1000 (O1000 in one file)", "dialects.md §3.6"})));
 }
 
 }  // namespace kerf::analyzer::rules

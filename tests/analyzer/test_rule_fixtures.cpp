@@ -21,6 +21,8 @@ struct Expected {
     std::string dialect = "fanuc-lathe-a";
     std::vector<std::string> findings;
     test::SoftLimit limit;
+    std::int64_t program = 0;                  // "# program-files N FILE...": what the program index
+    std::vector<std::string> program_files;    // answers for O N (the files of a folder the test has not)
 };
 
 // "# dialect ID" sets the dialect; other lines are "line:col severity ID".
@@ -32,6 +34,10 @@ Expected read_expected(const fs::path& file) {
         else if (line.starts_with("# soft-limit ")) {
             std::istringstream words(line.substr(13));
             words >> e.limit.axis >> e.limit.min >> e.limit.max;
+        } else if (line.starts_with("# program-files ")) {
+            std::istringstream words(line.substr(16));
+            words >> e.program;
+            for (std::string file; words >> file;) e.program_files.push_back(file);
         }
         else if (!line.empty() && line[0] != '#') e.findings.push_back(line);
     }
@@ -57,7 +63,9 @@ TEST_CASE("each rule fires on its bad program as expected and not on its good on
         INFO(r.id << " " << r.name);
         const Expected expected = read_expected(dir / "expected.txt");
         REQUIRE(!expected.findings.empty());
-        const auto options = test::all_rules_on();
+        auto options = test::all_rules_on();
+        if (!expected.program_files.empty())
+            options.program_files = [&](std::int64_t n) { return n == expected.program ? expected.program_files : std::vector<std::string>{}; };
         CHECK(test::summary(test::check(test::read_text(dir / "bad.nc"), expected.dialect, options, expected.limit), r.id) ==
               expected.findings);
         CHECK(test::summary(test::check(test::read_text(dir / "good.nc"), expected.dialect, options, expected.limit), r.id).empty());

@@ -95,6 +95,10 @@ F = {
 }
 # K5015 needs soft limits: the harness sets them from "# soft-limit AXIS MIN MAX".
 SOFT = {"K5015-soft-limit": (L, prog("G00 X900."), prog("G00 X200."), [(2, "G00", E)], "# soft-limit X -10 500")}
+# K3010 needs other files: the harness answers the program index's question from
+# "# program-files N FILE..." (the real index is tested in tests/project/test_workspace.cpp).
+INDEX = {"K3010-program-in-several-files": (M, prog("M98 P1000"), prog("M98 P1001"), [(2, "P1000", W)],
+                                            "# program-files 1000 a.nc old/a.nc")}
 here = os.path.dirname(os.path.abspath(__file__))
 def write(name, d, bad, good, exp, extra=None):
     os.makedirs(os.path.join(here, name), exist_ok=True)
@@ -110,3 +114,4 @@ def write(name, d, bad, good, exp, extra=None):
     open(os.path.join(here, name, "expected.txt"), "w").write("\n".join(out) + "\n")
 for k, v in F.items(): write(k, *v)
 for k, v in SOFT.items(): write(k, v[0], v[1], v[2], v[3], v[4])
+for k, v in INDEX.items(): write(k, v[0], v[1], v[2], v[3], v[4])
