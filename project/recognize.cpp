@@ -136,6 +136,11 @@ LineKind classify(std::string_view raw) {
     if (markdown(raw)) return LineKind::prose;
     const std::string line = strip_comments(raw);
     bool foreign = false, address = false, statement = false, odd = false;
+    // The ISO program number :1000 (dialects.md §2) has no letter.
+    const std::size_t first = line.find_first_not_of(" \t");
+    if (first != std::string::npos && line[first] == ':' && first + 1 < line.size() &&
+        std::isdigit(static_cast<unsigned char>(line[first + 1])))
+        statement = true;
     int words = 0;
     for (std::size_t i = 0; i < line.size();) {
         const char c = line[i];

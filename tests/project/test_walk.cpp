@@ -1,0 +1,98 @@
+// Folder walks (project/walk.hpp): which files `kerf check` and `kerf fmt` take, every skipped file
+// with its reason, [check] include/exclude through the workspace's selector; the parallel runner.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <vector>
+
+#include "project/parallel.hpp"
+#include "project/walk.hpp"
+#include "project/workspace.hpp"
+#include "tests/shared_files.hpp"
+
+namespace fs = std::filesystem;
+using namespace kerf::project;
+using kerf::test::write_text;
+
+namespace {
+
+std::vector<std::string> names(const std::vector<fs::path>& files, const fs::path& root) {
+    std::vector<std::string> out;
+    for (const fs::path& f : files) out.push_back(fs::relative(f, root).generic_string());
+    return out;
+}
+
+std::vector<std::string> skipped(const WalkResult& r, const fs::path& root) {
+    std::vector<std::string> out;
+    for (const SkippedFile& s : r.skipped) out.push_back(fs::relative(s.path, root).generic_string() + ": " + s.reason);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("walk: programs by content whatever their names; every other file listed with its reason") {
+    const fs::path root = fs::temp_directory_path() / "kerf_test_walk";
+    fs::remove_all(root);
+    write_text(root / "a.nc", "O1\n");
+    write_text(root / "sub" / "B.NGC", "O2\n");
+    write_text(root / "sub" / "deep" / "c.MPF", "O3\n");
+    write_text(root / "sub" / "O1000", "O1000\nG0X0\n");
+    write_text(root / "sub" / "205", "(VTULKA)\nG21G40G49G54G80G90\nT0303\nM30\n");
+    write_text(root / "sub" / "O0003", "%O0003( 300-11 MILL FIXTURE)\n()\nG0 X1.\nM30\n%\n");
+    write_text(root / "sub" / "probe.eia", "O9810\nM99\n");
+    write_text(root / "sub" / "macro.src", "#1 = SIN[1]\n#2 = #1 + 1\n");
+    write_text(root / "sub" / "README", "notes about the parts\n");
+    write_text(root / "MANIFEST.md", "# Files\n\n| file | what |\n|---|---|\n| a.nc | the first part |\n");
+    write_text(root / "picture.png", "\x89PNG");
+    write_text(root / "empty.nc", "");
+    write_text(root / ".git" / "x.nc", "O4\n");
+    const WalkResult result = collect_program_files({root, root / "a.nc", root / "missing.nc"}, DiskFileSystem());
+    CHECK(names(result.files, root) == std::vector<std::string>{"a.nc", "sub/205", "sub/B.NGC", "sub/O0003", "sub/O1000",
+                                                                "sub/deep/c.MPF", "sub/macro.src", "sub/probe.eia"});
+    CHECK(skipped(result, root) == std::vector<std::string>{
+                                       ".git: hidden folder",
+                                       "MANIFEST.md: not a program: no NC block in the first 4 lines",
+                                       "empty.nc: empty file",
+                                       "picture.png: binary: PNG image",
+                                       "sub/README: not a program: no NC block in the first 1 lines",
+                                   });
+    REQUIRE(result.errors.size() == 1);
+    CHECK(result.errors[0] == (root / "missing.nc").string() + ": no such file or folder");
+    // A file named on the command line is taken whatever it holds.
+    CHECK(collect_program_files({root / "sub" / "README"}, DiskFileSystem()).files.size() == 1);
+    fs::remove_all(root);
+}
+
+TEST_CASE("walk: [check] include adds files content would skip, exclude removes them, each with a reason") {
+    const fs::path root = fs::temp_directory_path() / "kerf_test_walk_select";
+    fs::remove_all(root);
+    write_text(root / ".kerf.toml", "[check]\ninclude = [\"**/*.nc\", \"notes/*.txt\"]\nexclude = [\"old/**\"]\n");
+    write_text(root / "a.nc", "O1\nM30\n");
+    write_text(root / "old" / "b.nc", "O2\nM30\n");
+    write_text(root / "notes" / "n.txt", "(ONLY COMMENTS)\n");   // content alone would skip it
+    write_text(root / "c.eia", "O3\nM30\n");                     // a program, but include does not name it
+    write_text(root / "pic.nc", std::string("\x89PNG\0\0", 6));  // included by name, still binary
+    Workspace workspace;
+    const WalkResult r = collect_program_files({root}, workspace.files(), workspace.check_selector());
+    CHECK(names(r.files, root) == std::vector<std::string>{"a.nc", "notes/n.txt"});
+    const std::string config = (root / ".kerf.toml").string();
+    CHECK(skipped(r, root) == std::vector<std::string>{
+                                  ".kerf.toml: hidden file",
+                                  "c.eia: not matched by [check] include (" + config + ")",
+                                  "old/b.nc: excluded by [check] exclude \"old/**\" (" + config + ")",
+                                  "pic.nc: binary: PNG image",
+                              });
+    fs::remove_all(root);
+}
+
+TEST_CASE("run_parallel runs every index once and reports the end") {
+    for (unsigned threads : {1u, 2u, 4u}) {
+        std::vector<std::atomic<int>> runs(1000);
+        std::size_t last_finished = 0;
+        run_parallel(
+            runs.size(), threads, [&](std::size_t i) { ++runs[i]; },
+            [&](std::size_t finished, std::size_t) { last_finished = finished; });
+        for (const auto& r : runs) CHECK(r.load() == 1);
+        CHECK(last_finished == runs.size());
+    }
+}
