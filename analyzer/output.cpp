@@ -250,4 +250,9 @@ std::string format_rules_markdown(const Registry& registry) {
     return out;
 }
 
+std::string diagnostic_id(std::string_view code, const Registry& registry) {
+    if (const Rule* rule = registry.for_diagnostic(code)) return fmt::format("{} ({})", rule->id, code);
+    return std::string(code);
+}
+
 }  // namespace kerf::analyzer

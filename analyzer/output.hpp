@@ -36,4 +36,9 @@ std::string format_rule_list(const Registry& registry);       // id name severit
 std::string format_rules_markdown(const Registry& registry);  // docs/rules.md
 std::string format_rule_docs(const Rule& rule);               // kerf explain K1001
 
+// The id `kerf parse` and `kerf fmt` print for a parser diagnostic: the rule `kerf check` reports it
+// as, which is the id a user suppresses (`(kerf: ignore K1003)`, `[check.rules] K1003 = "off"`),
+// with the parser's code after it - "K1003 (S0103)"; the code alone when no rule reports it.
+std::string diagnostic_id(std::string_view code, const Registry& registry);
+
 }  // namespace kerf::analyzer

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "analyzer/output.hpp"
 #include "ast/dump.hpp"
 #include "ast/printer.hpp"
 #include "cli/commands.hpp"
@@ -30,7 +31,7 @@ struct ParseOptions {
 void print_diagnostic(const std::string& file, const ast::LineIndex& lines, const ast::Diagnostic& d) {
     const ast::Position p = lines.utf8(d.range.begin);
     std::cerr << fmt::format("{}:{}:{}: {}: {} [{}]\n", file, p.line + 1, p.column + 1, ast::to_string(d.severity),
-                             d.message, d.code);
+                             d.message, analyzer::diagnostic_id(d.code, analyzer::builtin_rules()));
     if (!d.hint.empty()) std::cerr << fmt::format("  hint: {}\n", d.hint);
 }
 

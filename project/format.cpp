@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "analyzer/output.hpp"
 #include "ast/typed.hpp"
 #include "formatter/format.hpp"
 #include "formatter/verify.hpp"
@@ -16,7 +17,7 @@ namespace {
 std::string diagnostic_line(const std::string& name, const ast::LineIndex& lines, const ast::Diagnostic& d) {
     const ast::Position at = lines.utf8(d.range.begin);
     std::string s = fmt::format("{}:{}:{}: {}: {} [{}]", name, at.line + 1, at.column + 1, ast::to_string(d.severity),
-                                d.message, d.code);
+                                d.message, analyzer::diagnostic_id(d.code, analyzer::builtin_rules()));
     if (!d.hint.empty()) s += fmt::format("\n  hint: {}", d.hint);
     return s;
 }

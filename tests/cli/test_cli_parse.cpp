@@ -37,8 +37,25 @@ TEST_CASE("kerf parse: errors on stderr as file:line:col: severity: message [id]
     const Run r = run("parse --dialect fanuc-lathe-a '" + p.string() + "'");
     CHECK(r.code == 1);
     CHECK(r.err.find(p.string() + ":2:4: error: malformed number in 'X-12.8.'") != std::string::npos);
-    CHECK(r.err.find("[S0102]") != std::string::npos);
+    CHECK(r.err.find("[K1002 (S0102)]") != std::string::npos);
     CHECK(r.err.find("hint: ") != std::string::npos);
+}
+
+// One defect, one id (issue 12): kerf parse, kerf fmt and kerf check all name MO6 K1003, the id a
+// user suppresses; parse and fmt add the parser's S0103, check notes it.
+TEST_CASE("kerf parse, fmt and check show the same id for one defect, and that id suppresses it") {
+    const fs::path p = write_temp("mo6.nc", "O1\nT2 MO6\nM30\n");
+    const Run parse = run("parse --dialect fanuc-mill '" + p.string() + "'");
+    CHECK(parse.err.find(p.string() + ":2:4: error: letter O in 'MO6' where the digit zero is meant [K1003 (S0103)]") != std::string::npos);
+    const Run fmt = run("fmt --dialect fanuc-mill '" + p.string() + "'");
+    CHECK(fmt.err.find(p.string() + ":2:4: error: letter O in 'MO6' where the digit zero is meant [K1003 (S0103)]") != std::string::npos);
+    const Run check = run("check --dialect fanuc-mill '" + p.string() + "'");
+    CHECK(check.out.find(p.string() + ":2:4: error K1003 letter-o-for-zero:") != std::string::npos);
+    CHECK(check.out.find("note: parser diagnostic S0103") != std::string::npos);
+    const fs::path quiet = write_temp("mo6-ignored.nc", "O1\nT2 MO6 (kerf: ignore K1003)\nM30\n");
+    const Run ignored = run("check --dialect fanuc-mill '" + quiet.string() + "'");
+    CHECK(ignored.code == 0);
+    CHECK(ignored.out.find("K1003") == std::string::npos);
 }
 
 TEST_CASE("kerf parse: clean file exits 0, missing file and unknown dialect exit 2") {
