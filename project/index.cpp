@@ -38,7 +38,7 @@ void ProgramIndex::update_file(const fs::path& file, std::string_view text, cons
     set_file(file, scan_programs(text, rules));
 }
 
-void ProgramIndex::erase_locked(const fs::path& file) {
+void ProgramIndex::erase_locked(const std::string& file) {
     const auto it = files_.find(file);
     if (it == files_.end()) return;
     for (const ScannedProgram& p : it->second) {
@@ -50,11 +50,12 @@ void ProgramIndex::erase_locked(const fs::path& file) {
     files_.erase(it);
 }
 
-void ProgramIndex::set_file(const fs::path& file, std::vector<ScannedProgram> programs) {
+void ProgramIndex::set_file(const fs::path& path, std::vector<ScannedProgram> programs) {
+    const std::string& file = path.native();
     const std::unique_lock lock(mutex_);
     erase_locked(file);
     for (const ScannedProgram& p : programs) {
-        std::vector<fs::path>& holders = by_number_[p.number];
+        std::vector<std::string>& holders = by_number_[p.number];
         const auto at = std::lower_bound(holders.begin(), holders.end(), file);
         if (at == holders.end() || *at != file) holders.insert(at, file);
     }
@@ -63,17 +64,17 @@ void ProgramIndex::set_file(const fs::path& file, std::vector<ScannedProgram> pr
 
 void ProgramIndex::remove_file(const fs::path& file) {
     const std::unique_lock lock(mutex_);
-    erase_locked(file);
+    erase_locked(file.native());
 }
 
 bool ProgramIndex::has_file(const fs::path& file) const {
     const std::shared_lock lock(mutex_);
-    return files_.contains(file);
+    return files_.contains(file.native());
 }
 
 std::vector<ScannedProgram> ProgramIndex::programs_in(const fs::path& file) const {
     const std::shared_lock lock(mutex_);
-    const auto it = files_.find(file);
+    const auto it = files_.find(file.native());
     return it == files_.end() ? std::vector<ScannedProgram>{} : it->second;
 }
 
@@ -84,13 +85,15 @@ std::vector<IndexedProgram> ProgramIndex::find_all(std::int64_t number, const fs
     struct Ranked {
         bool other_file;
         std::size_t distance;
-        const fs::path* file;
+        const std::string* file;
     };
     std::vector<Ranked> ranked;
     const fs::path from_folder = from.parent_path();
-    for (const fs::path& file : n->second)
-        if (file == from || scope.contains(file))
-            ranked.push_back({file != from, folder_distance(from_folder, file.parent_path()), &file});
+    for (const std::string& file : n->second) {
+        const fs::path path(file);
+        if (file == from.native() || scope.contains(path))
+            ranked.push_back({file != from.native(), folder_distance(from_folder, path.parent_path()), &file});
+    }
     std::stable_sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
         return std::tie(a.other_file, a.distance) < std::tie(b.other_file, b.distance);   // then path order (stable)
     });
@@ -98,7 +101,7 @@ std::vector<IndexedProgram> ProgramIndex::find_all(std::int64_t number, const fs
     for (const Ranked& r : ranked) {
         const std::vector<ScannedProgram>& programs = files_.at(*r.file);
         const auto p = std::find_if(programs.begin(), programs.end(), [&](const ScannedProgram& s) { return s.number == number; });
-        out.push_back({*r.file, *p});
+        out.push_back({fs::path(*r.file), *p});
     }
     return out;
 }
@@ -113,7 +116,7 @@ std::vector<DuplicateProgram> ProgramIndex::duplicates() const {
     const std::shared_lock lock(mutex_);
     std::vector<DuplicateProgram> out;
     for (const auto& [number, files] : by_number_)
-        if (files.size() > 1) out.push_back({number, files});
+        if (files.size() > 1) out.push_back({number, std::vector<fs::path>(files.begin(), files.end())});
     std::sort(out.begin(), out.end(), [](const DuplicateProgram& a, const DuplicateProgram& b) { return a.number < b.number; });
     return out;
 }
@@ -122,7 +125,7 @@ std::vector<fs::path> ProgramIndex::files() const {
     const std::shared_lock lock(mutex_);
     std::vector<fs::path> out;
     out.reserve(files_.size());
-    for (const auto& [file, programs] : files_) out.push_back(file);
+    for (const auto& [file, programs] : files_) out.emplace_back(file);
     return out;
 }
 

@@ -64,11 +64,13 @@ public:
     std::size_t program_count() const;
 
 private:
-    void erase_locked(const std::filesystem::path& file);
+    void erase_locked(const std::string& file);
 
+    // Keyed by the path's native string: std::filesystem::path compares component by component,
+    // which costs a third of indexing a folder (bench/RESULTS.md "Program index").
     mutable std::shared_mutex mutex_;
-    std::map<std::filesystem::path, std::vector<ScannedProgram>> files_;
-    std::unordered_map<std::int64_t, std::vector<std::filesystem::path>> by_number_;   // path order
+    std::map<std::string, std::vector<ScannedProgram>> files_;
+    std::unordered_map<std::int64_t, std::vector<std::string>> by_number_;   // path order
 };
 
 // Steps from folder `a` to folder `b` through their common ancestor (0: the same folder).

@@ -11,7 +11,13 @@ namespace kerf::project {
 
 namespace {
 
+// ASCII classes without the C locale's function calls (the recognition reads every byte of a head).
+bool is_alpha(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+char upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+
 constexpr std::size_t kMaxLines = 200;
+constexpr std::size_t kEnoughBlocks = 32;
 
 struct Magic {
     std::string_view bytes;
@@ -98,10 +104,11 @@ constexpr std::array<std::string_view, 44> kKeywords = {
 
 bool keyword(std::string_view run) { return std::find(kKeywords.begin(), kKeywords.end(), run) != kKeywords.end(); }
 
-// The line without its comments: (...) up to ')' or the end, and //, /*, ::, ; to the end
-// (';' ends the block in FANUC; what follows on the line is another block or a comment).
-std::string strip_comments(std::string_view line) {
-    std::string out;
+// The line without its comments, upper case, into `out`: (...) up to ')' or the end, and //, /*,
+// ::, ; to the end (';' ends the block in FANUC; what follows on the line is another block or a
+// comment).
+void strip_comments(std::string_view line, std::string& out) {
+    out.clear();
     for (std::size_t i = 0; i < line.size(); ++i) {
         const char c = line[i];
         const char next = i + 1 < line.size() ? line[i + 1] : '\0';
@@ -113,15 +120,14 @@ std::string strip_comments(std::string_view line) {
             continue;
         }
         if (c == ';' || (c == '/' && (next == '/' || next == '*')) || (c == ':' && next == ':')) break;
-        out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+        out.push_back(upper(c));
     }
-    return out;
 }
 
 enum class LineKind { blank, nc, prose, other };
 
 bool nc_char(char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == ' ' || c == '\t' || c == '\r' || c == '.' || c == '-' ||
+    return is_alpha(c) || is_digit(c) || c == ' ' || c == '\t' || c == '\r' || c == '.' || c == '-' ||
            c == '+' || c == '#' || c == '[' || c == ']' || c == '=' || c == '*' || c == '/' || c == ',' || c == ':' ||
            c == '<' || c == '>' || c == '%';
 }
@@ -132,39 +138,40 @@ bool markdown(std::string_view line) {
            line.starts_with("- ") || line.starts_with("* ") || line.starts_with("> ") || line.starts_with("```");
 }
 
-LineKind classify(std::string_view raw) {
+// `line` is a buffer reused from line to line (no allocation per line).
+LineKind classify(std::string_view raw, std::string& line) {
     if (markdown(raw)) return LineKind::prose;
-    const std::string line = strip_comments(raw);
+    strip_comments(raw, line);
     bool foreign = false, address = false, statement = false, odd = false;
     // The ISO program number :1000 (dialects.md §2) has no letter.
     const std::size_t first = line.find_first_not_of(" \t");
     if (first != std::string::npos && line[first] == ':' && first + 1 < line.size() &&
-        std::isdigit(static_cast<unsigned char>(line[first + 1])))
+        is_digit(line[first + 1]))
         statement = true;
     int words = 0;
     for (std::size_t i = 0; i < line.size();) {
         const char c = line[i];
         if (!nc_char(c)) foreign = true;
-        if (c == '#' && i + 1 < line.size() && std::isdigit(static_cast<unsigned char>(line[i + 1]))) {
+        if (c == '#' && i + 1 < line.size() && is_digit(line[i + 1])) {
             std::size_t j = i + 1;
-            while (j < line.size() && std::isdigit(static_cast<unsigned char>(line[j]))) ++j;
+            while (j < line.size() && is_digit(line[j])) ++j;
             while (j < line.size() && line[j] == ' ') ++j;
             if (j < line.size() && (line[j] == '=' || (line[j] == ':' && j + 1 < line.size() && line[j + 1] == '=')))
                 statement = true;
             i = j;
             continue;
         }
-        if (!std::isalpha(static_cast<unsigned char>(c))) {
+        if (!is_alpha(c)) {
             ++i;
             continue;
         }
         std::size_t j = i;
-        while (j < line.size() && std::isalpha(static_cast<unsigned char>(line[j]))) ++j;
+        while (j < line.size() && is_alpha(line[j])) ++j;
         const std::string_view run(line.data() + i, j - i);
         if (run.size() == 1) {
             std::size_t k = j;
             while (k < line.size() && line[k] == ' ') ++k;
-            if (k < line.size() && (std::isdigit(static_cast<unsigned char>(line[k])) || line[k] == '.' || line[k] == '-' ||
+            if (k < line.size() && (is_digit(line[k]) || line[k] == '.' || line[k] == '-' ||
                                     line[k] == '+' || line[k] == '#' || line[k] == '['))
                 address = true;
         } else if (keyword(run)) {
@@ -187,11 +194,13 @@ Recognition by_content(std::string_view text) {
     if (text.size() >= kRecognitionHead)
         if (const std::size_t last = text.rfind('\n'); last != std::string_view::npos) text = text.substr(0, last + 1);
     std::size_t nc = 0, prose = 0, lines = 0;
-    while (!text.empty() && lines < kMaxLines) {
+    std::string buffer;
+    // Stop early on a plain program: kEnoughBlocks NC blocks and no prose decide it.
+    while (!text.empty() && lines < kMaxLines && !(nc >= kEnoughBlocks && prose == 0)) {
         const std::size_t eol = text.find('\n');
         const std::string_view line = text.substr(0, eol);
         text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
-        switch (classify(line)) {
+        switch (classify(line, buffer)) {
             case LineKind::nc: ++nc, ++lines; break;
             case LineKind::prose: ++prose, ++lines; break;
             case LineKind::other: ++lines; break;
@@ -200,7 +209,7 @@ Recognition by_content(std::string_view text) {
     }
     if (nc == 0) return {false, fmt::format("not a program: no NC block in the first {} lines", lines)};
     if (prose > nc) return {false, fmt::format("not a program: {} lines of prose against {} NC blocks", prose, nc)};
-    return {true, fmt::format("content: {} NC blocks in the first {} lines", nc, lines)};
+    return {true, fmt::format("content: {} NC blocks in the first {} lines", nc, lines)};   // at least; see kEnoughBlocks
 }
 
 }  // namespace

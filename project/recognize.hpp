@@ -10,8 +10,8 @@
 //   3. otherwise the lines of the head (comments removed: (...), //, /*, ;) are sorted into
 //      NC blocks (address words G01 T0101, macro statements #1=2, IF[..]GOTO, WHILE..DO),
 //      prose (two or more words of three letters or more that are no NC keyword, Markdown tables and
-//      headings) and neither; a program has an NC block and at least as many NC blocks as lines of
-//      prose. A README, a manifest, a CSV or a script is not a program; a listing with a few
+//      headings) and neither, up to 200 lines or until 32 NC blocks without prose have decided it; a
+//      program has an NC block and at least as many NC blocks as lines of prose. A README, a manifest, a CSV or a script is not a program; a listing with a few
 //      English lines in comments is.
 #pragma once
 

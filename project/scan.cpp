@@ -32,6 +32,11 @@ public:
     Block read(std::size_t p, std::size_t le, bool after_bom = false) const {
         Block b;
         p = skip_blanks(p, le);
+        if (plain_code(p, le)) {   // most blocks: a word first, no comment, no ';'
+            b.kind = Kind::code;
+            b.end = le;
+            return b;
+        }
         if (p < le && text_[p] == '/') {   // block delete, /n
             ++p;
             while (p < le && digit(text_[p])) ++p;
@@ -67,10 +72,15 @@ public:
             if (!any && c == '%') {
                 b.kind = Kind::percent;
                 leading = false;
+                any = true;
+                all_comments = false;
                 p = percent_program(p + 1, le, b);
-            } else if (leading) {
+                if (b.has_o) p = skip_item(p, le);
+                continue;
+            }
+            if (leading) {
                 leading = false;
-                if (c == 'O' || c == 'o') {
+                if ((c == 'O' || c == 'o') && !o_is_error(p, le)) {
                     b.kind = Kind::program_start;
                     b.has_o = true;
                     read_number(p + 1, le, b);
@@ -90,6 +100,21 @@ public:
 private:
     std::string_view text_;
     const ScanRules& rules_;
+
+    // A block that starts with a letter other than O (N10, G01, X1., IF, #1=...) and holds no
+    // comment and no ';' before the line end is code to the line end: one memchr each, no loop.
+    bool plain_code(std::size_t p, std::size_t le) const {
+        if (p >= le) return false;
+        const char c = text_[p];
+        const bool word = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '#';
+        if (!word || c == 'O' || c == 'o') return false;
+        const char* begin = text_.data() + p;
+        const std::size_t n = le - p;
+        if (std::memchr(begin, ';', n) || (rules_.paren_comments && std::memchr(begin, '(', n))) return false;
+        for (const std::string& intro : rules_.line_comments)
+            if (!intro.empty() && std::memchr(begin, intro.front(), n)) return false;
+        return true;
+    }
 
     std::size_t skip_blanks(std::size_t p, std::size_t le) const {
         while (p < le && blank(text_[p])) ++p;
@@ -125,21 +150,45 @@ private:
         return p;
     }
 
-    // Past one item: up to the next blank, comment, ';' or letter after a value.
+    // DPRNT[...] / BPRNT[...] at p: the position after its matching ']' on the line (the grammar
+    // reads the text between as it is, ';' and '(' included), or p.
+    std::size_t print_text_end(std::size_t p, std::size_t le) const {
+        if (!rules_.macro_b || le - p < 6) return p;
+        for (const char* kw : {"DPRNT", "BPRNT"}) {
+            std::size_t i = 0;
+            while (i < 5 && std::toupper(static_cast<unsigned char>(text_[p + i])) == kw[i]) ++i;
+            if (i < 5) continue;
+            std::size_t q = skip_blanks(p + 5, le);
+            if (q >= le || text_[q] != '[') return p;
+            int depth = 0;
+            for (; q < le; ++q) {
+                if (text_[q] == '[') ++depth;
+                else if (text_[q] == ']' && --depth == 0) return q + 1;
+            }
+            return p;
+        }
+        return p;
+    }
+
+    // Past one item: up to the next blank, comment, ';', or letter after a value.
     std::size_t skip_item(std::size_t p, std::size_t le) const {
+        if (const std::size_t printed = print_text_end(p, le); printed != p) return printed;
         if (p < le) ++p;
         while (p < le) {
             const char c = text_[p];
             if (blank(c) || c == '(' || c == ';' || line_comment_at(p)) break;
+            // A letter after a value starts the next item (O6DPRNT[...], G0X1).
+            if (std::isalpha(static_cast<unsigned char>(c)) && !std::isalpha(static_cast<unsigned char>(text_[p - 1]))) break;
             ++p;
         }
         return p;
     }
 
-    // The O word after '%' on the same line (%O0003(...)): blanks and comments may come between.
+    // The O word after '%' on the same line (%O0003(...)): blanks, comments and more '%' may come
+    // between (ast::ProgramSplitter skips the same tokens).
     std::size_t percent_program(std::size_t p, std::size_t le, Block& b) const {
         while (p < le) {
-            if (blank(text_[p])) {
+            if (blank(text_[p]) || text_[p] == '%') {
                 ++p;
             } else if (rules_.paren_comments && text_[p] == '(') {
                 p = comment_end(p, le, b);
@@ -147,11 +196,36 @@ private:
                 break;
             }
         }
-        if (p < le && (text_[p] == 'O' || text_[p] == 'o')) {
+        if (p < le && (text_[p] == 'O' || text_[p] == 'o') && !o_is_error(p, le)) {
             b.has_o = true;
             read_number(p + 1, le, b);
         }
         return p;
+    }
+
+    // An O that the grammar reads as an error, not as a word (grammar/block_def.hpp): OO12 (letter O
+    // for zero, S0103), O? (placeholder, S0104), O1.2. (two points, S0102), ORIGIN (three letters or
+    // more, S0106). Such a block is code, not the start of a program.
+    bool o_is_error(std::size_t p, std::size_t le) const {
+        const std::size_t q = p + 1;
+        if (q >= le) return false;
+        const char next = text_[q];
+        if (next == 'O' || next == 'o') {
+            std::size_t r = q;
+            while (r < le && (text_[r] == 'O' || text_[r] == 'o' || digit(text_[r]) || text_[r] == '.')) ++r;
+            if (r == le || !std::isalpha(static_cast<unsigned char>(text_[r]))) return true;
+        }
+        if (next == '?' || next == '_') return true;
+        std::size_t s = skip_blanks(q, le);
+        if (s < le && (text_[s] == '-' || text_[s] == '+')) ++s;
+        bool digits = false;
+        for (; s < le && digit(text_[s]); ++s) digits = true;
+        if (s < le && text_[s] == '.')
+            for (++s; s < le && digit(text_[s]); ++s) digits = true;
+        if (digits && s < le && text_[s] == '.') return true;
+        std::size_t run = q;
+        while (run < le && std::isalpha(static_cast<unsigned char>(text_[run]))) ++run;
+        return run - p >= 3;
     }
 
     // 00018 as the first item of a block: a program number whose O was written as the digit 0
@@ -178,7 +252,8 @@ private:
         double value = 0;
         bool digits = false;
         for (; p < le && digit(text_[p]); ++p, digits = true) value = value * 10 + (text_[p] - '0');
-        if (p < le && text_[p] == '.') {
+        const bool comma = rules_.decimal_comma && digits && p + 1 < le && text_[p] == ',' && digit(text_[p + 1]);
+        if (p < le && (text_[p] == '.' || comma)) {
             for (++p; p < le && digit(text_[p]); ++p, digits = true)
                 if (text_[p] != '0') return;   // O60.5: a program without number
         }
@@ -262,6 +337,8 @@ ScanRules ScanRules::of(const dialects::LexicalRules& lexical) {
     r.semicolon_ends_block = lexical.semicolon == dialects::SemicolonRole::end_of_block;
     r.paren_comments = lexical.paren_comments;
     r.line_comments = lexical.line_comments;
+    r.decimal_comma = lexical.decimal_comma_lenient;
+    r.macro_b = lexical.macro_b;
     return r;
 }
 

@@ -31,6 +31,8 @@ struct ScanRules {
     bool semicolon_ends_block = true;     // false: ';' starts a comment (pcnc-mill)
     bool paren_comments = true;
     std::vector<std::string> line_comments;   // "::", ";;" (ADV400)
+    bool decimal_comma = true;                // O1,5 reads as 1.5 (LexicalRules::decimal_comma_lenient)
+    bool macro_b = true;                      // DPRNT[...]/BPRNT[...] text: its ';' ends no block
     static ScanRules of(const dialects::LexicalRules& lexical);
 };
 

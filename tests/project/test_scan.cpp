@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <cstdlib>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -137,4 +139,27 @@ TEST_CASE("scan: numbers, ranges and first comments as written") {
     const std::vector<ScannedProgram> q = scan_programs("G0 X1\nM30\nO5\nM99\n");
     REQUIRE(q.size() == 1);
     CHECK(q[0].program_index == 1);
+}
+
+// Random texts from the pieces the scan treats specially, many times over: any disagreement with
+// the parser is printed with the text.
+TEST_CASE("scan: random texts of O lines, '%', comments, ';' and block deletes agree with the parser") {
+    const char* const pieces[] = {"O1", "o2", "O 3", ":4", "%", "%O5", "% (C) O6", "(C)", "(UNCLOSED", "/O7", "/2 O8",
+                                  "N10 O9", "G0 X1", "00012", "0001.", "000123456", "#1=2", ";", ";;", "::", "O1.5",
+                                  "O#1", "M99", "", "  ", "\r", "\xEF\xBB\xBF", "(A(B)C)", "X1;O10", "G1(C);O11",
+                                  "OO12", "O?", "ORIGIN", "OR", "O1.2.", "O-5", "O1,5", "MO6", "DPRNT[X;Y]", "(;)", "O",
+                                  "0", "IF[#1EQ1]GOTO5", "N10...", "O1X2"};
+    std::mt19937 random(2026);
+    std::uniform_int_distribution<std::size_t> piece(0, std::size(pieces) - 1), count(0, 3), lines(1, 12);
+    const auto& registry = kerf::dialects::builtin_registry();
+    const int rounds = std::getenv("KERF_SCAN_ROUNDS") ? std::atoi(std::getenv("KERF_SCAN_ROUNDS")) : 3000;
+    for (int round = 0; round < rounds; ++round) {
+        std::string text;
+        for (std::size_t l = lines(random); l > 0; --l) {
+            for (std::size_t n = count(random); n > 0; --n) text += std::string(pieces[piece(random)]) + (n % 2 ? "" : " ");
+            text += "\n";
+        }
+        INFO(text);
+        for (const char* id : {"fanuc-lathe-a", "adv400-mill", "pcnc-mill"}) check_agrees(text, *registry.find(id));
+    }
 }
