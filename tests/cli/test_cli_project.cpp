@@ -1,0 +1,99 @@
+// The project layer through the command line (issues 12 and 13): folder walks that find every
+// program and list what they skip, .kerf.toml strictness in every command, calls that reach
+// programs inside other files of the folder and of library folders, and one finding for one
+// missing program.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <boost/json.hpp>
+#include <filesystem>
+
+#include "tests/cli/cli_runner.hpp"
+
+namespace fs = std::filesystem;
+using namespace kerf::test;
+
+namespace {
+
+const fs::path kWork = fs::temp_directory_path() / ("kerf-test-cli-project-" + std::to_string(::getpid()));
+
+CliRun run(const std::string& args) { return run_kerf(args, kWork / "runs"); }
+
+std::size_t count(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("kerf check on the corpus folder finds all 60 programs and skips only MANIFEST.md") {
+    const fs::path corpus = fs::path(KERF_SHARED_DIR) / "corpus";
+    if (!fs::is_directory(corpus)) {
+        WARN("../shared is not there: the corpus walk was not checked");
+        return;
+    }
+    // Before the project layer the walk found 54 (no 205, 220, 240, O0003, O8000, test.src).
+    const CliRun json = run("check --format json " + shell_quote(corpus));
+    REQUIRE((json.code == 0 || json.code == 1));
+    CHECK(boost::json::parse(json.out).at("files_checked").as_int64() == 60);
+    const CliRun verbose = run("check --verbose " + shell_quote(corpus));
+    CHECK(verbose.err == (corpus / "MANIFEST.md").string() + ": skipped: not a program: no NC block in the first 65 lines\n");
+    CHECK(verbose.out.find("in 60 file(s) checked; 1 file(s) skipped (listed on stderr)\n") != std::string::npos);
+    const CliRun quiet = run("check " + shell_quote(corpus));
+    CHECK(quiet.out.find("in 60 file(s) checked; 1 file(s) skipped (--verbose lists them)\n") != std::string::npos);
+}
+
+TEST_CASE("an unknown .kerf.toml key stops every command with its position and the valid keys") {
+    const fs::path dir = kWork / "strict";
+    write_text(dir / ".kerf.toml", "dialect = \"fanuc-mill\"\n[check]\nincludes = [\"*.nc\"]\n");
+    const fs::path nc = write_text(dir / "a.nc", "O1\nG00 X1. Y1.\nM30\n");
+    const std::string where = (dir / ".kerf.toml").string() + ":3:1: error: check.includes: unknown key; the keys of [check] are include, exclude and rules";
+    for (const char* command : {"check", "run", "plot", "fmt --check", "parse"}) {
+        INFO(command);
+        const CliRun r = run(std::string(command) + " " + shell_quote(nc));
+        CHECK(r.code == 2);
+        CHECK(r.err.find(where) != std::string::npos);
+        CHECK(count(r.err, where) == 1);   // once, not once per file or per dialect
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("calls reach programs inside other files of the folder and of library folders") {
+    const fs::path dir = kWork / "calls";
+    const fs::path lib = kWork / "macros";
+    // O2000 is the second program of a punch-out named ALL.TXT; O9810 lives in a library folder.
+    write_text(dir / "ALL.TXT", "%\nO1000 (FIRST)\nM99\nO2000 (SECOND)\nG00 X20. Y0.\nM99\n%\n");
+    write_text(lib / "probe", "O9810 (MOVE)\nG00 X30. Y0.\nM99\n");
+    write_text(dir / ".kerf.toml", "dialect = \"fanuc-mill\"\n[programs]\nlibrary = [\"../macros\"]\n");
+    const fs::path main = write_text(dir / "main.nc", "O0001\nG90 G00 X0. Y0.\nM98 P2000\nG65 P9810\nM98 P4321\nM30\n");
+    // kerf run: both calls reached (final X30. from O9810), O4321 missing: alarm 078 at line 5.
+    const CliRun r = run("run " + shell_quote(main));
+    CHECK(r.code == 1);
+    CHECK(r.err == main.string() + ":5: error: alarm 78: program O4321 not found (alarm 078)\n");
+    CHECK(r.out.find("final position X30.000 Y0.000") != std::string::npos);
+    // kerf check: the missing program once (K3003 at the P word), not also as K4009.
+    const CliRun c = run("check " + shell_quote(main));
+    CHECK(c.code == 1);
+    CHECK(count(c.out, "error K") == 1);
+    CHECK(c.out.find(main.string() + ":5:5: error K3003 program-not-found: program O4321 is not in this file, the files of its folder or the library folders (alarm 078)") != std::string::npos);
+    fs::remove_all(dir);
+    fs::remove_all(lib);
+}
+
+TEST_CASE("kerf check --fix and kerf fmt --write replace files through the one atomic writer") {
+    const fs::path dir = kWork / "writer";
+    const fs::path check_file = write_text(dir / "fix.nc", "O1\nT2 MO6\nM30\n");
+    const fs::path fmt_file = write_text(dir / "fmt.nc", "O1\ng0 x1.\nM30\n");
+    for (const fs::path& f : {check_file, fmt_file}) fs::permissions(f, fs::perms(0640));
+    run("check --fix --dialect fanuc-mill " + shell_quote(check_file));
+    run("fmt --write --dialect fanuc-mill " + shell_quote(fmt_file));
+    CHECK(read_text(check_file) == "O1\nT2 M06\nM30\n");
+    CHECK(read_text(fmt_file) == "O1\nG0 X1.\nM30\n");
+    for (const fs::path& f : {check_file, fmt_file}) CHECK((fs::status(f).permissions() & fs::perms::all) == fs::perms(0640));
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+    CHECK(entries == 2);   // no temp file left
+    fs::remove_all(dir);
+}
