@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +26,9 @@ inline std::filesystem::path write_text(const std::filesystem::path& path, const
     std::ofstream(path, std::ios::binary) << text;
     return path;
 }
+
+// An empty folder `<temp>/kerf-<name>-<pid>` (removed first if it is there); the caller removes it.
+inline std::filesystem::path fresh_folder(const std::string& name);
 
 // Every file under ../shared/reference/examples and ../shared/corpus but MANIFEST.md, sorted;
 // none when ../shared is absent.
@@ -46,6 +51,13 @@ inline std::vector<std::filesystem::path> shared_files_or_warn(const std::string
     std::vector<std::filesystem::path> files = shared_files();
     if (files.empty()) WARN("../shared is not there: " << skipped);
     return files;
+}
+
+inline std::filesystem::path fresh_folder(const std::string& name) {
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("kerf-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
 }
 
 }  // namespace kerf::test

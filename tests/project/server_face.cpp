@@ -19,13 +19,6 @@ using kerf::test::write_text;
 
 namespace {
 
-fs::path fresh(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("kerf-server-face-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 std::vector<std::string> rules_of(const CheckedFile& c) {
     std::vector<std::string> out;
     for (const kerf::analyzer::Finding& f : c.report.findings) out.push_back(f.rule);
@@ -35,7 +28,7 @@ std::vector<std::string> rules_of(const CheckedFile& c) {
 }  // namespace
 
 TEST_CASE("server face: dialect from the client setting, then .kerf.toml, then the header, then detection") {
-    const fs::path dir = fresh("dialect");
+    const fs::path dir = kerf::test::fresh_folder("server-face-dialect");
     write_text(dir / "cfg" / ".kerf.toml", "dialect = \"fanuc-lathe-b\"\n");
     const std::string headed = "(DIALECT: fanuc-mill)\nO1\nG00 X1. Y1.\nM30\n";
     auto overlay = std::make_shared<OverlayFileSystem>(std::make_shared<DiskFileSystem>());
@@ -70,7 +63,7 @@ TEST_CASE("server face: dialect from the client setting, then .kerf.toml, then t
 }
 
 TEST_CASE("server face: a bad .kerf.toml is a problem on its line; the machine from the config or the setting") {
-    const fs::path dir = fresh("machine");
+    const fs::path dir = kerf::test::fresh_folder("server-face-machine");
     write_text(dir / "radius.toml", "id = \"radius\"\nbase = \"fanuc-lathe\"\ndiameter_x = false\n");
     write_text(dir / ".kerf.toml", "dialect = \"fanuc-lathe-a\"\nmachine = \"radius.toml\"\n");
     Workspace w;
@@ -90,7 +83,7 @@ TEST_CASE("server face: a bad .kerf.toml is a problem on its line; the machine f
 }
 
 TEST_CASE("server face: the index finds programs inside other files and follows document edits") {
-    const fs::path dir = fresh("index");
+    const fs::path dir = kerf::test::fresh_folder("server-face-index");
     write_text(dir / "library.nc", "%\nO9000 (PROBE)\nM99\nO9001 (ALIGN)\nM99\n%\n");
     write_text(dir / ".kerf.toml", "dialect = \"fanuc-mill\"\n[programs]\nlibrary = [\"../macros-" + std::to_string(::getpid()) + "\"]\n");
     const fs::path macros = dir.parent_path() / ("macros-" + std::to_string(::getpid()));

@@ -17,13 +17,6 @@ using kerf::test::write_text;
 
 namespace {
 
-fs::path fresh(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("kerf-writer-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 std::size_t entries(const fs::path& dir) {
     return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
 }
@@ -31,7 +24,7 @@ std::size_t entries(const fs::path& dir) {
 }  // namespace
 
 TEST_CASE("writer: replaces the text, keeps the permissions, leaves no temp file") {
-    const fs::path dir = fresh("replace");
+    const fs::path dir = kerf::test::fresh_folder("writer-replace");
     const fs::path file = write_text(dir / "part.nc", "O1\nG0X1\nM30\n");
     REQUIRE(::chmod(file.c_str(), 0640) == 0);
     CHECK_FALSE(write_atomically(file, "O1\nG00 X1\nM30\n"));
@@ -44,7 +37,7 @@ TEST_CASE("writer: replaces the text, keeps the permissions, leaves no temp file
 }
 
 TEST_CASE("writer: a new file is created; a big text is written whole") {
-    const fs::path dir = fresh("new");
+    const fs::path dir = kerf::test::fresh_folder("writer-new");
     const std::string big(5 << 20, 'X');
     CHECK_FALSE(write_atomically(dir / "new.nc", big));
     CHECK(read_text(dir / "new.nc") == big);
@@ -53,7 +46,7 @@ TEST_CASE("writer: a new file is created; a big text is written whole") {
 }
 
 TEST_CASE("writer: on failure the original is untouched and nothing is left behind") {
-    const fs::path dir = fresh("fail");
+    const fs::path dir = kerf::test::fresh_folder("writer-fail");
     // A folder where the file should be: rename() cannot replace it.
     fs::create_directories(dir / "part.nc");
     write_text(dir / "part.nc" / "inside", "kept");
