@@ -23,11 +23,12 @@ std::vector<std::string> keys(const std::vector<analyzer::Finding>& findings) {
 }  // namespace
 
 TEST_CASE("the dry run beside the static rules finds what it finds after them") {
-    // Static findings (letter O for zero, a missing subprogram), dynamic ones (a feed move without
-    // feed: K5001; the missing program again as alarm 078) and a long body between them.
+    // Static findings (letter O for zero, a missing subprogram), a dynamic one (the program's own
+    // alarm #3000 at the end: K4006; the missing program's alarm 078 is K3003's, reported once) and
+    // a long body between them.
     std::string text = "O0001\nT1 MO6\nG90 G01 X10. Y10.\n";
     for (int i = 0; i < 20000; ++i) text += "G01 X" + std::to_string(i % 97) + ". Y" + std::to_string(i % 89) + ". F500.\n";
-    text += "M98 P4321\nM30\n";
+    text += "#3000=1(END)\nM98 P4321\nM30\n";
     const dialects::Dialect& d = test::dialect("fanuc-mill");
     const interpreter::Setup setup = interpreter::default_setup(d);
     analyzer::CheckOptions sequential;

@@ -35,14 +35,23 @@ TEST_CASE("kerf check on the corpus folder finds all 60 programs and skips only 
         return;
     }
     // Before the project layer the walk found 54 (no 205, 220, 240, O0003, O8000, test.src).
-    const CliRun json = run("check --format json " + shell_quote(corpus));
-    REQUIRE((json.code == 0 || json.code == 1));
-    CHECK(boost::json::parse(json.out).at("files_checked").as_int64() == 60);
-    const CliRun verbose = run("check --verbose " + shell_quote(corpus));
-    CHECK(verbose.err == (corpus / "MANIFEST.md").string() + ": skipped: not a program: no NC block in the first 65 lines\n");
-    CHECK(verbose.out.find("in 60 file(s) checked; 1 file(s) skipped (listed on stderr)\n") != std::string::npos);
-    const CliRun quiet = run("check " + shell_quote(corpus));
-    CHECK(quiet.out.find("in 60 file(s) checked; 1 file(s) skipped (--verbose lists them)\n") != std::string::npos);
+    const CliRun r = run("check --verbose --format json " + shell_quote(corpus));
+    REQUIRE((r.code == 0 || r.code == 1));
+    CHECK(boost::json::parse(r.out).at("files_checked").as_int64() == 60);
+    CHECK(r.err == (corpus / "MANIFEST.md").string() + ": skipped: not a program: no NC block in the first 65 lines\n");
+}
+
+TEST_CASE("kerf check counts the skipped files in its summary; --verbose lists them") {
+    const fs::path dir = kWork / "summary";
+    write_text(dir / "a.nc", "O1\nM30\n");
+    write_text(dir / "notes.txt", "notes about the parts\n");
+    const CliRun quiet = run("check --dialect fanuc-mill " + shell_quote(dir));
+    CHECK(quiet.out.find("in 1 file(s) checked; 1 file(s) skipped (--verbose lists them)\n") != std::string::npos);
+    CHECK(quiet.err.empty());
+    const CliRun verbose = run("check --verbose --dialect fanuc-mill " + shell_quote(dir));
+    CHECK(verbose.out.find("in 1 file(s) checked; 1 file(s) skipped (listed on stderr)\n") != std::string::npos);
+    CHECK(verbose.err == (dir / "notes.txt").string() + ": skipped: not a program: no NC block in the first 1 lines\n");
+    fs::remove_all(dir);
 }
 
 TEST_CASE("an unknown .kerf.toml key stops every command with its position and the valid keys") {
