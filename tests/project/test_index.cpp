@@ -2,6 +2,8 @@
 // and the deterministic choice among files that hold the same number.
 #include <catch2/catch.hpp>
 
+#include <fmt/format.h>
+
 #include <thread>
 
 #include "project/index.hpp"
@@ -76,7 +78,8 @@ TEST_CASE("index: two copies in one file count once; the first one is taken") {
 TEST_CASE("index: readers and a writer at once") {
     ProgramIndex index;
     std::thread writer([&] {
-        for (int i = 0; i < 2000; ++i) index.update_file("/w/f" + std::to_string(i % 50) + ".nc", "O" + std::to_string(i) + "\nM99\n");
+        for (int i = 0; i < 2000; ++i)
+            index.update_file(fmt::format("/w/f{}.nc", i % 50), fmt::format("O{}\nM99\n", i));
     });
     std::size_t seen = 0;
     for (int i = 0; i < 2000; ++i) seen += index.find(i, "/w/main.nc", folders({"/w"})).has_value();

@@ -2,6 +2,7 @@
 // programs (number, index in the file, byte range) on every reference example and corpus file,
 // under every dialect's lexical rules; and the constructs the scan must read as the grammar does.
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <filesystem>
 #include <cstdlib>
@@ -40,8 +41,7 @@ std::vector<ScannedProgram> parsed_programs(const std::string& text, const kerf:
 std::string describe(const std::vector<ScannedProgram>& programs) {
     std::string s;
     for (const ScannedProgram& p : programs)
-        s += "O" + std::to_string(p.number) + " #" + std::to_string(p.program_index) + " [" + std::to_string(p.begin) + "," +
-             std::to_string(p.end) + ") ";
+        s += fmt::format("O{} #{} [{},{}) ", p.number, p.program_index, p.begin, p.end);
     return s;
 }
 
