@@ -257,7 +257,7 @@ Location locate(const ast::LineIndex& lines, ast::Range range) {
     return {b.line + 1, b.column + 1, e.line + 1, e.column + 1};
 }
 
-bool BlockContext::modal_function(std::string_view function) const {
+bool BlockContext::modal_function(dialects::FunctionId function) const {
     for (const auto& [group, info] : modal)
         if (info && info->function == function) return true;
     return false;

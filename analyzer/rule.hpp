@@ -102,14 +102,14 @@ struct BlockContext {
     std::size_t program = 0;           // index into typed.programs()
     const ast::SyntaxTree& tree() const { return file.typed.tree(); }
     // A G or M code of the block has `function`. Inline: every rule asks it of every block.
-    bool has_function(std::string_view function) const {
+    bool has_function(dialects::FunctionId function) const {
         for (const ast::CodeRef& c : g)
             if (c.info && c.info->function == function) return true;
         for (const ast::CodeRef& c : m)
             if (c.info && c.info->function == function) return true;
         return false;
     }
-    bool modal_function(std::string_view function) const; // active before the block
+    bool modal_function(dialects::FunctionId function) const; // active before the block
     const ast::Token& token(std::uint32_t i) const { return tree().tokens[i]; }
 };
 

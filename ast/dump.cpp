@@ -185,7 +185,7 @@ json::value code_json(const TypedFile& file, const CodeRef& c, const LineIndex& 
         o["code"] = c.info->spelling;
         o["group"] = c.info->group;
         o["modal"] = c.info->modal;
-        o["function"] = c.info->function;
+        o["function"] = c.info->function.name();
     } else {
         o["code"] = nullptr;
     }

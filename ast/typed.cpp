@@ -73,7 +73,7 @@ BlockFacts bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t 
     const std::uint32_t end = tree.block_token_end(index);
     BlockFacts facts;
     // First the block's codes: they decide what the other letters mean.
-    std::uint8_t traits = 0;         // union of the codes' binder traits
+    std::uint32_t traits = 0;        // union of the codes' traits
     std::uint32_t data_letters = 0;  // letters that are data in this block (G04 X, G71 U), one bit each
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
@@ -81,19 +81,19 @@ BlockFacts bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t 
         t.set_role(t.letter == 'G' ? Role::g_code : Role::m_code);
         const Info* info = code_info(tree, d, t);
         if (!info) continue;
-        traits |= info->binder_traits;
+        traits |= info->traits;
         data_letters |= info->parameter_mask;
-        facts.calls |= (info->binder_traits & Info::kCallsSubprogram) != 0;
-        if (info->binder_traits & Info::kMotionGroup) context.linear = (info->binder_traits & Info::kLinear) != 0;
+        facts.calls |= info->has(dialects::traits::calls_subprogram);
+        if (info->has(dialects::traits::motion_group)) context.linear = info->has(dialects::traits::linear);
     }
-    if (traits & Info::kTakesArguments) {
+    if (traits & dialects::traits::takes_arguments) {
         // G65/G66: every other word is an argument, M too (`M13` → #13, dialects.md §3.7).
         data_letters = ~std::uint32_t{0};
         facts.calls = false;
         for (std::uint32_t i = first; i < end; ++i)
             if (Token& t = tree.tokens[i]; t.kind == TokenKind::word && t.letter == 'M') t.set_role(Role::parameter);
     }
-    const bool direct_drawing = d.lexical.plain_direct_drawing && context.linear && !(traits & Info::kOneShot);
+    const bool direct_drawing = d.lexical.plain_direct_drawing && context.linear && !(traits & dialects::traits::one_shot);
     bool seen_n = false;
     for (std::uint32_t i = first; i < end; ++i) {
         Token& t = tree.tokens[i];
@@ -225,8 +225,8 @@ void TypedFile::rebind_block(SyntaxTree& tree, std::size_t index) {
     bool found = false;
     for (std::size_t i = index; i-- > 0 && !found;) {
         for (const CodeRef& g : block(i).g_codes()) {
-            if (g.info && (g.info->binder_traits & dialects::CodeInfo::kMotionGroup)) {
-                context.linear = (g.info->binder_traits & dialects::CodeInfo::kLinear) != 0;
+            if (g.info && g.info->has(dialects::traits::motion_group)) {
+                context.linear = g.info->has(dialects::traits::linear);
                 found = true;
             }
         }
@@ -338,7 +338,7 @@ std::optional<std::uint32_t> BlockView::word(char letter) const {
     return std::nullopt;
 }
 
-bool BlockView::has_code(char letter, std::string_view function) const {
+bool BlockView::has_code(char letter, dialects::FunctionId function) const {
     for (const CodeRef& c : letter == 'G' ? g_codes() : m_codes())
         if (c.info && c.info->function == function) return true;
     return false;

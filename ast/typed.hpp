@@ -72,7 +72,7 @@ public:
     void collect_codes(std::vector<CodeRef>& g, std::vector<CodeRef>& m) const;
     std::vector<std::uint32_t> statements() const;   // statement tokens
     std::optional<std::uint32_t> word(char letter) const;   // first word with this letter
-    bool has_code(char letter, std::string_view function) const;
+    bool has_code(char letter, dialects::FunctionId function) const;
     std::optional<SubprogramCall> subprogram_call() const;
     std::optional<MacroCall> macro_call() const;
 

@@ -84,12 +84,18 @@ int run_explain(const ExplainOptions& o) {
 
 Command add_dialects_command(CLI::App& app) {
     auto files = std::make_shared<std::vector<std::string>>();
+    auto functions = std::make_shared<bool>(false);
     CLI::App* cmd = app.add_subcommand("dialects", "list the dialects");
     cmd->add_option("--dialect-file", *files, "also load a dialect data file (TOML)");
-    return [files] {
+    cmd->add_flag("--functions", *functions, "print the function id tables of docs/functions.md (markdown)");
+    return [files, functions] {
         const project::DialectRegistry reg =
             project::load_dialects({files->begin(), files->end()}, project::DiskFileSystem());
         const bool errors = ProblemPrinter().print(reg.problems);
+        if (*functions) {
+            std::cout << dialects::function_tables_markdown(reg.registry);
+            return errors ? kExitUsage : kExitClean;
+        }
         for (const std::string& id : reg.registry.ids()) {
             const dialects::Dialect* d = reg.registry.find(id);
             std::size_t g = 0, m = 0;

@@ -1,5 +1,4 @@
 #include "dialects/dialect.hpp"
-#include "dialects/functions.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -56,7 +55,7 @@ const CodeInfo* Dialect::code(std::string_view spelling) const {
     return parsed ? code(parsed->first, parsed->second) : nullptr;
 }
 
-std::vector<const CodeInfo*> Dialect::codes_with_function(std::string_view function) const {
+std::vector<const CodeInfo*> Dialect::codes_with_function(FunctionId function) const {
     std::vector<const CodeInfo*> out;
     for (const CodeInfo& info : codes_)
         if (info.function == function) out.push_back(&info);
@@ -78,19 +77,30 @@ void Dialect::set_codes(std::vector<CodeInfo> codes) {
     reindex();
 }
 
+namespace {
+// The code's traits: its function's, and its group's for G codes (group 00 one-shot, group 01 the
+// motion group; reference/gcode-tables.md "group" columns).
+std::uint32_t code_traits(const CodeInfo& info) {
+    std::uint32_t t = info.function.def().traits;
+    if (info.letter == 'G' && info.group == "00") t |= traits::one_shot;
+    if (info.letter == 'G' && info.group == "01") t |= traits::motion_group;
+    return t;
+}
+}  // namespace
+
 void Dialect::reindex() {
     index_.clear();
     g_fast_.assign(kFastCodes, -1);
     m_fast_.assign(kFastCodes, -1);
+    groups_.assign(1, std::string());
+    for (const CodeInfo& info : codes_) groups_.push_back(info.group);
+    std::sort(groups_.begin(), groups_.end());
+    groups_.erase(std::unique(groups_.begin(), groups_.end()), groups_.end());
     for (std::size_t i = 0; i < codes_.size(); ++i) {
         CodeInfo& info = codes_[i];
-        info.binder_traits = static_cast<std::uint8_t>(
-            (info.letter == 'G' && info.group == "01" ? CodeInfo::kMotionGroup : 0) |
-            (info.function == functions::macro_call || info.function == functions::modal_macro_call
-                 ? CodeInfo::kTakesArguments : 0) |
-            (info.function == functions::linear ? CodeInfo::kLinear : 0) |
-            (info.letter == 'G' && info.group == "00" ? CodeInfo::kOneShot : 0) |
-            (info.function == functions::subprogram_call ? CodeInfo::kCallsSubprogram : 0));
+        info.traits = code_traits(info);
+        info.group_index = static_cast<std::uint8_t>(
+            std::lower_bound(groups_.begin(), groups_.end(), info.group) - groups_.begin());
         info.parameter_mask = 0;
         for (const char L : info.parameter_letters)
             if (L >= 'A' && L <= 'Z') info.parameter_mask |= std::uint32_t{1} << (L - 'A');

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "dialects/functions.hpp"
+
 namespace kerf::dialects {
 
 // G12.1 → 121, G00 → 0, M329 → 3290: one decimal digit is all FANUC codes use.
@@ -34,7 +36,7 @@ struct CodeInfo {
     std::string group;                     // "00" one-shot, "" none
     bool modal = false;
     bool power_on_default = false;
-    std::string function;                  // shared semantic id (docs/functions.md)
+    FunctionId function;                   // shared semantic id (docs/functions.md)
     std::vector<std::string> words;        // "X", ",A", ...
     std::string parameter_letters;         // letters that are data, not axis moves, in this code's block (G04 X, G71 U)
     std::vector<std::string> required;
@@ -46,16 +48,17 @@ struct CodeInfo {
     std::string reference;
     std::string notes;
 
-    // Derived from the fields above when the dialect is indexed, so the binder's hot loop compares
-    // bits, not strings.
-    std::uint8_t binder_traits = 0;
-    static constexpr std::uint8_t kMotionGroup = 1;   // group 01
-    static constexpr std::uint8_t kTakesArguments = 2;   // G65/G66: the other words are macro arguments
-    static constexpr std::uint8_t kLinear = 8;           // G01: plain A/R may be direct drawing
-    static constexpr std::uint8_t kOneShot = 16;         // group 00: no direct drawing in its block
-    static constexpr std::uint8_t kCallsSubprogram = 32; // M98
-    std::uint32_t parameter_mask = 0;                    // parameter_letters as bits (A = bit 0)
+    // Derived from the fields above when the dialect is indexed (Dialect::reindex), so hot loops
+    // compare bits, not strings: the function's traits plus the group's (traits::one_shot for a G
+    // code of group 00, traits::motion_group for group 01).
+    std::uint32_t traits = 0;
+    std::uint32_t parameter_mask = 0;   // parameter_letters as bits (A = bit 0)
+    std::uint8_t group_index = 0;       // index of `group` in Dialect::groups() (0: no group, "")
 
+    bool has(std::uint32_t trait) const { return (traits & trait) != 0; }
+    PlaneTrait plane() const { return plane_of(traits); }
+    int position_offset() const { return function.def().position_offset; }   // G45–G48: ±1, ±2 D
+    int work_coordinate() const { return function.def().work_coordinate; }   // G54–G59: 1–6
     bool takes_word(std::string_view word) const;
 };
 
@@ -96,7 +99,11 @@ public:
     std::span<const CodeInfo> codes() const { return codes_; }
     // All codes with a function id (several in C for renamed codes is impossible; at most one per dialect
     // is usual, but the API returns all).
-    std::vector<const CodeInfo*> codes_with_function(std::string_view function) const;
+    std::vector<const CodeInfo*> codes_with_function(FunctionId function) const;
+
+    // The modal groups of the codes, sorted, "" first: CodeInfo::group_index indexes it, so the
+    // modal state can be a flat array (one slot per group) in the order of the group names.
+    std::span<const std::string> groups() const { return groups_; }
 
     // O(1) lookup used by the binder on every G and M word.
     const CodeInfo* fast_code(char letter, CodeKey key) const;
@@ -107,6 +114,7 @@ public:
 private:
     static constexpr CodeKey kFastCodes = 10000;   // G/M keys below 1000.0
     std::vector<CodeInfo> codes_;
+    std::vector<std::string> groups_;
     std::map<std::pair<char, CodeKey>, std::size_t> index_;
     std::vector<std::int32_t> g_fast_;
     std::vector<std::int32_t> m_fast_;
@@ -150,6 +158,7 @@ public:
     // Adds a user file: a base dialect, or an overlay combined with every base it applies to.
     std::vector<LoadError> add_text(std::string_view toml_text, std::string_view source_name);
     std::vector<LoadError> add_file(DialectFile file, std::string_view source_name);
+    std::span<const DialectFile> overlay_files() const { return overlays_; }
 
 private:
     std::deque<Dialect> dialects_;   // a deque keeps pointers stable as dialects are added
@@ -158,6 +167,11 @@ private:
 
 // The dialects compiled into the binary (dialects/data/*.toml), with overlays combined.
 const Registry& builtin_registry();
+
+// docs/functions.md's two tables (G-code and M-code functions: id, meaning, the codes of each
+// dialect of `registry` with that function, traits), from the vocabulary in functions.hpp;
+// `kerf dialects --functions` prints them and tests/dialects/test_functions.cpp keeps the file equal.
+std::string function_tables_markdown(const Registry& registry);
 
 // The built-in data file texts by file stem ("fanuc-lathe-a", "spinner"), for `kerf dialects --dump`.
 std::span<const std::pair<std::string_view, std::string_view>> builtin_dialect_texts();

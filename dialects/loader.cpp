@@ -86,6 +86,20 @@ Availability parse_availability(Reader& r, const toml::table& t, std::string_vie
     return Availability::standard;
 }
 
+// The `function` key: an id of the vocabulary (docs/functions.md), or a load error at the value.
+FunctionId read_function(Reader& r, const toml::table& t, std::string_view where) {
+    const std::string id = r.string(t, "function", where, true);
+    if (id.empty()) return {};
+    if (const std::optional<FunctionId> f = FunctionId::find(id)) return *f;
+    const std::optional<std::string_view> near = closest_function_id(id);
+    r.error(t.get("function"),
+            fmt::format("{}.function: unknown function id '{}'{} (docs/functions.md lists the ids; a machine builder's "
+                        "code kerf does not model is \"{}\")",
+                        where, id, near ? fmt::format("; did you mean '{}'?", *near) : std::string(),
+                        functions::machine_builder_code));
+    return {};
+}
+
 std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, std::size_t index) {
     const std::string where = fmt::format("{}[{}]", letter == 'G' ? "g" : "m", index);
     CodeInfo info;
@@ -107,7 +121,7 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     info.group = r.string(t, "group", label, letter == 'G');
     info.modal = r.boolean(t, "modal", label, false, letter == 'G');
     info.power_on_default = r.boolean(t, "default", label, false);
-    info.function = r.string(t, "function", label, true);
+    info.function = read_function(r, t, label);
     info.words = r.strings(t, "words", label);
     for (const std::string& w : r.strings(t, "parameter_words", label)) {
         if (w.size() != 1) r.error(t.get("parameter_words"), fmt::format("{}.parameter_words: '{}' is not one letter", label, w));

@@ -277,7 +277,7 @@ private:
             if (t.kind != TokenKind::word || t.role() != Role::g_code || !t.is_number()) continue;
             const auto key = dialects::code_key(tree_.number_value(t));
             const dialects::CodeInfo* info = key ? file_.dialect().fast_code('G', *key) : nullptr;
-            if (info && (info->binder_traits & dialects::CodeInfo::kTakesArguments)) return false;
+            if (info && info->has(dialects::traits::takes_arguments)) return false;
         }
         return true;
     }

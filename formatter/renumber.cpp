@@ -20,8 +20,8 @@ using ast::Severity;
 
 // Cycles whose P and Q name the first and last block of a profile (reference/cycles.md §1–§4:
 // G70–G73 in system A; G72–G75 in system C). Found by function id, never by number.
-constexpr std::array<std::string_view, 4> kProfileCycles = {"finishing-cycle", "rough-turning-cycle",
-                                                           "rough-facing-cycle", "pattern-repeating-cycle"};
+constexpr std::array<dialects::FunctionId, 4> kProfileCycles = {fn::finishing_cycle, fn::rough_turning_cycle,
+                                                                fn::rough_facing_cycle, fn::pattern_repeating_cycle};
 
 // One reference to a sequence number: a word whose value is the number, or a GOTO label.
 struct Reference {

@@ -70,7 +70,7 @@ void Executor::update_flags() {
     for (const auto& [group, code] : modal_) {
         if (!code) continue;
         const std::uint32_t c = code_class_of(*code);
-        const bool motion_group = (code->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
+        const bool motion_group = code->has(dialects::traits::motion_group);
         if (motion_group) {
             f.motion = code->function;
             if (c & kCycleCode) f.motion_cycle = code;
@@ -98,7 +98,7 @@ void Executor::update_flags() {
     }
 }
 
-bool Executor::modal_active(std::string_view function) const {
+bool Executor::modal_active(dialects::FunctionId function) const {
     for (const auto& [group, code] : modal_)
         if (code && code->function == function) return true;
     return false;
@@ -128,7 +128,7 @@ SourceRef Executor::source(const Frame& f, const ast::BlockView& view) const {
     return {f.program.file, r, line + 1};
 }
 
-bool Executor::has_function(const ast::BlockView& view, std::string_view function) const {
+bool Executor::has_function(const ast::BlockView& view, dialects::FunctionId function) const {
     for (const ast::CodeRef& c : scan_.g)
         if (c.info && c.info->function == function) return true;
     for (const ast::CodeRef& c : scan_.m)
@@ -291,7 +291,7 @@ void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {
             if (!c.info) continue;
             scan_.classes |= code_class_of(*c.info);
             scan_.data_letters |= c.info->parameter_mask;
-            scan_.macro_call |= (c.info->binder_traits & dialects::CodeInfo::kTakesArguments) != 0;
+            scan_.macro_call |= c.info->has(dialects::traits::takes_arguments);
         }
     scan_.statements = scan_.comma_words = scan_.direct_drawing = false;
     scan_.sequence.reset();

@@ -106,7 +106,7 @@ struct BlockScan {
 // The modal state that motion reads on every block, derived from the active codes when a modal
 // code changes (so a move does not search the code table).
 struct ModalFlags {
-    std::string_view motion;          // function id of group 01
+    dialects::FunctionId motion;      // function id of group 01
     bool incremental = false;         // G91 (B/C, mills)
     bool per_revolution = false;      // G95/G99
     bool css = false;                 // G96
@@ -243,7 +243,7 @@ private:
     void apply_rotation(const ast::BlockView& view, const BlockWords& words, bool cw);
     bool apply_motion(const ast::BlockView& view, const BlockWords& words);
     void thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
-    static bool is_cycle_function(std::string_view function);
+    static bool is_cycle_function(dialects::FunctionId function);
     void classify_codes();
     bool is_cycle(const dialects::CodeInfo& code) const;
     std::uint32_t code_class_of(const dialects::CodeInfo& code) const;
@@ -284,8 +284,8 @@ private:
     const LoadedFile& file_of(const Frame& f) const { return programs_.file(f.program.file); }
     ast::Program program_of(const Frame& f) const;   // a copy: reading ahead may add programs
     SourceRef source(const Frame& f, const ast::BlockView& view) const;
-    bool has_function(const ast::BlockView& view, std::string_view function) const;
-    bool modal_active(std::string_view function) const;
+    bool has_function(const ast::BlockView& view, dialects::FunctionId function) const;
+    bool modal_active(dialects::FunctionId function) const;
     double axis_value(const BlockWords::Word& w, char letter) const;
     Position target_position(const BlockWords& words, bool& moves) const;
     Position to_program(const Position& work) const;     // undo G51.1, G51, G68 (transforms.hpp)
@@ -346,7 +346,7 @@ private:
     bool apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to);
     const dialects::CodeInfo* cycle_of_block(bool has_axis_words) const;
     std::optional<cycles::Profile> cycle_profile(const ast::BlockView& view, std::string_view spelling, double p, double q);
-    bool read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile, std::uint32_t last);
+    bool read_profile_block(const ast::BlockView& block, dialects::FunctionId& motion, cycles::Profile& profile, std::uint32_t last);
     bool read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
                               cycles::Profile& profile, std::uint32_t last);
     bool cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view);

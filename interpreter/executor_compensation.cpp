@@ -30,7 +30,7 @@ int Executor::comp_side_of_block(int current) const {
     int side = current;
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || !(code_class_of(*c.info) & kRadiusCompCode)) continue;
-        const std::string_view f = c.info->function;
+        const dialects::FunctionId f = c.info->function;
         // semantics.md §12.12; [transforms] a mirror of one plane axis swaps G41 and G42 [FANUC].
         const int left = (setup_.g41_g42_swapped ? -1 : 1) * (program_frame().reverses(plane()) ? -1 : 1);
         side = f == fn::radius_comp_cancel ? 0 : f == fn::radius_comp_left ? left : -left;
@@ -76,7 +76,7 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
     const double radius = comp_radius(words);
     std::vector<CompPiece> pieces;
     programmed_end = to;
-    const std::string_view motion = flags_.motion;
+    const dialects::FunctionId motion = flags_.motion;
     if (transform_) {   // [polar] the Cartesian plane of G112/G107 (polar_compensation.cpp)
         const auto element = transform_element(words, start, to, quiet);
         if (!element) return std::nullopt;
@@ -147,7 +147,7 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
         BlockWords words;
         if (!stop && evaluate_words(next, words)) {
             for (const ast::CodeRef& c : scan_.g)
-                if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) flags_.motion = c.info->function;
+                if (c.info && c.info->has(dialects::traits::motion_group)) flags_.motion = c.info->function;
             position_ = from;
             programmed_ = from;
             bool moves = false;

@@ -21,19 +21,20 @@ namespace {
 
 // Cycles whose function id does not say "-cycle" (SPINNER, cycles.md §15, §17). G380 is one too: it
 // ends the G384 mode inside cycles/spinner.cpp.
-constexpr std::string_view kOtherCycles[] = {"live-tool-rigid-tapping", "live-tool-rigid-tapping-cancel",
-                                             "tailstock-coupling-carry", "tailstock-coupling-position"};
+constexpr dialects::FunctionId kOtherCycles[] = {fn::live_tool_rigid_tapping, fn::live_tool_rigid_tapping_cancel,
+                                                fn::tailstock_coupling_carry, fn::tailstock_coupling_position};
 
 // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp).
-constexpr std::string_view kProgramTransforms[] = {fn::polar_coordinate_command, fn::polar_coordinate_command_cancel,
+constexpr dialects::FunctionId kProgramTransforms[] = {fn::polar_coordinate_command, fn::polar_coordinate_command_cancel,
                                                    fn::scaling, fn::scaling_cancel, fn::mirror, fn::mirror_cancel};
 
 }  // namespace
 
-bool Executor::is_cycle_function(std::string_view f) {
+bool Executor::is_cycle_function(dialects::FunctionId function) {
+    const std::string_view f = function.name();
     const bool cancel = f.size() >= 7 && f.substr(f.size() - 7) == "-cancel";   // G80 canned-cycle-cancel
     return (f.find("-cycle") != std::string_view::npos && !cancel) ||
-           std::find(std::begin(kOtherCycles), std::end(kOtherCycles), f) != std::end(kOtherCycles);
+           std::find(std::begin(kOtherCycles), std::end(kOtherCycles), function) != std::end(kOtherCycles);
 }
 
 // True when the block belongs to a cycle (then it does not move here).
@@ -43,11 +44,11 @@ void Executor::classify_codes() {
     code_class_.assign(codes.size(), 0);
     position_offset_.assign(codes.size(), 0);
     for (std::size_t i = 0; i < codes.size(); ++i) {
-        const std::string_view f = codes[i].function;
+        const dialects::FunctionId f = codes[i].function;
         if (is_cycle_function(f)) code_class_[i] |= kCycleCode;
         position_offset_[i] = static_cast<std::int8_t>(compensation::position_offset_factor(f).value_or(0));
         if (position_offset_[i] != 0) code_class_[i] |= kPositionOffsetCode;
-        if (codes[i].binder_traits & dialects::CodeInfo::kMotionGroup) code_class_[i] |= kMotionCode;
+        if (codes[i].has(dialects::traits::motion_group)) code_class_[i] |= kMotionCode;
         if (f == fn::polar_interpolation_on || f == fn::polar_interpolation_off || f == fn::cylindrical_interpolation)
             code_class_[i] |= kTransformCode;   // [polar] polar.cpp
         if (std::find(std::begin(kProgramTransforms), std::end(kProgramTransforms), f) != std::end(kProgramTransforms))
@@ -62,7 +63,7 @@ void Executor::classify_codes() {
             code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp (without H)
         if (f == fn::arc_approach || f == fn::arc_exit) code_class_[i] |= kArcApproachCode;
         // The modal flags update_flags() derives (executor.cpp).
-        if (codes[i].binder_traits & dialects::CodeInfo::kOneShot) code_class_[i] |= kOneShotCode;
+        if (codes[i].has(dialects::traits::one_shot)) code_class_[i] |= kOneShotCode;
         if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;
         if (f == fn::feed_per_revolution) code_class_[i] |= kPerRevolutionCode;
         if (f == fn::css_on) code_class_[i] |= kCssCode;
@@ -89,7 +90,7 @@ public:
                  bool has_end, const Position& end)
         : ex_(ex), code_(code), view_(view), words_(words), has_end_(has_end), end_(end) {}
 
-    std::string_view function() const override { return code_.function; }
+    dialects::FunctionId function() const override { return code_.function; }
     std::string spelling() const override { return code_.spelling; }
     bool has(char letter) const override { return words_.get(letter) != nullptr; }
     bool takes(char letter) const override { return code_.takes_word(std::string_view(&letter, 1)); }
@@ -279,7 +280,7 @@ void Executor::cancel_cycle_by_motion_code() {
         bool motion = false, cycle = false;
         for (const ast::CodeRef& c : scan_.g) {
             if (!c.info) continue;
-            motion |= (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
+            motion |= c.info->has(dialects::traits::motion_group);
             cycle |= is_cycle(*c.info);
         }
         if (motion && !cycle) {
@@ -317,7 +318,7 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
     if (comp_path_) position_ = *comp_path_;
     profile.start = position_;
-    std::string_view motion = flags_.motion;
+    dialects::FunctionId motion = flags_.motion;
     bool ok = true;
     for (std::uint32_t b = *first; ok && b <= *last; ++b) {
         const ast::BlockView block = file_of(f).block(b);
@@ -341,12 +342,12 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
 // the profile), the arc's centre and sweep, its F (G70, cycles.md §1). Blocks without an end point
 // with direct-drawing words go through the same resolver as a running program
 // (executor_drawing.cpp), so a profile's corners are those of semantics.md §10.
-bool Executor::read_profile_block(const ast::BlockView& block, std::string_view& motion, cycles::Profile& profile,
+bool Executor::read_profile_block(const ast::BlockView& block, dialects::FunctionId& motion, cycles::Profile& profile,
                                   std::uint32_t last) {
     BlockWords words;
     if (!evaluate_words(block, words)) return false;
     for (const ast::CodeRef& c : scan_.g)
-        if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) motion = c.info->function;
+        if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
     bool moves = false;
     const Position to = target_position(words, moves);
     if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(block, words, to, profile, last);

@@ -83,9 +83,9 @@ std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::opt
         // Read with the executor's own word evaluation; the running block's scan comes back after.
         const LookAheadScope guard(*this, f, next, scan_.block);
         // The chain is G01 (only G01 blocks are drawn): the next block is G01 unless it says otherwise.
-        std::string_view motion = fn::linear;
+        dialects::FunctionId motion = fn::linear;
         for (const ast::CodeRef& c : scan_.g)
-            if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) motion = c.info->function;
+            if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
         BlockWords words;
         std::optional<drawing::Block> out;
         position_ = from;

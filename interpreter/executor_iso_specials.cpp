@@ -147,7 +147,7 @@ BlockWords Executor::arc_approach_words(const BlockWords& words, const Position&
 bool Executor::arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
     bool ccw = true;
     const BlockWords arc = arc_approach_words(words, comp_path_ ? *comp_path_ : programmed_.value_or(position_), to, ccw);
-    const std::string_view saved = flags_.motion;
+    const dialects::FunctionId saved = flags_.motion;
     flags_.motion = ccw ? fn::circular_ccw : fn::circular_cw;
     bool moved = true;
     if ((scan_.classes & kRadiusCompCode) || compensating()) moved = compensate_motion(view, arc, to, true);

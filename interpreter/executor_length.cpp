@@ -19,7 +19,7 @@ namespace fn = dialects::functions;
 namespace {
 
 // +1 / −1 for the codes that set a direction, 0 for a cancel.
-int length_sign_of(std::string_view f) {
+int length_sign_of(dialects::FunctionId f) {
     if (f == fn::tool_length_comp_plus || f == fn::axial_offset_plus) return 1;
     if (f == fn::tool_length_comp_minus || f == fn::axial_offset_minus) return -1;
     return 0;

@@ -233,7 +233,7 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
         return position_offset_move(view, words, *factor, programmed_.value_or(position_), to);
     if (moves) programmed_.reset();
     note_drawing_outside_g01(view);
-    const std::string_view motion = flags_.motion;
+    const dialects::FunctionId motion = flags_.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
     const auto centre_word = [&](char letter) {
         const auto* w = words.get(letter);
@@ -329,7 +329,7 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
 void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
     for (const ast::CodeRef& c : scan_.m) {
         if (!c.info) continue;
-        const std::string& f = c.info->function;
+        const dialects::FunctionId f = c.info->function;
         Event e = event_at(EventKind::message, frame, view);   // the kind is set per code below
         e.code = c.key ? *c.key / 10 : 0;
         if (f == fn::spindle_cw || f == fn::spindle_ccw || f == fn::spindle_stop) {

@@ -36,7 +36,7 @@ double Executor::d_register() const {
 bool Executor::position_offset_move(const ast::BlockView& view, const BlockWords& words, int factor, const Position& start,
                                     const Position& to) {
     const double d = d_register();
-    const std::string_view motion = flags_.motion;
+    const dialects::FunctionId motion = flags_.motion;
     // An arc needs its centre words: seed 004 N11 `G45 Y0.` and N12 follow the G02 of N10 and
     // still move straight, "10 mm in Y" (semantics.md §9.3 table) [inference: the seed's intent].
     const bool centre = words.get('I') || words.get('J') || words.get('K') || words.get('R');

@@ -37,7 +37,7 @@ bool Executor::apply_program_transforms(const ast::BlockView& view, const BlockW
     bool moves = true;
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || !(code_class_of(*c.info) & kProgramTransformCode)) continue;
-        const std::string_view f = c.info->function;
+        const dialects::FunctionId f = c.info->function;
         if (f == fn::polar_coordinate_command || f == fn::polar_coordinate_command_cancel) {
             const bool on = f == fn::polar_coordinate_command;
             if (on != polar_command_) note_transform(view, on ? "polar coordinate command (G16)" : "polar coordinate command cancel (G15)");

@@ -114,15 +114,15 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
     // Several codes of one group in a block: the last one wins (semantics.md §1.1).
     bool changed = false;          // a group other than motion changed: derive every flag again
     for (const ast::CodeRef& c : scan_.g) {
-        if (!c.info || (c.info->binder_traits & dialects::CodeInfo::kOneShot) || c.info->group.empty()) continue;
+        if (!c.info || c.info->has(dialects::traits::one_shot) || c.info->group.empty()) continue;
         // The motion group's slot is found once (map nodes do not move): nearly every block has
         // a G00/G01/G02/G03 and most repeat the active one.
-        const bool motion_group = (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) != 0;
+        const bool motion_group = c.info->has(dialects::traits::motion_group);
         if (motion_group && !motion_slot_) motion_slot_ = &modal_[c.info->group];
         const dialects::CodeInfo*& slot = motion_group ? *motion_slot_ : modal_[c.info->group];
         if (slot == c.info) continue;
         slot = c.info;
-        if (c.info->binder_traits & dialects::CodeInfo::kMotionGroup) {
+        if (motion_group) {
             flags_.motion = c.info->function;
             flags_.motion_cycle = (code_class_of(*c.info) & kCycleCode) ? c.info : nullptr;   // G90/G92/G94
         } else {
@@ -167,10 +167,10 @@ Position Executor::tool_offset() const {
 bool Executor::apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words) {
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || (code_class_of(*c.info) & kMotionCode)) continue;   // G00/G01...: none of these
-        const std::string& f = c.info->function;
-        if (f.rfind(fn::work_coordinate_prefix, 0) == 0) {
-            const int n = f.back() - '1';
-            if (n >= 0 && n < 6) {
+        const dialects::FunctionId f = c.info->function;
+        if (c.info->work_coordinate() != 0) {   // G54–G59
+            const int n = c.info->work_coordinate() - 1;
+            {
                 change_offsets([&] {
                     work_system_ = n;
                     if (setup_.g54_cancels_g52) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)

@@ -34,7 +34,7 @@ constexpr int kImproperInPolar = 146, kImproperInCylindrical = 176, kIllegalCyli
 // Codes that may not run inside either mode ([FANUC]: the modes allow motion G00–G03, dwell,
 // compensation, feed modes and macro calls; a reference return or a new coordinate system would
 // move the plane under the program).
-constexpr std::string_view kImproperFunctions[] = {
+constexpr dialects::FunctionId kImproperFunctions[] = {
     fn::reference_return, fn::reference_return_nth, fn::return_from_reference, fn::machine_coordinate_select,
     fn::machine_coordinate_select_g0_g1, fn::coordinate_system_setting, fn::local_system_shift,
     fn::local_system_current_point, fn::thread_cutting, fn::plane_xy, fn::plane_zx, fn::plane_yz,
@@ -73,7 +73,7 @@ std::optional<bool> Executor::apply_plane_transform(const ast::BlockView& view, 
     }
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info) continue;
-        const std::string& f = c.info->function;
+        const dialects::FunctionId f = c.info->function;
         if (f == fn::polar_interpolation_off && transform_ && transform_->map.kind == motion::PlaneMap::Kind::polar) {
             if (!transform_switch_allowed(view, c.info->spelling)) return false;
             transform_.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
@@ -178,7 +178,7 @@ bool Executor::transform_move(const ast::BlockView& view, const BlockWords& word
     position_ = real;
     note_drawing_outside_g01(view);
     if (compensating() || (scan_.classes & kRadiusCompCode)) return transform_compensated(view, words, to, moves);
-    const std::string_view motion = flags_.motion;
+    const dialects::FunctionId motion = flags_.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves) return false;
     if (motion != fn::rapid && motion != fn::linear && !arc) return false;   // no motion code: nothing moves

@@ -31,7 +31,7 @@ constexpr int kIllegalConditions = 145;
 std::optional<motion::Element> Executor::transform_element(const BlockWords& words, const Position& start,
                                                             const Position& to, bool quiet) {
     const motion::P2 a = transform_point(start), b = transform_point(to);
-    const std::string_view motion = flags_.motion;
+    const dialects::FunctionId motion = flags_.motion;
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
         const motion::ArcResult geometry = transform_arc(motion == fn::circular_cw, a, b, words);
         if (!geometry) {
@@ -47,7 +47,7 @@ std::optional<motion::Element> Executor::transform_element(const BlockWords& wor
 bool Executor::transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves) {
     PlaneTransform& t = *transform_;
     const int side = comp_side_of_block(comp_side_);
-    const std::string_view motion = flags_.motion;
+    const dialects::FunctionId motion = flags_.motion;
     const bool runs = motion == fn::rapid || motion == fn::linear || motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves || !runs) {
         comp_side_ = side;   // G41/G42/G40 without motion: in force from the next move

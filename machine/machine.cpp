@@ -9,6 +9,8 @@
 
 namespace kerf::machine {
 
+namespace fn = dialects::functions;
+
 double axis_value(const AxisValues& values, char letter) {
     const auto it = values.find(letter);
     return it == values.end() ? 0.0 : it->second;
@@ -40,8 +42,8 @@ bool Machine::follows_dialect(std::string_view key) const {
 // ---------------------------------------------------------------------------------------------
 
 Machine resolve_for_dialect(Machine m, const dialects::Dialect& d) {
-    const auto has = [&](std::string_view function) { return !d.codes_with_function(function).empty(); };
-    const auto power_on = [&](std::string_view function) {
+    const auto has = [&](dialects::FunctionId function) { return !d.codes_with_function(function).empty(); };
+    const auto power_on = [&](dialects::FunctionId function) {
         for (const dialects::CodeInfo* c : d.codes_with_function(function))
             if (c->power_on_default) return true;
         return false;
@@ -52,25 +54,25 @@ Machine resolve_for_dialect(Machine m, const dialects::Dialect& d) {
             m.calculator_decimal = d.lexical.calculator_decimal;   // dialects/SCHEMA.md: the machine switch's default
         } else if (key == "g52") {
             // semantics.md §2.4: the dialect tables name the reading by function id.
-            if (has("local-system-shift")) s.g52 = G52Semantics::vector_shift;
-            else if (has("local-system-current-point"))
-                s.g52 = has("local-system-cancel") ? G52Semantics::current_point_g152 : G52Semantics::current_point;
+            if (has(fn::local_system_shift)) s.g52 = G52Semantics::vector_shift;
+            else if (has(fn::local_system_current_point))
+                s.g52 = has(fn::local_system_cancel) ? G52Semantics::current_point_g152 : G52Semantics::current_point;
             else s.g52 = G52Semantics::vector_shift;
         } else if (key == "g53_motion") {
-            s.g53_motion = has("machine-coordinate-select-g0-g1") ? G53Motion::g0_g1 : G53Motion::rapid;
+            s.g53_motion = has(fn::machine_coordinate_select_g0_g1) ? G53Motion::g0_g1 : G53Motion::rapid;
         } else if (key == "g68_positive") {
-            s.g68_positive = has("coordinate-rotation-cw") ? RotationSign::cw : RotationSign::ccw;
+            s.g68_positive = has(fn::coordinate_rotation_cw) ? RotationSign::cw : RotationSign::ccw;
         } else if (key == "power_on_plane") {
-            if (power_on("plane-xy")) s.power_on_plane = Plane::xy;
-            else if (power_on("plane-zx")) s.power_on_plane = Plane::zx;
-            else if (power_on("plane-yz")) s.power_on_plane = Plane::yz;
+            if (power_on(fn::plane_xy)) s.power_on_plane = Plane::xy;
+            else if (power_on(fn::plane_zx)) s.power_on_plane = Plane::zx;
+            else if (power_on(fn::plane_yz)) s.power_on_plane = Plane::yz;
             else s.power_on_plane = d.machine == MachineKind::lathe ? Plane::zx : Plane::xy;
         } else if (key == "power_on_units") {
-            s.power_on_units = power_on("inch-input") ? Units::inch : Units::metric;
+            s.power_on_units = power_on(fn::inch_input) ? Units::inch : Units::metric;
         } else if (key == "power_on_distance") {
-            s.power_on_distance = power_on("incremental-programming") ? Distance::incremental : Distance::absolute;
+            s.power_on_distance = power_on(fn::incremental_programming) ? Distance::incremental : Distance::absolute;
         } else if (key == "power_on_return_level") {
-            s.power_on_return_level = power_on("return-r-level") ? ReturnLevel::r_point : ReturnLevel::initial;
+            s.power_on_return_level = power_on(fn::return_r_level) ? ReturnLevel::r_point : ReturnLevel::initial;
         }
     }
     m.resolved_dialect = d.id;

@@ -111,15 +111,15 @@ inline std::optional<NumberWord> number_word(const BlockContext& b, char letter)
 namespace kerf::analyzer::rules {
 
 // The motion (group 01) function in force for the block: its own code, else the modal one.
-inline std::string_view motion_function(const BlockContext& b) {
+inline dialects::FunctionId motion_function(const BlockContext& b) {
     for (const ast::CodeRef& c : b.g)
-        if (c.info && (c.info->binder_traits & dialects::CodeInfo::kMotionGroup)) return c.info->function;
+        if (c.info && c.info->has(dialects::traits::motion_group)) return c.info->function;
     for (const auto& [group, info] : b.modal)
-        if (info && (info->binder_traits & dialects::CodeInfo::kMotionGroup)) return info->function;
+        if (info && info->has(dialects::traits::motion_group)) return info->function;
     return {};
 }
 inline bool circular_motion(const BlockContext& b) {
-    const std::string_view f = motion_function(b);
+    const dialects::FunctionId f = motion_function(b);
     return f == dialects::functions::circular_cw || f == dialects::functions::circular_ccw;
 }
 

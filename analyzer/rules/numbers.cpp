@@ -25,7 +25,7 @@ public:
             if (t.kind != ast::TokenKind::word || !t.is_number() || t.has(ast::token_flags::has_point)) continue;
             // I J K R are the arc's only when no other code of the block takes them (G28 K F, seed 004).
             const bool arc_word = arc && t.role() == ast::Role::parameter && std::string_view("IJKR").find(t.letter) != std::string_view::npos &&
-                                  !code_parameter(b, t.letter, [](const dialects::CodeInfo& c) { return c.binder_traits & dialects::CodeInfo::kMotionGroup; });
+                                  !code_parameter(b, t.letter, [](const dialects::CodeInfo& c) { return c.has(dialects::traits::motion_group); });
             if (!is_axis(t) && !arc_word) continue;
             const double value = b.tree().number_value(t);
             if (value == 0) continue;   // X0 is zero either way
@@ -41,7 +41,7 @@ public:
 
 bool takes_arguments(const BlockContext& b) {
     for (const ast::CodeRef& c : b.g)
-        if (c.info && (c.info->binder_traits & dialects::CodeInfo::kTakesArguments)) return true;
+        if (c.info && c.info->has(dialects::traits::takes_arguments)) return true;
     return false;
 }
 

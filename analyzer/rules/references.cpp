@@ -15,8 +15,8 @@ namespace fn = dialects::functions;
 
 // The P/Q of G70–G73: the first and last N of the contour (cycles.md §5).
 bool has_contour_labels(const dialects::CodeInfo& c) {
-    return c.function == "rough-turning-cycle" || c.function == "rough-facing-cycle" ||
-           c.function == "pattern-repeating-cycle" || c.function == "finishing-cycle";
+    return c.function == fn::rough_turning_cycle || c.function == fn::rough_facing_cycle ||
+           c.function == fn::pattern_repeating_cycle || c.function == fn::finishing_cycle;
 }
 
 struct Target {

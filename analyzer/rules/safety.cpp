@@ -8,12 +8,12 @@ namespace {
 using S = Severity;
 namespace fn = dialects::functions;
 
-bool active(const BlockContext& b, std::string_view function) { return b.has_function(function) || b.modal_function(function); }
+bool active(const BlockContext& b, dialects::FunctionId function) { return b.has_function(function) || b.modal_function(function); }
 bool threading(const BlockContext& b) {
-    return b.has_function(fn::thread_cutting) || b.has_function("thread-cutting-cycle") ||
-           b.has_function("multiple-threading-cycle");
+    return b.has_function(fn::thread_cutting) || b.has_function(fn::thread_cutting_cycle) ||
+           b.has_function(fn::multiple_threading_cycle);
 }
-const ast::Token* code_with(const BlockContext& b, std::string_view function) {
+const ast::Token* code_with(const BlockContext& b, dialects::FunctionId function) {
     for (const auto* codes : {&b.g, &b.m})
         for (const ast::CodeRef& c : *codes)
             if (c.info && c.info->function == function) return &b.token(c.token);
@@ -45,11 +45,11 @@ public:
     }
 };
 
-bool comp_on(std::string_view f) { return f == "radius-comp-left" || f == "radius-comp-right"; }
+bool comp_on(dialects::FunctionId f) { return f == fn::radius_comp_left || f == fn::radius_comp_right; }
 
 class CompOnArc : public StaticCheck {
 public:
-    explicit CompOnArc(std::string_view function) : function_(function) {}
+    explicit CompOnArc(dialects::FunctionId function) : function_(function) {}
     void block(const BlockContext& b, Reporter& out) override {
         for (const ast::CodeRef& c : b.g) {
             if (!c.info || !(function_.empty() ? comp_on(c.info->function) : c.info->function == function_)) continue;
@@ -62,13 +62,13 @@ public:
     }
 
 private:
-    std::string_view function_;
+    dialects::FunctionId function_;
 };
 struct CompStartOnArc : CompOnArc {
-    CompStartOnArc() : CompOnArc("") {}
+    CompStartOnArc() : CompOnArc({}) {}
 };
 struct CompCancelOnArc : CompOnArc {
-    CompCancelOnArc() : CompOnArc("radius-comp-cancel") {}
+    CompCancelOnArc() : CompOnArc(fn::radius_comp_cancel) {}
 };
 
 class CompAtEnd : public StaticCheck {
@@ -76,7 +76,7 @@ public:
     void block(const BlockContext& b, Reporter& out) override {
         if (!b.has_function(fn::program_end) && !b.has_function(fn::program_end_rewind)) return;
         for (const auto& [group, info] : b.modal)
-            if (info && comp_on(info->function) && !b.has_function("radius-comp-cancel"))
+            if (info && comp_on(info->function) && !b.has_function(fn::radius_comp_cancel))
                 out.report(block_text_range(b), fmt::format("the program ends with {} still active", info->spelling),
                            "cancel with G40 on a move away from the part before M30");
     }
@@ -114,7 +114,7 @@ public:
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.dialect.lexical.tool_word != "number") return;
         if (const auto t = number_word(b, 'T')) tool_ = static_cast<std::int64_t>(t->value);
-        if (!b.has_function("tool-length-comp-plus") && !b.has_function("tool-length-comp-minus")) return;
+        if (!b.has_function(fn::tool_length_comp_plus) && !b.has_function(fn::tool_length_comp_minus)) return;
         const auto h = number_word(b, 'H');
         if (!h || !tool_ || static_cast<std::int64_t>(h->value) == *tool_) return;
         out.report(b.token(h->token).range(),
@@ -157,8 +157,8 @@ public:
     }
 };
 
-bool peck_cycle(std::string_view f) {
-    return f == "peck-drilling-cycle" || f == "high-speed-peck-drilling-cycle" || f == "face-peck-drilling-cycle";
+bool peck_cycle(dialects::FunctionId f) {
+    return f == fn::peck_drilling_cycle || f == fn::high_speed_peck_drilling_cycle || f == fn::face_peck_drilling_cycle;
 }
 
 class CycleParameter : public StaticCheck {

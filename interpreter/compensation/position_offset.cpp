@@ -2,12 +2,9 @@
 
 namespace kerf::interpreter::compensation {
 
-std::optional<int> position_offset_factor(std::string_view function) {
-    if (function == "position-offset-increase") return 1;
-    if (function == "position-offset-decrease") return -1;
-    if (function == "position-offset-double-increase") return 2;
-    if (function == "position-offset-double-decrease") return -2;
-    return std::nullopt;
+std::optional<int> position_offset_factor(dialects::FunctionId function) {
+    const int factor = function.def().position_offset;   // the vocabulary's G45–G48 factors
+    return factor != 0 ? std::optional<int>(factor) : std::nullopt;
 }
 
 }  // namespace kerf::interpreter::compensation

@@ -8,11 +8,13 @@
 #include <optional>
 #include <string_view>
 
+#include "dialects/functions.hpp"
+
 namespace kerf::interpreter::compensation {
 
 // How many D the move changes by: +1 (G45), −1 (G46), +2 (G47), −2 (G48); nullopt for any other
 // function id (docs/functions.md).
-std::optional<int> position_offset_factor(std::string_view function);
+std::optional<int> position_offset_factor(dialects::FunctionId function);
 
 // The tool's move along one axis for a programmed move `delta` (semantics.md §9.3 table: "+75 →
 // +95" with 2·D = 20; "0 → −10" with G46 D = 10).

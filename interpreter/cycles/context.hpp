@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "dialects/functions.hpp"
 #include "interpreter/cycles/settings.hpp"
 #include "interpreter/events.hpp"
 
@@ -72,7 +73,7 @@ public:
     virtual ~Context() = default;
 
     // The cycle block.
-    virtual std::string_view function() const = 0;         // function id (docs/functions.md)
+    virtual dialects::FunctionId function() const = 0;         // function id (docs/functions.md)
     virtual std::string spelling() const = 0;              // "G71", for messages
     virtual bool has(char letter) const = 0;
     virtual bool takes(char letter) const = 0;             // the code's word list names `letter` (dialect table)

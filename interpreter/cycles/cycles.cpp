@@ -12,7 +12,7 @@ namespace fn = dialects::functions;
 namespace {
 
 // SPINNER §15 note 10: another canned cycle between G384 and G380 is alarm 3011.
-bool inside_rigid_tapping(Context& ctx, std::string_view f) {
+bool inside_rigid_tapping(Context& ctx, dialects::FunctionId f) {
     if (!ctx.rigid_tap().active || f == fn::live_tool_rigid_tapping || f == fn::live_tool_rigid_tapping_cancel ||
         f == fn::parts_catcher_cycle)
         return false;
@@ -25,7 +25,7 @@ bool inside_rigid_tapping(Context& ctx, std::string_view f) {
 }  // namespace
 
 bool expand(Context& ctx) {
-    const std::string_view f = ctx.function();
+    const dialects::FunctionId f = ctx.function();
     if (inside_rigid_tapping(ctx, f)) return true;
     if (spinner(ctx)) return true;
     if (f == fn::finishing_cycle || f == fn::rough_turning_cycle || f == fn::rough_facing_cycle ||

@@ -46,7 +46,7 @@ struct Form {
     bool left_hand = false;     // G74: the spindle turns the other way
 };
 
-std::optional<Form> form_of(std::string_view f) {
+std::optional<Form> form_of(dialects::FunctionId f) {
     if (f == fn::drilling_cycle || f == fn::drilling_dwell_cycle) return Form{Kind::drill, false, kZ};
     if (f == fn::peck_drilling_cycle) return Form{Kind::peck, false, kZ};
     if (f == fn::high_speed_peck_drilling_cycle) return Form{Kind::high_speed_peck, false, kZ};

@@ -8,6 +8,8 @@
 
 namespace kerf::interpreter::cycles {
 
+namespace fn = dialects::functions;
+
 namespace {
 
 constexpr double kEps = 1e-7;
@@ -264,16 +266,16 @@ void pattern(Context& ctx, const Profile& profile, const Parameters& p) {
 }
 
 // The first block of G71–G73 sets the persistent parameters (§0); the block with P and Q runs.
-bool first_block(Context& ctx, std::string_view f) {
+bool first_block(Context& ctx, dialects::FunctionId f) {
     if (ctx.has('P') && ctx.has('Q')) return false;
     Parameters& p = ctx.parameters();
-    if (f == "rough-turning-cycle") {
+    if (f == fn::rough_turning_cycle) {
         p.g71_depth = ctx.mm('U').value_or(p.g71_depth);
         p.g71_retract = ctx.mm('R').value_or(p.g71_retract);
-    } else if (f == "rough-facing-cycle") {
+    } else if (f == fn::rough_facing_cycle) {
         p.g72_depth = ctx.mm('W').value_or(p.g72_depth);
         p.g72_retract = ctx.mm('R').value_or(p.g72_retract);
-    } else if (f == "pattern-repeating-cycle") {
+    } else if (f == fn::pattern_repeating_cycle) {
         p.g73_relief_x = ctx.mm('U').value_or(p.g73_relief_x);
         p.g73_relief_z = ctx.mm('W').value_or(p.g73_relief_z);
         if (const auto r = ctx.raw('R')) p.g73_divisions = static_cast<int>(std::lround(*r));
@@ -284,8 +286,8 @@ bool first_block(Context& ctx, std::string_view f) {
 }  // namespace
 
 void lathe_profile(Context& ctx) {
-    const std::string_view f = ctx.function();
-    if (f != "finishing-cycle" && first_block(ctx, f)) return;
+    const dialects::FunctionId f = ctx.function();
+    if (f != fn::finishing_cycle && first_block(ctx, f)) return;
     const auto p = ctx.raw('P'), q = ctx.raw('Q');
     if (!p || !q) {
         ctx.alarm(62, fmt::format("{} without P and Q: no profile to run (FANUC alarm 062)", ctx.spelling()));
@@ -298,9 +300,9 @@ void lathe_profile(Context& ctx) {
         return;
     }
     const Parameters& params = ctx.parameters();
-    if (f == "finishing-cycle") finishing(ctx, *profile);
-    else if (f == "rough-turning-cycle") rough(ctx, *profile, {Coord::x, params.g71_depth, params.g71_retract});
-    else if (f == "rough-facing-cycle") rough(ctx, *profile, {Coord::z, params.g72_depth, params.g72_retract});
+    if (f == fn::finishing_cycle) finishing(ctx, *profile);
+    else if (f == fn::rough_turning_cycle) rough(ctx, *profile, {Coord::x, params.g71_depth, params.g71_retract});
+    else if (f == fn::rough_facing_cycle) rough(ctx, *profile, {Coord::z, params.g72_depth, params.g72_retract});
     else pattern(ctx, *profile, params);
 }
 

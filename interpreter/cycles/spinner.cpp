@@ -310,7 +310,7 @@ void parts_catcher(Context& ctx) {
 }  // namespace
 
 bool spinner(Context& ctx) {
-    const std::string_view f = ctx.function();
+    const dialects::FunctionId f = ctx.function();
     if (f == fn::workpiece_transfer_cycle) transfer(ctx);
     else if (f == fn::tailstock_clamping_cycle_1) tailstock_clamp_1(ctx);
     else if (f == fn::tailstock_clamping_cycle_2) tailstock_clamp_2(ctx);

@@ -6,6 +6,7 @@
 
 using namespace kerf;
 using ast::Role;
+namespace fn = kerf::dialects::functions;
 
 namespace {
 
@@ -44,7 +45,7 @@ TEST_CASE("system A: X/Z/C absolute, U/W/H incremental onto X/Z/C") {
     REQUIRE(g.size() == 1);
     REQUIRE(g[0].info);
     CHECK(g[0].info->group == "01");
-    CHECK(g[0].info->function == "linear");
+    CHECK(g[0].info->function == fn::linear);
 }
 
 TEST_CASE("cycle and dwell data letters are parameters, not moves") {
@@ -97,10 +98,10 @@ TEST_CASE("unknown codes are bound as codes without table entry") {
 TEST_CASE("decimal codes and leading zeros: G12.1, G112, G01.0, M003") {
     const auto b = bind("G12.1\nG112\nG01.0 M003\n", "fanuc-lathe-a");
     REQUIRE(b->typed->block(0).g_codes()[0].info);
-    CHECK(b->typed->block(0).g_codes()[0].info->function == "polar-interpolation-on");
+    CHECK(b->typed->block(0).g_codes()[0].info->function == fn::polar_interpolation_on);
     CHECK(b->typed->block(1).g_codes()[0].info == b->typed->block(0).g_codes()[0].info);
-    CHECK(b->typed->block(2).g_codes()[0].info->function == "linear");
-    CHECK(b->typed->block(2).m_codes()[0].info->function == "spindle-cw");
+    CHECK(b->typed->block(2).g_codes()[0].info->function == fn::linear);
+    CHECK(b->typed->block(2).m_codes()[0].info->function == fn::spindle_cw);
 }
 
 TEST_CASE("rebinding one block takes its modal context from the blocks before") {

@@ -236,6 +236,18 @@ TEST_CASE("load errors carry a message and a line") {
         REQUIRE_FALSE(r.errors.empty());
         CHECK(r.errors[0].line == 11);
     }
+    SECTION("an unknown function id is an error at its value, with the nearest known id") {
+        std::string text = minimal_dialect();
+        const std::string good = "function = \"rapid\"";
+        text.replace(text.find(good), good.size(), "function = \"rapdi\"");   // line 15
+        const LoadResult r = load_dialect_text(text, "typo.toml");
+        CHECK_FALSE(r.file.has_value());
+        REQUIRE(r.errors.size() == 1);
+        CHECK(any_error_mentions(r.errors, "unknown function id 'rapdi'"));
+        CHECK(any_error_mentions(r.errors, "did you mean 'rapid'?"));
+        CHECK(r.errors[0].line == 15);
+        CHECK(r.errors[0].column == 12);   // the value, after `function = `
+    }
     SECTION("unknown semicolon value") {
         const LoadResult r = load_dialect_text(minimal_dialect("user-lathe", "sometimes"), "semi.toml");
         CHECK_FALSE(r.file.has_value());
@@ -281,7 +293,7 @@ TEST_CASE("user dialect files through Registry::add_text") {
             "code = \"G31.1\"\n"
             "group = \"00\"\n"
             "modal = false\n"
-            "function = \"skip\"\n"
+            "function = \"skip-function\"\n"
             "words = [\"X\", \"Y\", \"Z\", \"F\"]\n"
             "en = \"Multi-step skip 1\"\n"
             "ru = \"Многоступенчатый пропуск 1\"\n"
