@@ -51,7 +51,6 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
     // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
     for (const dialects::CodeInfo& c : dialect_.codes())
         if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group] = &c;
-    classify_codes();
     update_flags();
     for (const SoftLimit& limit : setup_.soft_limits) any_soft_limit_ |= limit.min.has_value() || limit.max.has_value();
     for (char letter = 'A'; letter <= 'Z'; ++letter) {

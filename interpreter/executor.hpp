@@ -243,33 +243,27 @@ private:
     void apply_rotation(const ast::BlockView& view, const BlockWords& words, bool cw);
     bool apply_motion(const ast::BlockView& view, const BlockWords& words);
     void thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
-    static bool is_cycle_function(dialects::FunctionId function);
-    void classify_codes();
     bool is_cycle(const dialects::CodeInfo& code) const;
-    std::uint32_t code_class_of(const dialects::CodeInfo& code) const;
-    // What a code of the dialect is, as bits (classify_codes, once per run): a block ORs its codes'
-    // classes into scan_.classes and skips whole families of checks with one test.
-    static constexpr std::uint32_t kCycleCode = 1, kIncrementalCode = 4, kPerRevolutionCode = 8,
-                                  kCssCode = 16, kInchCode = 32, kPlaneXYCode = 64, kPlaneZXCode = 128,
-                                  kPlaneYZCode = 192,   // the plane: two bits
-                                  kOneShotCode = 1u << 8,         // group 00 (G04, G10, G28, G53 ...)
-                                  kMotionCode = 1u << 9,          // group 01 (G00–G03, G32, modal cycles)
-                                  kPositionOffsetCode = 1u << 10, // G45–G48
-                                  kRadiusCompCode = 1u << 11,     // G40/G41/G42 (executor_compensation.cpp)
-                                  kTransformCode = 1u << 12,      // G112/G113, G107 (polar.cpp)
-                                  kLengthCompCode = 1u << 13,     // G43/G44/G49 (executor_length.cpp)
-                                  kCornerSlowdownCode = 1u << 14, // seed 004 G28/G29 (executor_iso_specials.cpp)
-                                  kApproachOffsetCode = 1u << 15, // seed 004 G43 approach
-                                  kArcApproachCode = 1u << 16,    // seed 004 G12/G13
-                                  kProgramTransformCode = 1u << 17;   // G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp)
-    // Every class has a bit of its own (the plane: two bits for three values); a branch adding a
-    // class must not reuse one (two merges did).
-    static_assert(std::popcount(kCycleCode | kIncrementalCode | kPerRevolutionCode | kCssCode |
-                                kInchCode | kPlaneYZCode | kOneShotCode | kMotionCode | kPositionOffsetCode |
-                                kRadiusCompCode | kTransformCode | kLengthCompCode | kCornerSlowdownCode |
-                                kApproachOffsetCode | kArcApproachCode | kProgramTransformCode) == 17);
-    std::vector<std::uint32_t> code_class_;   // per code of the dialect (executor_cycles.cpp)
-    std::vector<std::int8_t> position_offset_;   // per code: ±1/±2 for G45–G48, else 0 (executor_offsets.cpp)
+    // What a code of the dialect is, as bits: its traits, computed once when the dialect is indexed
+    // (dialects/functions.hpp `traits`, each with a bit of its own). A block ORs its codes' classes
+    // into scan_.classes and skips whole families of checks with one test.
+    static std::uint32_t code_class_of(const dialects::CodeInfo& code) { return code.traits; }
+    static constexpr std::uint32_t kCycleCode = dialects::traits::cycle,
+                                  kIncrementalCode = dialects::traits::incremental,
+                                  kPerRevolutionCode = dialects::traits::per_revolution,
+                                  kCssCode = dialects::traits::css, kInchCode = dialects::traits::inch,
+                                  kPlaneXYCode = dialects::traits::plane_xy, kPlaneZXCode = dialects::traits::plane_zx,
+                                  kPlaneYZCode = dialects::traits::plane_yz,   // the plane: two bits
+                                  kOneShotCode = dialects::traits::one_shot,           // group 00 (G04, G10, G28, G53 ...)
+                                  kMotionCode = dialects::traits::motion_group,        // group 01 (G00–G03, G32, modal cycles)
+                                  kPositionOffsetCode = dialects::traits::position_offset,   // G45–G48
+                                  kRadiusCompCode = dialects::traits::radius_comp,     // G40/G41/G42 (executor_compensation.cpp)
+                                  kTransformCode = dialects::traits::plane_transform,  // G112/G113, G107 (polar.cpp)
+                                  kLengthCompCode = dialects::traits::length_comp,     // G43/G44/G49 (executor_length.cpp)
+                                  kCornerSlowdownCode = dialects::traits::corner_slowdown,   // seed 004 G28/G29 (executor_iso_specials.cpp)
+                                  kApproachOffsetCode = dialects::traits::approach_offset,   // seed 004 G43 approach
+                                  kArcApproachCode = dialects::traits::arc_approach,   // seed 004 G12/G13
+                                  kProgramTransformCode = dialects::traits::program_transform;   // G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp)
     void note_drawing_outside_g01(const ast::BlockView& view);
     std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);

@@ -10,77 +10,13 @@
 #include <iterator>
 
 #include "dialects/functions.hpp"
-#include "interpreter/compensation/position_offset.hpp"
 #include "interpreter/executor.hpp"
 
 namespace kerf::interpreter {
 
 namespace fn = dialects::functions;
 
-namespace {
-
-// Cycles whose function id does not say "-cycle" (SPINNER, cycles.md §15, §17). G380 is one too: it
-// ends the G384 mode inside cycles/spinner.cpp.
-constexpr dialects::FunctionId kOtherCycles[] = {fn::live_tool_rigid_tapping, fn::live_tool_rigid_tapping_cancel,
-                                                fn::tailstock_coupling_carry, fn::tailstock_coupling_position};
-
-// [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp).
-constexpr dialects::FunctionId kProgramTransforms[] = {fn::polar_coordinate_command, fn::polar_coordinate_command_cancel,
-                                                   fn::scaling, fn::scaling_cancel, fn::mirror, fn::mirror_cancel};
-
-}  // namespace
-
-bool Executor::is_cycle_function(dialects::FunctionId function) {
-    const std::string_view f = function.name();
-    const bool cancel = f.size() >= 7 && f.substr(f.size() - 7) == "-cancel";   // G80 canned-cycle-cancel
-    return (f.find("-cycle") != std::string_view::npos && !cancel) ||
-           std::find(std::begin(kOtherCycles), std::end(kOtherCycles), function) != std::end(kOtherCycles);
-}
-
-// True when the block belongs to a cycle (then it does not move here).
-// Per code of the dialect, computed once: the per-block checks compare bits, not strings.
-void Executor::classify_codes() {
-    const auto codes = dialect_.codes();
-    code_class_.assign(codes.size(), 0);
-    position_offset_.assign(codes.size(), 0);
-    for (std::size_t i = 0; i < codes.size(); ++i) {
-        const dialects::FunctionId f = codes[i].function;
-        if (is_cycle_function(f)) code_class_[i] |= kCycleCode;
-        position_offset_[i] = static_cast<std::int8_t>(compensation::position_offset_factor(f).value_or(0));
-        if (position_offset_[i] != 0) code_class_[i] |= kPositionOffsetCode;
-        if (codes[i].has(dialects::traits::motion_group)) code_class_[i] |= kMotionCode;
-        if (f == fn::polar_interpolation_on || f == fn::polar_interpolation_off || f == fn::cylindrical_interpolation)
-            code_class_[i] |= kTransformCode;   // [polar] polar.cpp
-        if (std::find(std::begin(kProgramTransforms), std::end(kProgramTransforms), f) != std::end(kProgramTransforms))
-            code_class_[i] |= kProgramTransformCode;
-        if (f == fn::radius_comp_left || f == fn::radius_comp_right || f == fn::radius_comp_cancel)
-            code_class_[i] |= kRadiusCompCode;   // executor_compensation.cpp
-        if (f == fn::tool_length_comp_plus || f == fn::tool_length_comp_minus || f == fn::tool_length_comp_cancel ||
-            f == fn::axial_offset_plus || f == fn::axial_offset_minus)
-            code_class_[i] |= kLengthCompCode;   // [length offsets] executor_length.cpp (seed-004 G43/G44 with H)
-        if (f == fn::corner_slowdown || f == fn::corner_slowdown_cancel) code_class_[i] |= kCornerSlowdownCode;
-        if (f == fn::axial_offset_plus || f == fn::axial_offset_minus)
-            code_class_[i] |= kApproachOffsetCode;   // executor_iso_specials.cpp (without H)
-        if (f == fn::arc_approach || f == fn::arc_exit) code_class_[i] |= kArcApproachCode;
-        // The modal flags update_flags() derives (executor.cpp).
-        if (codes[i].has(dialects::traits::one_shot)) code_class_[i] |= kOneShotCode;
-        if (f == fn::incremental_programming) code_class_[i] |= kIncrementalCode;
-        if (f == fn::feed_per_revolution) code_class_[i] |= kPerRevolutionCode;
-        if (f == fn::css_on) code_class_[i] |= kCssCode;
-        if (f == fn::inch_input) code_class_[i] |= kInchCode;
-        if (f == fn::plane_xy) code_class_[i] |= kPlaneXYCode;
-        if (f == fn::plane_zx) code_class_[i] |= kPlaneZXCode;
-        if (f == fn::plane_yz) code_class_[i] |= kPlaneYZCode;
-    }
-}
-
 bool Executor::is_cycle(const dialects::CodeInfo& code) const { return code_class_of(code) & kCycleCode; }
-
-std::uint32_t Executor::code_class_of(const dialects::CodeInfo& code) const {
-    const auto codes = dialect_.codes();
-    const std::size_t i = static_cast<std::size_t>(&code - codes.data());
-    return i < code_class_.size() ? code_class_[i] : (is_cycle_function(code.function) ? kCycleCode : 0);
-}
 
 // --- the context a cycle runs in ------------------------------------------------------------------
 

@@ -16,13 +16,10 @@ namespace kerf::interpreter {
 namespace fn = dialects::functions;
 
 std::optional<int> Executor::position_offset_factor() const {
-    // Per-code factors computed once (classify_codes): no string compare per block.
+    // The factor is a trait of the code's function (dialects/functions.hpp): no string compare per block.
     if (!(scan_.classes & kPositionOffsetCode)) return std::nullopt;
-    const auto codes = dialect_.codes();
-    for (const ast::CodeRef& c : scan_.g) {
-        const std::size_t i = c.info ? static_cast<std::size_t>(c.info - codes.data()) : position_offset_.size();
-        if (i < position_offset_.size() && position_offset_[i] != 0) return position_offset_[i];
-    }
+    for (const ast::CodeRef& c : scan_.g)
+        if (c.info && c.info->position_offset() != 0) return c.info->position_offset();
     return std::nullopt;
 }
 

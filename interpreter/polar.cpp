@@ -31,14 +31,6 @@ constexpr double kDegPerRad = 180.0 / std::numbers::pi;
 // coordinate interpolation, PS0176 "improper G code in G07.1 mode", PS0175 "illegal G07.1 axis".
 constexpr int kImproperInPolar = 146, kImproperInCylindrical = 176, kIllegalCylinderAxis = 175;
 
-// Codes that may not run inside either mode ([FANUC]: the modes allow motion G00–G03, dwell,
-// compensation, feed modes and macro calls; a reference return or a new coordinate system would
-// move the plane under the program).
-constexpr dialects::FunctionId kImproperFunctions[] = {
-    fn::reference_return, fn::reference_return_nth, fn::return_from_reference, fn::machine_coordinate_select,
-    fn::machine_coordinate_select_g0_g1, fn::coordinate_system_setting, fn::local_system_shift,
-    fn::local_system_current_point, fn::thread_cutting, fn::plane_xy, fn::plane_zx, fn::plane_yz,
-};
 
 // The rotary axis letters and the linear axis each turns about (A about X, B about Y, C about Z).
 std::optional<std::pair<std::size_t, std::size_t>> cylinder_axes(char rotary) {
@@ -94,9 +86,10 @@ std::optional<std::string> Executor::improper_in_transform(const ast::BlockView&
     for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
         for (const ast::CodeRef& c : *codes) {
             if (!c.info) continue;
-            const bool improper = (code_class_of(*c.info) & kCycleCode) ||
-                                  std::find(std::begin(kImproperFunctions), std::end(kImproperFunctions),
-                                            c.info->function) != std::end(kImproperFunctions) ||
+            // [FANUC] the modes allow motion G00–G03, dwell, compensation, feed modes and macro
+            // calls; a cycle, a reference return or a new coordinate system would move the plane
+            // under the program (traits::not_in_plane_transform).
+            const bool improper = c.info->has(dialects::traits::cycle | dialects::traits::not_in_plane_transform) ||
                                   (c.info->function == fn::polar_interpolation_on &&
                                    transform_->map.kind == motion::PlaneMap::Kind::cylindrical) ||
                                   (c.info->function == fn::cylindrical_interpolation &&

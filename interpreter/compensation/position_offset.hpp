@@ -2,19 +2,14 @@
 // block is lengthened or shortened by the value of the D register (G45 +D, G46 −D, G47 +2D,
 // G48 −2D); a written move of zero becomes a move of that amount in the + direction; an arc's
 // radius changes the same way, with its end point and centre offset scaled about the start.
-// Pure rules; the executor applies them (executor_offsets.cpp).
+// Pure rules; the executor applies them (executor_offsets.cpp). How many D a code moves by is a
+// trait of its function (dialects/functions.hpp FunctionDef::position_offset).
 #pragma once
 
 #include <optional>
 #include <string_view>
 
-#include "dialects/functions.hpp"
-
 namespace kerf::interpreter::compensation {
-
-// How many D the move changes by: +1 (G45), −1 (G46), +2 (G47), −2 (G48); nullopt for any other
-// function id (docs/functions.md).
-std::optional<int> position_offset_factor(dialects::FunctionId function);
 
 // The tool's move along one axis for a programmed move `delta` (semantics.md §9.3 table: "+75 →
 // +95" with 2·D = 20; "0 → −10" with G46 D = 10).
