@@ -116,6 +116,12 @@ void Dialect::reindex() {
     }
 }
 
+std::optional<std::uint8_t> Dialect::group_index(std::string_view group) const {
+    const auto it = std::lower_bound(groups_.begin(), groups_.end(), group);
+    if (it == groups_.end() || *it != group) return std::nullopt;
+    return static_cast<std::uint8_t>(it - groups_.begin());
+}
+
 const CodeInfo* Dialect::fast_code(char letter, CodeKey key) const {
     if (key >= 0 && key < kFastCodes && (letter == 'G' || letter == 'M')) {
         const std::int32_t i = (letter == 'G' ? g_fast_ : m_fast_)[static_cast<std::size_t>(key)];

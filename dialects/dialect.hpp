@@ -104,6 +104,7 @@ public:
     // The modal groups of the codes, sorted, "" first: CodeInfo::group_index indexes it, so the
     // modal state can be a flat array (one slot per group) in the order of the group names.
     std::span<const std::string> groups() const { return groups_; }
+    std::optional<std::uint8_t> group_index(std::string_view group) const;   // "01" → its index
 
     // O(1) lookup used by the binder on every G and M word.
     const CodeInfo* fast_code(char letter, CodeKey key) const;

@@ -49,8 +49,9 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
       work_offsets_(setup.work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
       tools_(setup.tools) {
     // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
+    modal_.assign(dialect_.groups().size(), nullptr);
     for (const dialects::CodeInfo& c : dialect_.codes())
-        if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group] = &c;
+        if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group_index] = &c;
     update_flags();
     for (const SoftLimit& limit : setup_.soft_limits) any_soft_limit_ |= limit.min.has_value() || limit.max.has_value();
     for (char letter = 'A'; letter <= 'Z'; ++letter) {
@@ -66,7 +67,7 @@ void Executor::update_flags() {
     const bool was_inch = flags_.inch;
     ModalFlags f;
     f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
-    for (const auto& [group, code] : modal_) {
+    for (const dialects::CodeInfo* code : modal_) {
         if (!code) continue;
         const std::uint32_t c = code_class_of(*code);
         const bool motion_group = code->has(dialects::traits::motion_group);
@@ -98,7 +99,7 @@ void Executor::update_flags() {
 }
 
 bool Executor::modal_active(dialects::FunctionId function) const {
-    for (const auto& [group, code] : modal_)
+    for (const dialects::CodeInfo* code : modal_)
         if (code && code->function == function) return true;
     return false;
 }
@@ -311,7 +312,7 @@ void Executor::emit_state(const SourceRef& where) {
     e.source = where;
     e.start = e.end = position_;
     std::string text;
-    for (const auto& [group, code] : modal_)
+    for (const dialects::CodeInfo* code : modal_)
         if (code) text += (text.empty() ? "" : " ") + code->spelling;
     text += fmt::format(" F{} S{} T{}", feed_, flags_.css ? css_ : spindle_rpm_, tool_ * 100 + tool_offset_);
     e.text = std::move(text);

@@ -181,7 +181,7 @@ private:
     std::uint32_t axis_letters_ = 0;
     bool any_soft_limit_ = false;   // the machine has a stored stroke limit on some axis
     std::uint32_t dialect_axes_ = 0;   // letters that are axes of the dialect (LexicalRules::is_axis)
-    const dialects::CodeInfo** motion_slot_ = nullptr;   // modal_[group 01], once known
+    const dialects::CodeInfo** motion_slot_ = nullptr;   // modal_[group 01's index], once known
     mutable std::uint32_t line_hint_ = 0;        // source(): the last line found, per file
     mutable std::uint32_t line_hint_file_ = ~0u;
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
@@ -189,7 +189,9 @@ private:
     macro::Variables variables_{system_variables_};
 
     // Modal state.
-    std::map<std::string, const dialects::CodeInfo*> modal_;   // group → active code
+    // Group → active code: one slot per group of the dialect (CodeInfo::group_index, in the order of
+    // the group names; sized once, so slot pointers stay valid), null while none is active.
+    std::vector<const dialects::CodeInfo*> modal_;
     ModalFlags flags_;
     Position position_{};            // work coordinates as programmed (lathe X diameter)
     int work_system_ = 0;            // 0..5 = G54..G59

@@ -220,10 +220,10 @@ void Executor::cancel_cycle_by_motion_code() {
             cycle |= is_cycle(*c.info);
         }
         if (motion && !cycle) {
-            const std::string group = flags_.modal_cycle->group;
+            const std::uint8_t group = flags_.modal_cycle->group_index;
             const dialects::CodeInfo* cancel = nullptr;
             for (const dialects::CodeInfo& c : dialect_.codes())
-                if (c.group == group && c.function == fn::canned_cycle_cancel) cancel = &c;
+                if (c.group_index == group && c.function == fn::canned_cycle_cancel) cancel = &c;
             modal_[group] = cancel;
             update_flags();
         }

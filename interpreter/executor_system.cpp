@@ -110,9 +110,10 @@ std::optional<macro::Value> Executor::read_system(int number) {
     // #4001-#4030 (and #4201-#4230, the block being executed: the same in a dry run).
     const int modal = number >= 4201 && number <= 4330 ? number - 200 : number;
     if (modal >= 4001 && modal <= 4030) {
-        const auto it = modal_.find(fmt::format("{:02}", modal - 4000));
-        if (it == modal_.end() || !it->second) return Value::vacant_value();
-        const std::string& spelling = it->second->spelling;
+        const auto group = dialect_.group_index(fmt::format("{:02}", modal - 4000));
+        const dialects::CodeInfo* code = group ? modal_[*group] : nullptr;
+        if (!code) return Value::vacant_value();
+        const std::string& spelling = code->spelling;
         return Value::of(std::strtod(spelling.c_str() + 1, nullptr));
     }
     if (modal >= 4102 && modal <= 4130) {

@@ -118,8 +118,8 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
         // The motion group's slot is found once (map nodes do not move): nearly every block has
         // a G00/G01/G02/G03 and most repeat the active one.
         const bool motion_group = c.info->has(dialects::traits::motion_group);
-        if (motion_group && !motion_slot_) motion_slot_ = &modal_[c.info->group];
-        const dialects::CodeInfo*& slot = motion_group ? *motion_slot_ : modal_[c.info->group];
+        if (motion_group && !motion_slot_) motion_slot_ = &modal_[c.info->group_index];
+        const dialects::CodeInfo*& slot = motion_group ? *motion_slot_ : modal_[c.info->group_index];
         if (slot == c.info) continue;
         slot = c.info;
         if (motion_group) {
