@@ -13,11 +13,6 @@ namespace {
 using S = Severity;
 namespace fn = dialects::functions;
 
-// The P/Q of G70–G73: the first and last N of the contour (cycles.md §5).
-bool has_contour_labels(const dialects::CodeInfo& c) {
-    return c.function == fn::rough_turning_cycle || c.function == fn::rough_facing_cycle ||
-           c.function == fn::pattern_repeating_cycle || c.function == fn::finishing_cycle;
-}
 
 struct Target {
     std::uint32_t token;
@@ -28,7 +23,7 @@ struct Target {
 std::vector<Target> local_targets(const BlockContext& b) {
     std::vector<Target> out;
     for (const ast::CodeRef& c : b.g)
-        if (c.info && has_contour_labels(*c.info))
+        if (c.info && c.info->has(dialects::traits::profile_cycle))   // G70–G73 P/Q: the contour's first and last N (cycles.md §5)
             for (const char letter : {'P', 'Q'})
                 if (const auto w = number_word(b, letter)) out.push_back({w->token, static_cast<std::int64_t>(w->value)});
     if (b.has_function(fn::subprogram_call) && !number_word(b, 'P'))

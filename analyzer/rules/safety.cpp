@@ -9,9 +9,11 @@ using S = Severity;
 namespace fn = dialects::functions;
 
 bool active(const BlockContext& b, dialects::FunctionId function) { return b.has_function(function) || b.modal_function(function); }
+// A code of the block cuts a thread (G32/G33, G34, G92/G76 and their B/C numbers: traits::threading).
 bool threading(const BlockContext& b) {
-    return b.has_function(fn::thread_cutting) || b.has_function(fn::thread_cutting_cycle) ||
-           b.has_function(fn::multiple_threading_cycle);
+    for (const ast::CodeRef& c : b.g)
+        if (c.info && c.info->has(dialects::traits::threading)) return true;
+    return false;
 }
 const ast::Token* code_with(const BlockContext& b, dialects::FunctionId function) {
     for (const auto* codes : {&b.g, &b.m})
@@ -45,14 +47,14 @@ public:
     }
 };
 
-bool comp_on(dialects::FunctionId f) { return f == fn::radius_comp_left || f == fn::radius_comp_right; }
+bool comp_on(const dialects::CodeInfo& c) { return c.has(dialects::traits::radius_comp_on); }
 
 class CompOnArc : public StaticCheck {
 public:
     explicit CompOnArc(dialects::FunctionId function) : function_(function) {}
     void block(const BlockContext& b, Reporter& out) override {
         for (const ast::CodeRef& c : b.g) {
-            if (!c.info || !(function_.empty() ? comp_on(c.info->function) : c.info->function == function_)) continue;
+            if (!c.info || !(function_.empty() ? comp_on(*c.info) : c.info->function == function_)) continue;
             if (!circular_motion(b)) return;
             out.report(b.token(c.token).range(),
                        fmt::format("{} in an arc block: compensation must start and end on G00 or G01",
@@ -76,7 +78,7 @@ public:
     void block(const BlockContext& b, Reporter& out) override {
         if (!b.has_function(fn::program_end) && !b.has_function(fn::program_end_rewind)) return;
         for (const auto& [group, info] : b.modal)
-            if (info && comp_on(info->function) && !b.has_function(fn::radius_comp_cancel))
+            if (info && comp_on(*info) && !b.has_function(fn::radius_comp_cancel))
                 out.report(block_text_range(b), fmt::format("the program ends with {} still active", info->spelling),
                            "cancel with G40 on a move away from the part before M30");
     }
@@ -157,9 +159,6 @@ public:
     }
 };
 
-bool peck_cycle(dialects::FunctionId f) {
-    return f == fn::peck_drilling_cycle || f == fn::high_speed_peck_drilling_cycle || f == fn::face_peck_drilling_cycle;
-}
 
 class CycleParameter : public StaticCheck {
 public:
@@ -170,7 +169,7 @@ public:
                 for (const char letter : {'X', 'U', 'P'})
                     if (const auto w = number_word(b, letter); w && w->value < 0)
                         out.report(b.token(w->token).range(), "negative dwell time", "a dwell time is 0 or more");
-            if (peck_cycle(c.info->function))
+            if (c.info->has(dialects::traits::peck))
                 if (const auto q = number_word(b, 'Q'); q && q->value <= 0)
                     out.report(b.token(q->token).range(), fmt::format("peck depth Q{:g}: must be more than 0", q->value),
                                "give the depth of one peck as a positive Q");
