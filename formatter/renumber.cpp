@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -17,11 +16,6 @@ namespace {
 namespace fn = dialects::functions;
 using ast::Diagnostic;
 using ast::Severity;
-
-// Cycles whose P and Q name the first and last block of a profile (reference/cycles.md §1–§4:
-// G70–G73 in system A; G72–G75 in system C). Found by function id, never by number.
-constexpr std::array<dialects::FunctionId, 4> kProfileCycles = {fn::finishing_cycle, fn::rough_turning_cycle,
-                                                                fn::rough_facing_cycle, fn::pattern_repeating_cycle};
 
 // One reference to a sequence number: a word whose value is the number, or a GOTO label.
 struct Reference {
@@ -149,7 +143,9 @@ private:
 
     void cycle_references(const ast::BlockView& view, std::uint32_t program) {
         for (const ast::CodeRef& g : view.g_codes()) {
-            if (!g.info || std::find(kProfileCycles.begin(), kProfileCycles.end(), g.info->function) == kProfileCycles.end())
+            // Cycles whose P and Q name the first and last block of a profile (cycles.md §1–§4: G70–G73 in
+            // system A, G72–G75 in C): a trait of the function, never the number.
+            if (!g.info || !g.info->has(dialects::traits::profile_cycle))
                 continue;
             for (const char letter : {'P', 'Q'})
                 if (const auto w = view.word(letter))
