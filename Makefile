@@ -1,16 +1,21 @@
 # kerf: the two commands of the README.
 #   make run   install what is missing, build, run kerf on the bundled examples
 #   make test  install what is missing, build, run the whole test suite through ctest
+# and for CI and hardening (fuzz/README.md):
+#   make test-sanitize  the whole suite built with ASan + UBSan + _GLIBCXX_ASSERTIONS (build-sanitize/)
+#   make fuzz           the libFuzzer targets with clang (build-fuzz/)
 # Everything comes from Debian packages; nothing is downloaded at build time.
 
 BUILD_DIR ?= build
 BUILD_TYPE ?= Release
+CMAKE_FLAGS ?=
+SANITIZE_DIR ?= build-sanitize
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 PACKAGES := g++ make cmake libboost1.81-dev libboost-json1.81-dev libfmt-dev catch2 \
             libcli11-dev libtomlplusplus-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test build deps clean bench fuzz
+.PHONY: run test build deps clean bench fuzz test-sanitize
 
 run: build
 	@./scripts/run-examples.sh $(BUILD_DIR)/kerf
@@ -19,8 +24,16 @@ test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 build: deps
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_FLAGS)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# The same suite under the sanitizers (CMakeLists.txt KERF_SANITIZE). ASan's leak checker stays on;
+# halt_on_error makes the first report fail its test.
+test-sanitize: deps
+	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKERF_SANITIZE=ON $(CMAKE_FLAGS)
+	cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:strict_string_checks=1 \
+	  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
 # Installs only the packages that are missing (dpkg-query), without prompts.
 deps:
@@ -49,9 +62,21 @@ bench: deps
 	./bench/run.sh $(BUILD_DIR)
 	./bench/dryrun_vs_rs274.sh $(BUILD_DIR)
 
-fuzz:
-	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DKERF_FUZZ=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
-	cmake --build build-fuzz -j $(JOBS) --target fuzz_grammar
+# clang and its libFuzzer runtime (Debian: clang, libclang-rt-14-dev). The targets and how to run
+# them: fuzz/README.md.
+FUZZ_PACKAGES := clang libclang-rt-14-dev
+FUZZ_TARGETS := fuzz_grammar fuzz_interpreter fuzz_analyzer fuzz_formatter fuzz_machine_toml fuzz_dialect_toml
+fuzz: deps
+	@missing=""; for p in $(FUZZ_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DKERF_FUZZ=ON -DKERF_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+	cmake --build build-fuzz -j $(JOBS) --target $(FUZZ_TARGETS)
+	python3 fuzz/make_seeds.py build-fuzz/seeds
 
 clean:
-	rm -rf $(BUILD_DIR) build-fuzz
+	rm -rf $(BUILD_DIR) build-fuzz $(SANITIZE_DIR)

@@ -122,8 +122,8 @@ struct make_word_t {
 // (bench/RESULTS.md has the figures that made this worth it).
 inline bool plain_word(Builder& b, const char*& first, const char* last) {
     const char* p = first;
-    const char letter = *p;
-    if (!is_letter(letter)) return false;
+    const char address = *p;
+    if (!is_letter(address)) return false;
     ++p;
     bool negative = false;
     if (p != last && (*p == '-' || *p == '+')) {
@@ -145,8 +145,8 @@ inline bool plain_word(Builder& b, const char*& first, const char* last) {
     if (digits == 0 || digits > 9) return false;
     if (p != last && (*p == '.' || *p == ',')) return false;   // and F0,25 take the long way
     ast::Token& t = b.add_token(TokenKind::word, first, p);
-    t.letter = upper(letter);
-    t.flags = static_cast<std::uint8_t>((letter != t.letter ? ast::token_flags::lower_case : 0) |
+    t.letter = upper(address);
+    t.flags = static_cast<std::uint8_t>((address != t.letter ? ast::token_flags::lower_case : 0) |
                                         (point ? ast::token_flags::has_point : 0) |
                                         (negative ? ast::token_flags::negative : 0));
     t.payload = negative ? -static_cast<std::int32_t>(mantissa) : static_cast<std::int32_t>(mantissa);

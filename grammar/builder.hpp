@@ -31,8 +31,8 @@ enum class PendingValue : std::uint8_t { none, number, expr };
 
 class Builder {
 public:
-    Builder(ast::SyntaxTree& tree, const dialects::LexicalRules& rules)
-        : tree(tree), rules(rules), base(tree.text.data()) {}
+    Builder(ast::SyntaxTree& target, const dialects::LexicalRules& lexical)
+        : tree(target), rules(lexical), base(target.text.data()) {}
 
     ast::SyntaxTree& tree;
     const dialects::LexicalRules& rules;

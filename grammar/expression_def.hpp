@@ -24,7 +24,7 @@ struct transactional_directive : x3::unary_parser<Subject, transactional_directi
     using base_type = x3::unary_parser<Subject, transactional_directive<Subject>>;
     static bool const has_attribute = false;
     using attribute_type = x3::unused_type;
-    constexpr transactional_directive(Subject const& subject) : base_type(subject) {}
+    constexpr transactional_directive(Subject const& inner) : base_type(inner) {}
 
     template <typename It, typename Ctx, typename RCtx, typename Attr>
     bool parse(It& first, It const& last, Ctx const& ctx, RCtx& rctx, Attr&) const {
@@ -50,7 +50,7 @@ struct depth_guard_directive : x3::unary_parser<Subject, depth_guard_directive<S
     using base_type = x3::unary_parser<Subject, depth_guard_directive<Subject>>;
     static bool const has_attribute = false;
     using attribute_type = x3::unused_type;
-    constexpr depth_guard_directive(Subject const& subject) : base_type(subject) {}
+    constexpr depth_guard_directive(Subject const& inner) : base_type(inner) {}
 
     template <typename It, typename Ctx, typename RCtx, typename Attr>
     bool parse(It& first, It const& last, Ctx const& ctx, RCtx& rctx, Attr&) const {

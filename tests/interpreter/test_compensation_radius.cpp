@@ -15,7 +15,7 @@ using kerf::motion::P2;
 
 namespace {
 
-Programmed line(P2 a, P2 b, int side, double r) { return {Element{a, b}, side, r}; }
+Programmed line(P2 a, P2 b, int side, double r) { return {Element{a, b, false, {}, true}, side, r}; }
 Programmed arc(P2 a, P2 b, P2 c, bool ccw, int side, double r) { return {Element{a, b, true, c, ccw}, side, r}; }
 
 // Runs the elements in order, each with the next one as its look-ahead; all moves in one list.

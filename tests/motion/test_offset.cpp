@@ -9,7 +9,7 @@ using namespace kerf::motion;
 
 TEST_CASE("offset: a line moves along its left normal, an arc changes its radius") {
     // Line (0,0)→(10,0): left is +b. Offset 2 left → b = 2; offset 2 right → b = −2.
-    const Element line{{0, 0}, {10, 0}};
+    const Element line{{0, 0}, {10, 0}, false, {}, true};
     const auto left = offset_element(line, 2);
     REQUIRE(left);
     CHECK(left->start.b == Approx(2));
@@ -55,7 +55,7 @@ TEST_CASE("offset: crossings of lines and circles") {
     CHECK(std::fabs(cc[0].b) == Approx(3));
     CHECK(circle_circle({0, 0}, 1, {8, 0}, 1).empty());
     // meet: the crossing nearest the corner. Line b = 50 and the circle: near (100,40) → 107.32.
-    const Element line{{140, 50}, {100, 50}};
+    const Element line{{140, 50}, {100, 50}, false, {}, true};
     const Element arc{{110, 40}, {90, 60}, true, {90, 40}, true};
     const auto m = meet(line, arc, {100, 40});
     REQUIRE(m);
@@ -74,7 +74,7 @@ TEST_CASE("offset: corner classes for a tool on the left and on the right") {
 }
 
 TEST_CASE("offset: a join behind the tool is an over-cut") {
-    const Element line{{0, 0}, {10, 0}};
+    const Element line{{0, 0}, {10, 0}, false, {}, true};
     CHECK(ahead_on(line, {0, 0}, {5, 0}));
     CHECK_FALSE(ahead_on(line, {4, 0}, {3, 0}));
     // CCW quarter arc about the origin from (10,0) to (0,10): 45° lies ahead, −45° does not.
