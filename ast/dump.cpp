@@ -13,10 +13,11 @@ std::string expr_to_string(const SyntaxTree& tree, std::int32_t index) {
     const Expr& e = tree.exprs[static_cast<std::size_t>(index)];
     switch (e.kind) {
         case ExprKind::number: return std::string(tree.slice(e.range()));
-        case ExprKind::variable: return "#" + expr_to_string(tree, e.a);
-        case ExprKind::negate: return "(- " + expr_to_string(tree, e.a) + ")";
-        case ExprKind::plus: return "(+ " + expr_to_string(tree, e.a) + ")";
-        case ExprKind::bracket: return "[" + expr_to_string(tree, e.a) + "]";
+        // fmt::format, not "literal" + string: GCC 12 warns falsely on the latter (-Wrestrict).
+        case ExprKind::variable: return fmt::format("#{}", expr_to_string(tree, e.a));
+        case ExprKind::negate: return fmt::format("(- {})", expr_to_string(tree, e.a));
+        case ExprKind::plus: return fmt::format("(+ {})", expr_to_string(tree, e.a));
+        case ExprKind::bracket: return fmt::format("[{}]", expr_to_string(tree, e.a));
         case ExprKind::binary:
             return fmt::format("({} {} {})", to_string(e.binary_op()), expr_to_string(tree, e.a), expr_to_string(tree, e.b));
         case ExprKind::function:
@@ -71,8 +72,8 @@ std::string token_text(const TypedFile& file, const Token& t) {
         case TokenKind::percent: return "%";
         case TokenKind::bom: return "{bom}";
         case TokenKind::block_delete: return spelled + "{block-delete}";
-        case TokenKind::error: return "{error " + spelled + "}";
-        case TokenKind::statement: return "{" + statement_to_string(tree, t.payload) + "}";
+        case TokenKind::error: return fmt::format("{{error {}}}", spelled);
+        case TokenKind::statement: return fmt::format("{{{}}}", statement_to_string(tree, t.payload));
         case TokenKind::comma_word: return fmt::format("{}{{comma {}={}}}", spelled, t.letter, value_text(tree, t));
         case TokenKind::word: break;
     }
@@ -290,7 +291,7 @@ std::string to_text(const TypedFile& file, const LineIndex& lines) {
             out += fmt::format(" {} bytes ignored\n", v.range().size());
             continue;
         }
-        for (const Token& t : v.tokens()) out += " " + token_text(file, t);
+        for (const Token& t : v.tokens()) (out += ' ') += token_text(file, t);
         if (const auto call = v.subprogram_call())
             out += fmt::format(" => call O{:04} x{}", call->program, call->repeats);
         if (const auto call = v.macro_call())

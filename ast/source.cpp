@@ -21,15 +21,54 @@ bool all_ascii(std::string_view text) {
 
 }  // namespace
 
+LineBreaks::Line LineBreaks::line_from(std::size_t pos) {
+    const std::size_t size = text_.size();
+    if (pos >= size) return {size, size};
+    if (!searched_ || (lf_ != std::string_view::npos && lf_ < pos)) {
+        lf_ = text_.find('\n', pos);
+        searched_ = true;
+    }
+    const std::size_t limit = lf_ == std::string_view::npos ? size : lf_;
+    // The first '\r' before the '\n' ends the line unless it is the '\r' of "\r\n".
+    if (const void* cr = std::memchr(text_.data() + pos, '\r', limit - pos)) {
+        const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(cr) - text_.data());
+        if (at + 1 != lf_ && at + 1 < size) return {at, at + 1};
+        if (at + 1 == size) return {at, size};
+    }
+    if (lf_ == std::string_view::npos) return {size, size};
+    return {lf_, lf_ + 1};
+}
+
+std::size_t last_line_end_before(std::string_view text, std::size_t limit) {
+    limit = std::min(limit, text.size());
+    for (std::size_t i = limit; i > 0; --i) {
+        const char c = text[i - 1];
+        if (c == '\n') return i;
+        // A lone '\r' ends a line; the '\r' of a "\r\n" whose '\n' lies at `limit` or beyond does not.
+        if (c == '\r' && (i == text.size() || text[i] != '\n')) return i;
+    }
+    return std::string_view::npos;
+}
+
+std::size_t count_line_breaks(std::string_view text) {
+    std::size_t n = 0;
+    LineBreaks breaks(text);
+    for (std::size_t pos = 0; pos < text.size();) {
+        const LineBreaks::Line line = breaks.line_from(pos);
+        if (line.end < text.size()) ++n;
+        pos = line.next;
+    }
+    return n;
+}
+
 LineIndex::LineIndex(std::string_view text) : text_(text) {
     starts_.push_back(0);
-    const char* p = text.data();
-    const char* const end = p + text.size();
-    while (p < end) {
-        const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-        if (!nl) break;
-        p = static_cast<const char*>(nl) + 1;
-        starts_.push_back(static_cast<std::uint32_t>(p - text.data()));
+    LineBreaks breaks(text);
+    for (std::size_t pos = 0; pos < text.size();) {
+        const LineBreaks::Line line = breaks.line_from(pos);
+        if (line.end >= text.size()) break;
+        pos = line.next;
+        starts_.push_back(static_cast<std::uint32_t>(pos));
     }
     // Most NC lines are ASCII; for them a UTF-16 column needs no walk along the line. Most files
     // are ASCII throughout: one pass eight bytes at a time says so.

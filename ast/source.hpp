@@ -2,6 +2,7 @@
 // line/column in UTF-8 bytes or UTF-16 code units (what LSP clients count).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,35 @@ struct Position {
     std::uint32_t line = 0;
     std::uint32_t column = 0;
 };
+
+// Line breaks are "\n", "\r\n" and a lone "\r" (old Mac editors and some DNC senders write CR
+// only). The grammar, the line index, the streamed reader, the formatter and the input decoder all
+// cut lines here, so every command sees the same lines (issue 17).
+//
+// The scanner walks the lines of a text front to back in linear total time: a '\n' search that
+// found nothing is not repeated, so a file without any '\n' costs one pass, not one per line.
+class LineBreaks {
+public:
+    struct Line {
+        std::size_t end;    // where the line's break begins ('\n' or the lone '\r'); text.size() if none
+        std::size_t next;   // where the next line starts (after the break); text.size() at the end
+    };
+    explicit LineBreaks(std::string_view text) : text_(text) {}
+    // The line that starts at `pos`; calls must come with non-decreasing `pos`.
+    Line line_from(std::size_t pos);
+
+private:
+    std::string_view text_;
+    std::size_t lf_ = 0;        // the first '\n' at or after the last search, or npos
+    bool searched_ = false;
+};
+
+// The offset just after the last line break that lies wholly inside [0, limit) of `text` (a "\r\n"
+// split by `limit` does not count), or npos when there is none.
+std::size_t last_line_end_before(std::string_view text, std::size_t limit);
+
+// The number of line breaks in `text`.
+std::size_t count_line_breaks(std::string_view text);
 
 class LineIndex {
 public:

@@ -5,17 +5,20 @@
 #include <algorithm>
 #include <vector>
 
+#include "ast/source.hpp"
+
 namespace kerf::formatter {
 
 namespace {
 
+// Lines with their breaks ("\n", "\r\n" or a lone "\r", ast/source.hpp).
 std::vector<std::string_view> split_lines(std::string_view text) {
     std::vector<std::string_view> lines;
-    while (!text.empty()) {
-        const std::size_t lf = text.find('\n');
-        const std::size_t n = lf == std::string_view::npos ? text.size() : lf + 1;
-        lines.push_back(text.substr(0, n));
-        text.remove_prefix(n);
+    ast::LineBreaks breaks(text);
+    for (std::size_t pos = 0; pos < text.size();) {
+        const std::size_t next = breaks.line_from(pos).next;
+        lines.push_back(text.substr(pos, next - pos));
+        pos = next;
     }
     return lines;
 }
@@ -83,6 +86,13 @@ std::vector<Edit> edit_script(const Lines& a, const Lines& b) {
 
 void append_line(std::string& out, char prefix, std::string_view line) {
     out += prefix;
+    if (!line.empty() && line.back() == '\r') {
+        // A CR-only line: shown as a line of the diff (a bare CR would overwrite it on a terminal).
+        line.remove_suffix(1);
+        out += line;
+        out += '\n';
+        return;
+    }
     out += line;
     if (line.empty() || line.back() != '\n') out += "\n\\ No newline at end of file\n";
 }

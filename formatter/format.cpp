@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "ast/source.hpp"
+
 #include "formatter/renumber.hpp"
 
 namespace kerf::formatter {
@@ -78,13 +80,15 @@ int rank_of(const Token& t) {
     }
 }
 
-// The line break at the end of a block: what follows its last token after blanks, when it holds
-// the line feed; empty when another block follows on the same line or the file ends.
+// The line break at the end of a block: what follows its last token after blanks, when it is a
+// line break ("\n", "\r\n" or a lone "\r": ast/source.hpp LineBreaks); empty when another block
+// follows on the same line or the file ends.
 std::string_view line_break_of(std::string_view trailing) {
     std::size_t at = 0;
     while (at < trailing.size() && is_blank(trailing[at]) && trailing[at] != '\r') ++at;
     trailing.remove_prefix(at);
-    return trailing.find('\n') == std::string_view::npos ? std::string_view{} : trailing;
+    const bool lone_cr = !trailing.empty() && trailing.front() == '\r';
+    return lone_cr || trailing.find('\n') != std::string_view::npos ? trailing : std::string_view{};
 }
 
 // "(  TEXT )" → "TEXT" with the style's blanks around it; other comments (line comments, unclosed
@@ -419,10 +423,14 @@ private:
 std::string_view added_line_break(const ast::SyntaxTree& tree, LineEnding ending) {
     if (ending == LineEnding::lf) return "\n";
     if (ending == LineEnding::crlf) return "\r\n";
-    const std::size_t lf = tree.text.find('\n');
-    if (lf == std::string::npos) return "\n";
-    return lf > 0 && tree.text[lf - 1] == '\r' ? "\r\n" : "\n";
+    const std::string_view text = tree.text;
+    const std::size_t end = ast::LineBreaks(text).line_from(0).end;
+    if (end >= text.size()) return "\n";
+    if (text[end] == '\r') return "\r";   // a CR-only file stays CR-only
+    return end > 0 && text[end - 1] == '\r' ? "\r\n" : "\n";
 }
+
+bool ends_with_line_break(const std::string& out) { return !out.empty() && (out.back() == '\n' || out.back() == '\r'); }
 
 struct Framing {
     bool open = false;    // add a '%' line before the first block
@@ -470,7 +478,7 @@ FormatResult format(const ast::TypedFile& file, const Style& style, const Format
     if (frame.open) (out += '%') += brk;
     Printer(file, style, context, std::get<Renumbering>(plan), out).blocks(0, tree.block_count());
     if (frame.close) {
-        if (!out.empty() && out.back() != '\n') out += brk;
+        if (!out.empty() && !ends_with_line_break(out)) out += brk;
         (out += '%') += brk;
     }
     result.text = std::move(out);

@@ -90,8 +90,8 @@ Detection detect_dialect(std::string_view text) {
     // a 100 MB program to the end would cost a whole second parse. Whole lines only.
     constexpr std::size_t kEnough = std::size_t{256} << 10;
     if (text.size() > kEnough) {
-        const std::size_t cut = text.rfind('\n', kEnough);
-        text = text.substr(0, cut == std::string_view::npos ? kEnough : cut + 1);
+        const std::size_t cut = ast::last_line_end_before(text, kEnough);
+        text = text.substr(0, cut == std::string_view::npos ? kEnough : cut);
     }
     const ast::SyntaxTree tree = parse(std::string(text), permissive_rules());
     const ast::LineIndex lines(tree.text);

@@ -1,10 +1,11 @@
-// The driver: splits the text into lines, runs the X3 block grammar on each block, and lays the
+// The driver: splits the text into lines ("\n", "\r\n" or a lone "\r"), runs the X3 block grammar on each block, and lays the
 // blocks end to end so that they cover every byte (the lossless invariant, ast/printer.hpp).
 #include "grammar/parse.hpp"
 
 #include <algorithm>
 #include <cstring>
 
+#include "ast/display.hpp"
 #include "grammar/block_def.hpp"
 
 namespace kerf::grammar {
@@ -75,10 +76,13 @@ public:
         bool program_seen = state.program_seen;   // code since the opening '%'
         bool bom_pending = state.file_start && text.size() >= 3 && std::memcmp(base, "\xEF\xBB\xBF", 3) == 0;
         bool ended = false;
+        // Lines end at "\n", "\r\n" or a lone "\r" (ast/source.hpp LineBreaks): a CR-only file is
+        // read line by line like any other. The break itself is trivia of the block before it.
+        ast::LineBreaks breaks(text);
         while (pos < end) {
-            const char* nl = static_cast<const char*>(std::memchr(pos, '\n', static_cast<std::size_t>(end - pos)));
-            const char* line_end = nl ? nl : end;
-            const char* next_line = nl ? nl + 1 : end;
+            const ast::LineBreaks::Line line = breaks.line_from(static_cast<std::size_t>(pos - base));
+            const char* line_end = base + line.end;
+            const char* next_line = base + line.next;
             const char* p = pos;
             while (true) {
                 const std::size_t block_index = tree_.blocks.size();
@@ -184,14 +188,7 @@ private:
         for (const std::size_t i : builder_.merged_diagnostics) {
             ast::Diagnostic& d = tree_.diagnostics[i];
             const std::string_view text = tree_.slice(d.range);
-            // At most 80 characters, cut on a UTF-8 character boundary.
-            std::size_t cut = 0;
-            for (int chars = 0; cut < text.size() && chars < 80; ++chars) {
-                ++cut;
-                while (cut < text.size() && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) ++cut;
-            }
-            std::string shown(text.substr(0, cut));
-            if (cut < text.size()) shown += "...";
+            const std::string shown = ast::shorten(text, 80);   // on a UTF-8 character boundary
             if (text.back() == ')') {
                 // Prose that ends in ')' is a comment that lost its '(' (seed 000, N040).
                 d.code = "S0203";

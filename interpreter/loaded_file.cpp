@@ -58,13 +58,14 @@ LoadedFile::Piece LoadedFile::parse_piece(Cursor& cursor, Held& held) const {
     const std::size_t size = text_.size();
     std::size_t end = size;
     if (size - piece.text_begin() > options_.piece_bytes) {
-        const std::string_view window = text_.substr(piece.text_begin(), options_.piece_bytes);
-        const std::size_t last_nl = window.rfind('\n');
-        if (last_nl != std::string_view::npos) {
-            end = piece.text_begin() + last_nl + 1;
+        // Line breaks as the grammar reads them ("\n", "\r\n", a lone "\r": ast/source.hpp).
+        const std::string_view rest = text_.substr(piece.text_begin());
+        const std::size_t last = ast::last_line_end_before(rest, options_.piece_bytes);
+        if (last != std::string_view::npos) {
+            end = piece.text_begin() + last;
         } else {
-            const std::size_t next_nl = text_.find('\n', piece.text_begin() + options_.piece_bytes);
-            end = next_nl == std::string_view::npos ? size : next_nl + 1;
+            ast::LineBreaks breaks(rest);
+            end = piece.text_begin() + breaks.line_from(0).next;
         }
     }
     piece.text_end = end;
@@ -76,7 +77,7 @@ LoadedFile::Piece LoadedFile::parse_piece(Cursor& cursor, Held& held) const {
     piece.end_block = piece.first_block() + static_cast<std::uint32_t>(held.tree.block_count());
     cursor.text_begin = end;
     cursor.first_block = piece.end_block;
-    cursor.first_line += static_cast<std::uint32_t>(std::count(text.begin(), text.end(), '\n'));
+    cursor.first_line += static_cast<std::uint32_t>(ast::count_line_breaks(text));
     cursor.linear = held.typed->linear_at_end();
     cursor.done = cursor.state.ended || end >= size;
     piece.last = cursor.done;

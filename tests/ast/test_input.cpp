@@ -1,0 +1,190 @@
+// ast/input.hpp (decoding the bytes of a file) and ast/display.hpp (text shown to people). The
+// expected bytes are written by hand from the encodings' definitions (RFC 2781 UTF-16, RFC 3629
+// UTF-8).
+#include <catch2/catch.hpp>
+
+#include "ast/display.hpp"
+#include "ast/input.hpp"
+#include "ast/source.hpp"
+
+using namespace kerf::ast;
+
+namespace {
+
+bool has(const DecodedInput& d, InputProblemKind kind) {
+    for (const InputProblem& p : d.problems)
+        if (p.kind == kind) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("input: UTF-8 passes through untouched, BOM and invalid bytes included") {
+    const std::string text = "\xEF\xBB\xBFO1000\n(\xFF\xFE caf\xC3\xA9)\nM30\n";
+    const DecodedInput d = decode_input(text);
+    CHECK(d.text == text);
+    CHECK(d.encoding == Encoding::utf8);
+    CHECK(d.bom);
+    CHECK(d.problems.empty());
+    CHECK_FALSE(d.refused());
+}
+
+TEST_CASE("input: UTF-16 and UTF-32 with and without BOM are transcoded") {
+    // "G0 Ж\n": G=47 0=30 space=20 Ж=U+0416 LF=0A; U+1D11E (𝄞) is the pair D834 DD1E.
+    const std::string utf8 = "G0 \xD0\x96\n(\xF0\x9D\x84\x9E)\n";
+    const std::string le = std::string("\xFF\xFE" "G\0" "0\0" " \0" "\x16\x04" "\n\0" "(\0" "\x34\xD8\x1E\xDD" ")\0" "\n\0", 22);
+    const std::string be_no_bom = std::string("\0G" "\0" "0" "\0 " "\x04\x16" "\0\n" "\0(" "\xD8\x34\xDD\x1E" "\0)" "\0\n", 20);
+    const std::string le32_no_bom = std::string("G\0\0\0" "0\0\0\0" " \0\0\0" "\x16\x04\0\0" "\n\0\0\0" "(\0\0\0"
+                                                "\x1E\xD1\x01\0" ")\0\0\0" "\n\0\0\0", 36);
+    const std::string be32 = std::string("\0\0\xFE\xFF" "\0\0\0G" "\0\0\0" "0" "\0\0\0 " "\0\0\x04\x16" "\0\0\0\n"
+                                         "\0\0\0(" "\0\x01\xD1\x1E" "\0\0\0)" "\0\0\0\n", 40);
+    for (const auto& [bytes, encoding, bom] :
+         {std::tuple{le, Encoding::utf16le, true}, std::tuple{be_no_bom, Encoding::utf16be, false},
+          std::tuple{le32_no_bom, Encoding::utf32le, false}, std::tuple{be32, Encoding::utf32be, true}}) {
+        INFO(to_string(encoding));
+        const DecodedInput d = decode_input(bytes);
+        CHECK(d.text == utf8);
+        CHECK(d.encoding == encoding);
+        CHECK(d.bom == bom);
+        CHECK(has(d, InputProblemKind::transcoded));
+        CHECK_FALSE(d.refused());
+        // And back: the writer's bytes are the input's.
+        CHECK(encode_output(d.text, d.encoding, d.bom) == bytes);
+    }
+}
+
+TEST_CASE("input: an unpaired surrogate reads as U+FFFD with a warning") {
+    const std::string bytes("\xFF\xFEG\0\x00\xD8X\0", 8);   // G, a lone high surrogate D800, X
+    const DecodedInput d = decode_input(bytes);
+    CHECK(d.text == "G\xEF\xBF\xBDX");
+    CHECK(has(d, InputProblemKind::bad_encoding));
+    CHECK_FALSE(d.refused());
+}
+
+TEST_CASE("input: binary data is refused, a stray NUL or a few tape control codes are not") {
+    std::string elf("\x7F" "ELF\x02\x01\x01", 7);
+    for (int i = 0; i < 500; ++i) elf += std::string("\0\0\x01\x02G", 5);
+    const DecodedInput bin = decode_input(elf);
+    CHECK(bin.refused());
+    CHECK(has(bin, InputProblemKind::binary));
+    CHECK(bin.text.empty());
+    REQUIRE(bin.problems.size() == 1);
+    CHECK(bin.problems[0].message.find("binary data, not an NC program") == 0);
+    // A program with DC2 ... DC4 (tape reader on/off) and one NUL: read.
+    std::string tape = "\x12%\nO1000\n";
+    for (int i = 0; i < 40; ++i) tape += "G01 X10. Y20. F100.\n";
+    tape += std::string("(\0)\n%\x14", 6);
+    const DecodedInput ok = decode_input(tape);
+    CHECK_FALSE(ok.refused());
+    CHECK(ok.text == tape);
+}
+
+TEST_CASE("input: size limits refuse a file or a line past them, with the limit in the message") {
+    InputLimits limits;
+    limits.max_file_bytes = 100;
+    limits.max_line_bytes = 10;
+    const DecodedInput big = decode_input(std::string(101, 'G'), limits);
+    REQUIRE(big.refused());
+    CHECK(big.problems[0].kind == InputProblemKind::too_large);
+    CHECK(big.problems[0].message == "the file is 101 bytes, over the limit of 100 bytes per file; nothing of it was read");
+    const DecodedInput line = decode_input("G0\nG1 X1. Y2. Z3.\nM30\n", limits);
+    REQUIRE(line.refused());
+    CHECK(line.problems[0].kind == InputProblemKind::line_too_long);
+    CHECK(line.problems[0].line == 2);
+    CHECK(line.problems[0].message.find("line 2 is 14 bytes long, over the limit of 10 bytes per line") == 0);
+    CHECK(line.problems[0].hint.find("--max-line-bytes") != std::string::npos);
+    CHECK_FALSE(decode_input("G0\nG1 X1.\nM30\n", limits).refused());
+    limits.max_line_bytes = 0;   // no limit
+    CHECK_FALSE(decode_input("G0\nG1 X1. Y2. Z3.\nM30\n", limits).refused());
+    CHECK(check_file_size(101, {100, 10}).has_value());
+    CHECK_FALSE(check_file_size(100, {100, 10}).has_value());
+}
+
+TEST_CASE("input: an empty or blank file gets a note") {
+    const DecodedInput empty = decode_input("");
+    REQUIRE(empty.problems.size() == 1);
+    CHECK(empty.problems[0].kind == InputProblemKind::empty);
+    CHECK(empty.problems[0].severity == Severity::info);
+    CHECK(empty.problems[0].message == "the file is empty: no program");
+    const DecodedInput blank = decode_input(" \r\n\t\n\r");
+    REQUIRE(blank.problems.size() == 1);
+    CHECK(blank.problems[0].message == "the file holds only blanks and line breaks: no program");
+    CHECK_FALSE(blank.refused());
+    CHECK(decode_input("%\n").problems.empty());
+}
+
+TEST_CASE("input: the scanner over pieces decides as decode_input does") {
+    InputLimits limits;
+    limits.max_line_bytes = 8;
+    // A CRLF split between two pieces is one line break: lines "G0 X1." (6) and "G1" (2).
+    for (const std::string& text : {std::string("G0 X1.\r\nG1\n"), std::string("G0 X1. Y2. Z3.\r\nG1\n"), std::string(""),
+                                    std::string("\n\n"), std::string("G0\rG1 X1. Y2.\r")}) {
+        INFO(text);
+        for (std::size_t cut = 0; cut <= text.size(); ++cut) {
+            InputScanner scanner(limits);
+            scanner.feed(std::string_view(text).substr(0, cut));
+            scanner.feed(std::string_view(text).substr(cut));
+            const DecodedInput scanned = scanner.finish();
+            const DecodedInput decoded = decode_input(text, limits);
+            REQUIRE(scanned.problems.size() == decoded.problems.size());
+            for (std::size_t i = 0; i < scanned.problems.size(); ++i) {
+                CHECK(scanned.problems[i].kind == decoded.problems[i].kind);
+                CHECK(scanned.problems[i].line == decoded.problems[i].line);
+            }
+        }
+    }
+}
+
+TEST_CASE("line breaks: LF, CRLF and a lone CR each end a line") {
+    const std::string text = "A\nB\r\nC\rD\r\rE";
+    LineBreaks breaks(text);
+    std::vector<std::string> lines;
+    for (std::size_t pos = 0; pos < text.size();) {
+        const LineBreaks::Line l = breaks.line_from(pos);
+        lines.push_back(text.substr(pos, l.end - pos));
+        pos = l.next;
+    }
+    // "B\r" keeps the CR of its CRLF (trivia before the LF); "D\r\r" is D, then an empty line.
+    CHECK(lines == std::vector<std::string>{"A", "B\r", "C", "D", "", "E"});
+    CHECK(count_line_breaks(text) == 5);
+    const LineIndex index(text);
+    CHECK(index.line_count() == 6);
+    CHECK(index.utf8(static_cast<std::uint32_t>(text.find('E'))).line == 5);
+    // The last line end before a limit; a CRLF cut by the limit does not count.
+    CHECK(last_line_end_before("AB\r\nCD", 3) == std::string::npos);
+    CHECK(last_line_end_before("AB\r\nCD", 4) == 4);
+    CHECK(last_line_end_before("AB\rCD", 4) == 3);
+}
+
+TEST_CASE("display: control bytes and invalid UTF-8 are escaped, characters kept") {
+    CHECK(printable("G0 (\x1b[2J) \x07\x7f") == "G0 (\\x1b[2J) \\x07\\x7f");
+    CHECK(printable("(\xD0\x96 \xC2\x9B" "1m \xFF)") == "(\xD0\x96 \\u009b1m \\xff)");
+    CHECK(printable("a\tb\nc\r\n") == "a\tb\\x0ac\\x0d\\x0a");
+    CHECK(printable("a\nb\r\n", true) == "a\nb\r\n");
+    CHECK(valid_utf8("ok \xD0\x96 \xFF\xC0\xAF") == "ok \xD0\x96 \xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD");
+    CHECK(shorten("abcdef", 3) == "abc...");
+    CHECK(shorten("\xD0\x96\xD0\x96\xD0\x96", 2) == "\xD0\x96\xD0\x96...");
+    CHECK(shorten("abc", 3) == "abc");
+}
+
+TEST_CASE("display: an excerpt is a window around the range, its caret under what is shown") {
+    const Excerpt short_line = excerpt("G01 X1. X1.", 8, 11, false);
+    CHECK(short_line.text == "G01 X1. X1.");
+    CHECK(short_line.caret == "        ^^^");
+    const Excerpt tabs = excerpt("\tG01\tX\x1b", 5, 7, false);
+    CHECK(tabs.text == "\tG01\tX\\x1b");
+    CHECK(tabs.caret == "\t   \t^^^^^");
+    // A 10,000-character line: about 100 columns around column 5,000, cut on both sides.
+    std::string line;
+    for (int i = 0; i < 2500; ++i) line += "X1. ";
+    const Excerpt long_line = excerpt(line, 5000, 5003, false);
+    CHECK(long_line.text.size() < 110);
+    CHECK(long_line.text.substr(0, 3) == "...");
+    CHECK(long_line.text.substr(long_line.text.size() - 3) == "...");
+    const std::size_t caret = long_line.caret.find('^');
+    CHECK(long_line.text.substr(caret, 3) == "X1.");
+    CHECK(long_line.caret.substr(caret) == "^^^");
+    // To the line's end, and a range at the end of the line.
+    CHECK(excerpt("G01 X1.", 4, 0, true).caret == "    ^^^");
+    CHECK(excerpt("G01", 3, 3, false).caret == "   ^");
+}
