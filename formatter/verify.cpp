@@ -39,12 +39,12 @@ std::optional<std::string> compare_position(std::string_view what, const interpr
 // renumbering changes on purpose; their codes and the events around them carry the meaning.
 bool compares_text(EventKind k) { return k != EventKind::alarm && k != EventKind::call; }
 
-// The step-limit alarm (interpreter/executor.cpp) ends an endless program wherever the count of
-// blocks runs out, and formatting changes that count (blank and comment lines are blocks): two
-// endless runs are compared up to the first such alarm.
-// The step limit has kerf's own alarm number (interpreter/events.hpp kerf_alarm, docs/trace.md).
-bool is_step_limit(const Event& e) {
-    return e.kind == EventKind::alarm && e.code == interpreter::kerf_alarm::step_limit;
+// The step-limit alarm (interpreter/run_guard.hpp) ends an endless program wherever the count of
+// blocks runs out, and formatting changes that count (blank and comment lines are blocks); the
+// time limit ends a run wherever the clock runs out: two runs are compared up to the first alarm
+// of a run bound (kerf's own numbers, interpreter/events.hpp kerf_alarm, docs/trace.md).
+bool is_run_limit(const Event& e) {
+    return e.kind == EventKind::alarm && interpreter::kerf_alarm::is_run_limit(e.code);
 }
 
 // The input's events, handed from its run (on a thread of its own) to the output's run in batches,
@@ -112,7 +112,7 @@ public:
             difference_ = Difference{i, 0, e.source.line, "the output has more events than the input"};
             return;
         }
-        if (is_step_limit(e) || is_step_limit(*expected)) {
+        if (is_run_limit(e) || is_run_limit(*expected)) {
             stopped_ = true;
             return;
         }
@@ -122,7 +122,7 @@ public:
     void finish() {
         const std::size_t matched = count_;
         while (const Event* expected = next()) {
-            if (!difference_ && !stopped_ && !is_step_limit(*expected))
+            if (!difference_ && !stopped_ && !is_run_limit(*expected))
                 difference_ = Difference{matched, expected->source.line, 0, "the output has fewer events than the input"};
         }
     }
@@ -136,7 +136,7 @@ private:
     std::size_t count_ = 0;
     std::size_t taken_ = 0;
     bool drained_ = false;
-    bool stopped_ = false;   // a step limit was reached: the rest is not compared
+    bool stopped_ = false;   // a run bound was reached: the rest is not compared
     std::optional<Difference> difference_;
 
     const Event* next() {

@@ -3,7 +3,8 @@
 // lengths, times, feeds and speeds equal to 1e-9 (issue 6, "meaning-preserving"). Events carry
 // source lines, which formatting may move, so sources are not compared; alarm and call texts quote
 // sequence numbers, which renumbering changes, so their codes are compared instead. Two endless
-// programs are compared up to the first step-limit alarm (blank lines count as steps).
+// programs are compared up to the first alarm of a run bound (step, move or time limit: blank lines
+// count as steps, and the clock runs differently in two runs).
 #pragma once
 
 #include <cstdint>

@@ -115,6 +115,7 @@ Setup make_setup(const machine::Machine& m) {
     s.tool_offset_count = m.tool_offset_count;
     for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);
     s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);
+    s.move_limit = static_cast<std::uint64_t>(sw.max_moves);
     s.max_call_depth = sw.subprogram_nesting;
     s.max_macro_depth = sw.macro_nesting;
     s.cycles = cycle_settings(m);

@@ -41,6 +41,11 @@ namespace kerf_alarm {
 inline constexpr int step_limit = 90001;     // the run's step limit: an endless loop?
 inline constexpr int syntax_error = 90002;   // a block with syntax errors in a strict (not lenient) run
 inline constexpr int internal = 90003;       // a tree the evaluator does not know (macro M0901)
+inline constexpr int move_limit = 90004;     // the run's move limit (Setup::move_limit): a cycle or loop without end?
+inline constexpr int time_limit = 90005;     // the run's wall-clock limit (RunOptions::time_limit)
+// The alarms that end a run at one of its bounds (interpreter/run_guard.hpp), not at a defect of
+// the program at that block: the formatter's --verify compares two runs only up to them.
+inline constexpr bool is_run_limit(int code) { return code == step_limit || code == move_limit || code == time_limit; }
 }  // namespace kerf_alarm
 
 // Codes of kerf's warning messages (`message` events that do not stop the run; docs/trace.md).

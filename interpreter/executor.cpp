@@ -46,7 +46,7 @@ const char* to_string(EventKind k) {
 Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const Setup& setup, EventSink& sink,
                    const RunOptions& options)
     : programs_(programs), dialect_(dialect), setup_(setup), sink_(sink), options_(options),
-      work_offsets_(setup.work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
+      guard_(setup.step_limit, setup.move_limit, options.time_limit), work_offsets_(setup.work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
       tools_(setup.tools) {
     // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
     modal_.assign(dialect_.groups().size(), nullptr);
@@ -145,6 +145,12 @@ Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& v
 }
 
 void Executor::emit(Event&& e) {
+    const bool motion = e.kind == EventKind::rapid || e.kind == EventKind::linear || e.kind == EventKind::arc_cw ||
+                        e.kind == EventKind::arc_ccw || e.kind == EventKind::thread;
+    if (motion && !stopped_) {
+        // The move over the limit is not made: the alarm stands where the tool is.
+        if (auto limit = guard_.move()) return limit_alarm(e.source, e.start, std::move(*limit));
+    }
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a) e.machine_end[a] = e.end[a] * axis_scale(a) + offset[a];
@@ -158,6 +164,24 @@ void Executor::emit(Event&& e) {
         *tool_time_ += e.time_s;
     }
     sink_.on_event(e);
+    if (stopped_ || e.kind == EventKind::alarm) return;
+    if (auto limit = guard_.tick()) limit_alarm(e.source, position_, std::move(*limit));
+}
+
+void Executor::limit_alarm(const SourceRef& where, const Position& at, LimitAlarm limit) {
+    Event e;
+    e.kind = EventKind::alarm;
+    e.source = where;
+    e.start = e.end = at;
+    e.code = limit.number;
+    e.text = std::move(limit.text);
+    emit(std::move(e));
+    stopped_ = true;
+}
+
+bool Executor::count_idle_move(const Frame& f, const ast::BlockView& view) {
+    if (auto limit = guard_.move()) limit_alarm(source(f, view), position_, std::move(*limit));
+    return !stopped_;
 }
 
 void Executor::alarm(const Frame& f, const ast::BlockView& view, int number, std::string text) {
@@ -203,11 +227,11 @@ RunResult Executor::run(ProgramRef main) {
             pop_frame();
             continue;
         }
-        if (++result_.blocks > setup_.step_limit) {
+        if (auto limit = guard_.block(++result_.blocks)) {
             const ast::BlockView view = file_of(f).block(f.block);
             view_ = nullptr;
-            // check3: kerf's own number, so K4004 sees only this (events.hpp kerf_alarm)
-            alarm(f, view, kerf_alarm::step_limit, fmt::format("step limit of {} blocks reached: endless loop?", setup_.step_limit));
+            // check3: kerf's own numbers, so K4004 sees only these (events.hpp kerf_alarm)
+            alarm(f, view, limit->number, std::move(limit->text));
             break;
         }
         execute_block(f);

@@ -17,6 +17,7 @@
 #include "interpreter/interpreter.hpp"
 #include "interpreter/macro/evaluate.hpp"
 #include "interpreter/macro/variables.hpp"
+#include "interpreter/run_guard.hpp"
 #include "interpreter/transforms.hpp"
 #include "motion/arc.hpp"
 #include "motion/polar.hpp"
@@ -173,6 +174,7 @@ private:
     EventSink& sink_;
     RunOptions options_;
     RunResult result_;
+    RunGuard guard_;   // step, move and time limits (run_guard.hpp)
 
     BlockScan scan_;             // the block being executed
     BlockWords block_words_;     // its words (reused: no 1 KB zeroing per block)
@@ -302,6 +304,11 @@ private:
     int timed_tool_ = -1;                  // time_per_tool_s[timed_tool_] is *tool_time_ (map nodes stay)
     double* tool_time_ = nullptr;
     void alarm(const Frame& f, const ast::BlockView& view, int number, std::string text);
+    // A run bound reached (run_guard.hpp) while `where` runs, the tool at `at`: the alarm, and the
+    // run stops.
+    void limit_alarm(const SourceRef& where, const Position& at, LimitAlarm limit);
+    // A cycle step that moved nothing counts against the move limit; false once the run stopped.
+    bool count_idle_move(const Frame& f, const ast::BlockView& view);
     // Stored stroke check of the box low..high (work coordinates); false after an OT alarm.
     bool within_soft_limits(const Position& low, const Position& high, const Frame& f, const ast::BlockView& view);
     void move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view);

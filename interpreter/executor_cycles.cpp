@@ -151,7 +151,9 @@ public:
 private:
     bool move(EventKind kind, const Position& to) {
         if (ex_.stopped_) return false;
-        if (to == ex_.position_ && kind != EventKind::thread) return true;   // nothing to move
+        // Nothing to move; it still counts as a move, so that a cycle whose step vanishes (a peck
+        // below the resolution of a double far from zero) cannot loop without end.
+        if (to == ex_.position_ && kind != EventKind::thread) return ex_.count_idle_move(*ex_.frame_, view_);
         ex_.move(kind, to, *ex_.frame_, view_);
         ex_.leave_offset_for_cycle();
         return !ex_.stopped_;

@@ -3,6 +3,7 @@
 // machine differences from the Setup; the interpreter does no I/O.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -21,6 +22,9 @@ struct RunOptions {
     // words and say so in a message event — for reading damaged listings like the seeds.
     bool lenient = false;
     bool emit_state = false;    // a `state` event after every executed block (hovers, debugging)
+    // Wall-clock bound of the run (interpreter/run_guard.hpp): past it the run stops with alarm
+    // kerf_alarm::time_limit. 0 = none (the library default: runs stay deterministic; the CLI sets one).
+    std::chrono::milliseconds time_limit{0};
 };
 
 struct RunResult {

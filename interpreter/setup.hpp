@@ -66,6 +66,7 @@ struct Setup {
     int tool_offset_count = 64;        // offset numbers 1..count exist
     std::map<int, ToolOffset> tools;   // by offset number
     std::uint64_t step_limit = 10'000'000;
+    std::uint64_t move_limit = 10'000'000;   // moves a run emits before it stops (machine switch max_moves)
     int max_call_depth = 4;            // M98 nesting ([FANUC], dialects.md §3.6)
     int max_macro_depth = 4;           // G65/G66 nesting
     // G40–G42 (semantics.md §5, §6): start-up/cancel type, corner style (FANUC C / ADV400 arcs).

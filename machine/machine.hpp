@@ -161,6 +161,7 @@ struct Switches {
     int subprogram_nesting = 4;                               // dialects.md §3.6 [FANUC] (10 on newer models)
     int macro_nesting = 4;                                    // dialects.md §3.6 [FANUC] (5 on newer models)
     std::int64_t max_blocks = 10'000'000;                     // blocks executed before a dry run stops (no hang)
+    std::int64_t max_moves = 10'000'000;                      // moves emitted before a dry run stops (no hang)
 };
 
 // ---------------------------------------------------------------------------------------------

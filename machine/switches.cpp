@@ -350,6 +350,9 @@ std::vector<SwitchDef> make_defs() {
                         "G65/G66 macro calls that may be nested (4; 5 on newer models)"));
     d.push_back(integer("max_blocks", &S::max_blocks, 1, 1e12, "design.md 'Tolerant' (no input hangs)",
                         "blocks a dry run executes before it stops with an alarm (endless M99 loops)"));
+    d.push_back(integer("max_moves", &S::max_moves, 1, 1e12, "design.md 'Tolerant' (no input hangs)",
+                        "moves a dry run emits before it stops with an alarm (a cycle whose step is far smaller than "
+                        "its stroke, an endless loop of cycles)"));
     return d;
 }
 

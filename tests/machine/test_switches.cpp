@@ -101,6 +101,7 @@ const std::vector<Expectation>& expectations() {
         {"subprogram_nesting", "4", "4", {}},                            // dialects.md §3.6
         {"macro_nesting", "4", "4", {}},                                 // dialects.md §3.6
         {"max_blocks", "10000000", "10000000", {}},
+        {"max_moves", "10000000", "10000000", {}},
     };
     return e;
 }
@@ -154,6 +155,7 @@ TEST_CASE("typed fields agree with the documented defaults", "[machine][switches
     CHECK(s.subprogram_nesting == 4);
     CHECK(s.macro_nesting == 4);
     CHECK(s.max_blocks == 10'000'000);
+    CHECK(s.max_moves == 10'000'000);
     CHECK(s.g68_positive == RotationSign::ccw);
     CHECK(s.g28_intermediate == PointFrame::work);
     CHECK(s.dwell_p_unit == DwellUnit::ms);
