@@ -7,6 +7,8 @@
 #include <map>
 #include <unordered_set>
 
+#include <fmt/format.h>
+
 #include "analyzer/suppress.hpp"
 #include "interpreter/interpreter.hpp"
 
@@ -28,11 +30,30 @@ struct StaticRun {
     Reporter out;
 };
 
+// One tally per rule for one side of the check (the static rules and the parser's diagnostics on
+// the calling thread, the dry run on its own): see RuleTally.
+class Tallies {
+public:
+    Tallies(std::size_t limit, const std::vector<Suppression>& suppressions) : limit_(limit), suppressions_(suppressions) {}
+    RuleTally* of(const Rule& rule) {
+        RuleTally& t = tallies_[&rule];
+        t.limit = limit_;
+        t.suppressions = &suppressions_;
+        return &t;
+    }
+    const std::map<const Rule*, RuleTally>& all() const { return tallies_; }
+
+private:
+    std::size_t limit_;
+    const std::vector<Suppression>& suppressions_;
+    std::map<const Rule*, RuleTally> tallies_;
+};
+
 // Every static check sees every code block once, in text order, with the codes computed once.
-void run_static(const FileContext& ctx, const ActiveRules& rules, std::vector<Finding>& out) {
+void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& tallies, std::vector<Finding>& out) {
     std::vector<StaticRun> checks;
     for (const Rule* r : rules)
-        if (r->make_static) checks.push_back({r->make_static(), Reporter(*r, out)});
+        if (r->make_static) checks.push_back({r->make_static(), Reporter(*r, out, tallies.of(*r))});
     if (checks.empty()) return;
     std::vector<ast::CodeRef> g, m;
     const std::vector<ast::Program>& programs = ctx.typed.programs();
@@ -55,11 +76,12 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, std::vector<Fi
 bool active(const ActiveRules& rules, const Rule* r) { return r && std::find(rules.begin(), rules.end(), r) != rules.end(); }
 
 void map_diagnostics(const ast::SyntaxTree& tree, const std::vector<ast::Diagnostic>& diagnostics,
-                     const Registry& registry, const ActiveRules& rules, std::vector<Finding>& out) {
+                     const Registry& registry, const ActiveRules& rules, Tallies& tallies, std::vector<Finding>& out) {
     for (const ast::Diagnostic& d : diagnostics) {
         const Rule* rule = registry.for_diagnostic(d.code);
         if (!active(rules, rule)) continue;
-        Finding& f = Reporter(*rule, out).report(d.range, d.message, d.hint);
+        Reporter reporter(*rule, out, tallies.of(*rule));
+        Finding& f = reporter.report(d.range, d.message, d.hint);
         f.notes.push_back("parser diagnostic " + d.code + " (docs/diagnostics.md)");
         if (rule->diagnostic_fix) f.fix = rule->diagnostic_fix(tree, d);
     }
@@ -70,10 +92,11 @@ void map_diagnostics(const ast::SyntaxTree& tree, const std::vector<ast::Diagnos
 // is checked on its own.
 class FanOut : public interpreter::EventSink {
 public:
-    FanOut(const RunContext& run, const Registry& registry, const ActiveRules& rules, std::vector<Finding>& out)
-        : run_(run), registry_(registry), rules_(rules), out_(out) {
+    FanOut(const RunContext& run, const Registry& registry, const ActiveRules& rules, Tallies& tallies,
+           std::vector<Finding>& out)
+        : run_(run), registry_(registry), rules_(rules), tallies_(tallies), out_(out) {
         for (const Rule* r : rules)
-            if (r->make_dynamic) checks_.push_back({r->make_dynamic(), Reporter(*r, out)});
+            if (r->make_dynamic) checks_.push_back({r->make_dynamic(), Reporter(*r, out, tallies.of(*r))});
     }
     void on_event(const interpreter::Event& e) override {
         const std::size_t before = out_.size();
@@ -94,12 +117,14 @@ private:
         const Rule* rule = registry_.for_alarm(e.code);
         if (!active(rules_, rule)) return;
         const ast::SyntaxTree& tree = *run_.programs.file(e.source.file).whole_tree();
-        Finding& f = Reporter(*rule, out_).report(trim_range(tree, e.source.range), e.text);
+        Reporter reporter(*rule, out_, tallies_.of(*rule));
+        Finding& f = reporter.report(trim_range(tree, e.source.range), e.text);
         f.notes.push_back("found by the dry run: the control stops here with an alarm");
     }
     const RunContext& run_;
     const Registry& registry_;
     const ActiveRules& rules_;
+    Tallies& tallies_;
     std::vector<Finding>& out_;
     std::vector<DynamicRun> checks_;
 };
@@ -110,22 +135,54 @@ bool needs_run(const ActiveRules& rules) {
 
 void run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                  const interpreter::Setup& setup, const Registry& registry, const ActiveRules& rules,
-                 std::vector<Finding>& out) {
+                 const CheckOptions& check, Tallies& tallies, std::vector<Finding>& out) {
     const std::optional<interpreter::ProgramRef> main = programs.first_program(file);
     if (!main || !needs_run(rules)) return;
     const RunContext run{programs, file, dialect, setup};
-    FanOut sink(run, registry, rules, out);
+    FanOut sink(run, registry, rules, tallies, out);
     interpreter::RunOptions options;
     options.lenient = true;   // syntax defects are the syntax rules' findings; go on and check the rest
+    options.time_limit = check.time_limit;
     interpreter::run(programs, *main, dialect, setup, sink, options);
     sink.finish();
 }
 
+// At most `limit` findings of a rule in the file (the first ones in text order); the others,
+// counted here and by the tallies, become one "and N more" finding after the last one shown.
+void cap_per_rule(std::vector<Finding>& findings, std::size_t limit, const std::vector<const Tallies*>& tallies) {
+    std::map<std::string, std::size_t> shown, more;
+    std::map<std::string, ast::Range> last;
+    std::erase_if(findings, [&](const Finding& f) {
+        if (limit > 0 && ++shown[f.rule] > limit) {
+            ++more[f.rule];
+            return true;
+        }
+        last[f.rule] = f.range;
+        return false;
+    });
+    std::map<std::string, const Rule*> rules;
+    for (const Tallies* t : tallies)
+        for (const auto& [rule, tally] : t->all()) {
+            if (tally.dropped > 0) more[rule->id] += tally.dropped;
+            rules[rule->id] = rule;
+        }
+    for (const auto& [id, count] : more) {
+        if (count == 0 || !rules.count(id)) continue;
+        Finding f;
+        f.range = last.count(id) ? last[id] : ast::Range{};
+        f.severity = Severity::info;
+        f.rule = id;
+        f.name = rules[id]->name;
+        f.message = fmt::format("and {} more finding{} of {} in this file, not shown", count, count == 1 ? "" : "s", id);
+        f.hint = fmt::format("at most {} findings per rule and file are shown (--max-findings-per-rule; 0 shows all)", limit);
+        findings.push_back(std::move(f));
+    }
+}
+
 // Suppressed findings out, configured severities in, one finding per rule and line (a static rule
 // and the dry run may both see the same defect), sorted by position.
-void finalize(std::vector<Finding>& findings, const ast::SyntaxTree& tree, const ast::LineIndex& lines,
+void finalize(std::vector<Finding>& findings, const std::vector<Suppression>& suppressions, const ast::LineIndex& lines,
               const Registry& registry, const CheckConfig& config) {
-    const std::vector<Suppression> suppressions = find_suppressions(tree);
     std::erase_if(findings, [&](const Finding& f) { return suppressed(suppressions, f); });
     for (Finding& f : findings)
         if (const Rule* r = registry.find(f.rule)) f.severity = config.severity(*r);
@@ -187,22 +244,28 @@ std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t
     // and the loader (the folder) directly instead of ProgramSet::find_or_load.
     const bool parallel = options.dry_run && tree.text.size() >= options.parallel_from_bytes && needs_run(rules);
     std::vector<Finding> dynamic;
+    const std::vector<Suppression> suppressions = find_suppressions(tree);
+    Tallies static_tallies(options.max_findings_per_rule, suppressions);
+    Tallies dynamic_tallies(options.max_findings_per_rule, suppressions);
+    const auto dry_run = [&] {
+        run_dynamic(programs, file, dialect, setup, registry, rules, options, dynamic_tallies, dynamic);
+    };
     std::thread run_thread;
-    if (parallel)
-        run_thread = std::thread([&] { run_dynamic(programs, file, dialect, setup, registry, rules, dynamic); });
+    if (parallel) run_thread = std::thread(dry_run);
     const interpreter::ProgramSet::Loader loader = programs.loader();
     const FileContext ctx{typed, dialect, setup, [&](std::int64_t n) {
                               if (!parallel) return programs.find_or_load(n, file).has_value();
                               return loaded.find_program(n).has_value() || (loader && loader(n).has_value());
                           },
                           options.program_files};
-    run_static(ctx, rules, out);
-    map_diagnostics(tree, tree.diagnostics, registry, rules, out);
-    map_diagnostics(tree, typed.diagnostics(), registry, rules, out);
+    run_static(ctx, rules, static_tallies, out);
+    map_diagnostics(tree, tree.diagnostics, registry, rules, static_tallies, out);
+    map_diagnostics(tree, typed.diagnostics(), registry, rules, static_tallies, out);
     if (parallel) run_thread.join();
-    else if (options.dry_run) run_dynamic(programs, file, dialect, setup, registry, rules, dynamic);
+    else if (options.dry_run) dry_run();
     out.insert(out.end(), std::make_move_iterator(dynamic.begin()), std::make_move_iterator(dynamic.end()));
-    finalize(out, tree, *loaded.whole_lines(), registry, options.config);
+    finalize(out, suppressions, *loaded.whole_lines(), registry, options.config);
+    cap_per_rule(out, options.max_findings_per_rule, {&static_tallies, &dynamic_tallies});
     return out;
 }
 

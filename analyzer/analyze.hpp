@@ -2,9 +2,10 @@
 // parser's diagnostics mapped to rules, and one dry run (lenient: a block with a syntax error runs
 // without its defective words, the syntax rules report it) whose events go to the dynamic rules
 // and whose alarms become findings. Then inline suppressions, configured severities, one finding
-// per rule and line, sorted by position. Pure: no I/O (the program set's loader is the caller's).
+// per rule and line, sorted by position, at most CheckOptions::max_findings_per_rule per rule. Pure: no I/O (the program set's loader is the caller's).
 #pragma once
 
+#include <chrono>
 #include <vector>
 
 #include "analyzer/config.hpp"
@@ -24,6 +25,10 @@ struct CheckOptions {
     // The other files that hold program O`number`, in the order a call reaches them (the program
     // index, project/index.hpp); empty or unset: not known (K3010 stays silent).
     std::function<std::vector<std::string>(std::int64_t number)> program_files;
+    // At most this many findings per rule and file; the rest become one "and N more" finding of
+    // severity info (0 = all). Bounds the output and the memory whatever the file.
+    std::size_t max_findings_per_rule = 100;
+    std::chrono::milliseconds time_limit{0};   // of the dry run (interpreter RunOptions::time_limit)
 };
 
 // Checks file `file` of `programs` (its first program is run as the main program).

@@ -30,30 +30,21 @@ const char* color_of(Severity s) {
     return "";
 }
 
-std::string caret_line(const std::string& source, const Location& l) {
-    // Tabs stay tabs so the caret lines up under the same characters.
-    std::string pad;
-    for (std::uint32_t i = 0; i + 1 < l.column && i < source.size(); ++i) pad += source[i] == '\t' ? '\t' : ' ';
-    const std::uint32_t width = l.end_line == l.line && l.end_column > l.column
-                                    ? l.end_column - l.column
-                                    : static_cast<std::uint32_t>(source.size() >= l.column ? source.size() - l.column + 1 : 1);
-    return pad + std::string(std::max<std::uint32_t>(width, 1), '^');
-}
-
 void human_finding(std::string& out, const FileReport& r, std::size_t i, bool color) {
     const Finding& f = r.findings[i];
     const Location& l = r.locations[i];
     const char* on = color ? color_of(f.severity) : "";
     const char* bold = color ? "\x1b[1m" : "";
     const char* off = color ? "\x1b[0m" : "";
-    out += fmt::format("{}{}:{}:{}:{} {}{}{} {} {}: {}{}{}\n", bold, r.name, l.line, l.column, off, on,
-                       severity_name(f.severity), off, f.rule, f.name, bold, f.message, off);
-    const std::string gutter = fmt::format("{:>6} | ", l.line);
-    out += gutter + r.lines[i] + "\n";
-    out += fmt::format("{:>6} | {}{}{}\n", "", on, caret_line(r.lines[i], l), off);
-    for (const std::string& n : f.notes) out += fmt::format("       = note: {}\n", n);
-    if (!f.hint.empty()) out += fmt::format("       = hint: {}\n", f.hint);
-    if (f.fix) out += fmt::format("       = fix (kerf check --fix): {}\n", f.fix->description);
+    // Everything that comes from the file is escaped: its bytes never reach the terminal raw.
+    out += fmt::format("{}{}:{}:{}:{} {}{}{} {} {}: {}{}{}\n", bold, ast::printable(r.name), l.line, l.column, off, on,
+                       severity_name(f.severity), off, f.rule, f.name, bold, ast::printable(f.message), off);
+    const ast::Excerpt& e = r.excerpts[i];
+    out += fmt::format("{:>6} | {}\n", l.line, e.text);
+    out += fmt::format("{:>6} | {}{}{}\n", "", on, e.caret, off);
+    for (const std::string& n : f.notes) out += fmt::format("       = note: {}\n", ast::printable(n));
+    if (!f.hint.empty()) out += fmt::format("       = hint: {}\n", ast::printable(f.hint));
+    if (f.fix) out += fmt::format("       = fix (kerf check --fix): {}\n", ast::printable(f.fix->description));
 }
 
 json::object location_json(const Location& l) {
@@ -95,13 +86,15 @@ FileReport make_report(std::string name, const ast::SyntaxTree& tree, const ast:
         r.locations.push_back(locate(lines, f.range));
         const ast::Position b = lines.utf16(f.range.begin), e = lines.utf16(f.range.end);
         r.utf16.push_back({b.line + 1, b.column + 1, e.line + 1, e.column + 1});
-        const std::uint32_t line = r.locations.back().line - 1;
-        const std::uint32_t start = lines.line_start(line);
-        const std::uint32_t end = line + 1 < lines.line_count() ? lines.line_start(line + 1)
-                                                                : static_cast<std::uint32_t>(tree.text.size());
+        const Location& l = r.locations.back();
+        const std::uint32_t start = lines.line_start(l.line - 1);
+        const std::uint32_t end = l.line < lines.line_count() ? lines.line_start(l.line)
+                                                              : static_cast<std::uint32_t>(tree.text.size());
         std::string_view text = tree.slice({start, end});
         while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.remove_suffix(1);
-        r.lines.emplace_back(text);
+        // One line is underlined: a range that goes on to later lines is underlined to the line's end.
+        const bool one_line = l.end_line == l.line && l.end_column > l.column;
+        r.excerpts.push_back(ast::excerpt(text, l.column - 1, l.end_column - 1, !one_line));
     }
     r.findings = std::move(findings);
     return r;
@@ -133,21 +126,22 @@ std::string format_json(const std::vector<FileReport>& reports, std::size_t file
     for (const FileReport& r : reports)
         for (std::size_t i = 0; i < r.findings.size(); ++i) {
             const Finding& f = r.findings[i];
+            // JSON is UTF-8; text quoted from a file may not be (ast::valid_utf8).
             json::object o = location_json(r.locations[i]);
-            o["file"] = r.name;
+            o["file"] = ast::valid_utf8(r.name);
             o["severity"] = severity_name(f.severity);
             o["rule"] = f.rule;
             o["name"] = f.name;
-            o["message"] = f.message;
-            if (!f.hint.empty()) o["hint"] = f.hint;
+            o["message"] = ast::valid_utf8(f.message);
+            if (!f.hint.empty()) o["hint"] = ast::valid_utf8(f.hint);
             json::array notes;
-            for (const std::string& n : f.notes) notes.push_back(json::string(n));
+            for (const std::string& n : f.notes) notes.push_back(json::string(ast::valid_utf8(n)));
             o["notes"] = std::move(notes);
             if (f.fix) {
                 json::array edits;
                 for (const TextEdit& e : f.fix->edits)
-                    edits.push_back({{"offset", e.range.begin}, {"length", e.range.size()}, {"text", e.replacement}});
-                o["fix"] = {{"description", f.fix->description}, {"edits", std::move(edits)}};
+                    edits.push_back({{"offset", e.range.begin}, {"length", e.range.size()}, {"text", ast::valid_utf8(e.replacement)}});
+                o["fix"] = {{"description", ast::valid_utf8(f.fix->description)}, {"edits", std::move(edits)}};
             }
             findings.push_back(std::move(o));
         }
@@ -175,7 +169,7 @@ std::string format_sarif(const std::vector<FileReport>& reports, const Registry&
             json::object result{
                 {"ruleId", f.rule},
                 {"level", sarif_level(f.severity)},
-                {"message", {{"text", f.hint.empty() ? f.message : f.message + " (" + f.hint + ")"}}},
+                {"message", {{"text", ast::valid_utf8(f.hint.empty() ? f.message : f.message + " (" + f.hint + ")")}}},
                 {"locations", json::array{{{"physicalLocation", {{"artifactLocation", artifact}, {"region", region(r.utf16[i])}}}}}}};
             if (const auto it = index.find(f.rule); it != index.end()) result["ruleIndex"] = it->second;
             results.push_back(std::move(result));

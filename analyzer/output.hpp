@@ -8,6 +8,7 @@
 
 #include "analyzer/finding.hpp"
 #include "analyzer/registry.hpp"
+#include "ast/display.hpp"
 
 namespace kerf::analyzer {
 
@@ -17,7 +18,8 @@ struct FileReport {
     std::vector<Finding> findings;
     std::vector<Location> locations;     // 1-based, columns in UTF-8 bytes
     std::vector<Location> utf16;         // the same with UTF-16 columns (SARIF's default column kind)
-    std::vector<std::string> lines;      // the source line of each finding's start (no line break)
+    // Each finding's source line around it, escaped (ast/display.hpp excerpt), with its caret line.
+    std::vector<ast::Excerpt> excerpts;
 };
 
 FileReport make_report(std::string name, const ast::SyntaxTree& tree, const ast::LineIndex& lines,

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "analyzer/suppress.hpp"
+#include "ast/display.hpp"
+
 namespace kerf::analyzer {
 
 namespace {
@@ -69,14 +72,29 @@ const char* to_string(Category c) {
     return "?";
 }
 
+namespace {
+// A message quotes the program; past this many characters the quote is not worth its memory.
+constexpr std::size_t kMaxMessageChars = 400;
+}  // namespace
+
 Finding& Reporter::report(ast::Range range, std::string message, std::string hint) {
     Finding f;
     f.range = range;
     f.severity = rule_->severity;
     f.rule = rule_->id;
     f.name = rule_->name;
-    f.message = std::move(message);
-    f.hint = std::move(hint);
+    f.message = message.size() > kMaxMessageChars ? ast::shorten(message, kMaxMessageChars) : std::move(message);
+    f.hint = hint.size() > kMaxMessageChars ? ast::shorten(hint, kMaxMessageChars) : std::move(hint);
+    if (tally_) {
+        const bool kept = !(tally_->suppressions && suppressed(*tally_->suppressions, f)) &&
+                          tally_->positions.insert(range.begin).second &&
+                          (tally_->limit == 0 || tally_->kept < tally_->limit || (++tally_->dropped, false));
+        if (!kept) {
+            scratch_ = std::move(f);
+            return scratch_;
+        }
+        ++tally_->kept;
+    }
     out_->push_back(std::move(f));
     return out_->back();
 }

@@ -11,6 +11,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -34,16 +35,33 @@ struct RuleDocs {
 };
 
 struct Rule;
+struct Suppression;
+
+// What one rule reported in one file so far (bounded resources, ARCHITECTURE.md): one finding per
+// position, suppressed ones not kept, and at most `limit` kept; the rest are only counted, so a
+// rule firing on every word of a huge file, or on every turn of an endless loop, holds no memory.
+struct RuleTally {
+    std::size_t limit = 0;                                   // 0 = no cap
+    const std::vector<Suppression>* suppressions = nullptr;  // the file's inline suppressions
+    std::unordered_set<std::uint32_t> positions;             // range starts reported
+    std::size_t kept = 0;
+    std::size_t dropped = 0;                                 // distinct positions over the cap
+};
 
 // Collects the findings of one rule. Severity comes from the rule (or the configuration later).
 class Reporter {
 public:
-    Reporter(const Rule& rule, std::vector<Finding>& out) : rule_(&rule), out_(&out) {}
+    Reporter(const Rule& rule, std::vector<Finding>& out, RuleTally* tally = nullptr)
+        : rule_(&rule), out_(&out), tally_(tally) {}
+    // The new finding; with a tally, a finding it does not keep is a scratch one the caller may
+    // still fill in (notes, fix) and that goes nowhere.
     Finding& report(ast::Range range, std::string message, std::string hint = {});
 
 private:
     const Rule* rule_;
     std::vector<Finding>* out_;
+    RuleTally* tally_;
+    Finding scratch_;
 };
 
 // The N numbers of one program, sorted (sequence numbers need not be unique: dialects.md §2; they

@@ -6,13 +6,16 @@ namespace kerf::analyzer::rules {
 
 void add_alarms(Registry& r) {
     using S = Severity;
-    // The step limit has kerf's own alarm number (interpreter/events.hpp kerf_alarm), so no other
+    // The run bounds have kerf's own alarm numbers (interpreter/events.hpp kerf_alarm), so no other
     // alarm of the run reads as an endless loop.
-    constexpr int step_limit = interpreter::kerf_alarm::step_limit;
-    r.add(alarm_rule("K4004", "endless-loop", Category::macro, S::error, {{step_limit, step_limit}},
-        {"The dry run reached its step limit: a loop that never ends.",
+    namespace ka = interpreter::kerf_alarm;
+    r.add(alarm_rule("K4004", "endless-loop", Category::macro, S::error,
+        {{ka::step_limit, ka::step_limit}, {ka::move_limit, ka::move_limit}, {ka::time_limit, ka::time_limit}},
+        {"The dry run reached one of its bounds (blocks executed, moves emitted, seconds): a loop that never ends, "
+         "or a cycle whose step is far smaller than its stroke.",
          "On the machine the program never finishes (or repeats cuts forever).",
-         "N1 GOTO 1", "#1=0\nWHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "interpreter Setup::step_limit"}));
+         "N1 GOTO 1", "#1=0\nWHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1",
+         "interpreter/run_guard.hpp (Setup::step_limit, Setup::move_limit, RunOptions::time_limit)"}));
     r.add(alarm_rule("K4005", "macro-evaluation-error", Category::macro, S::error, {{111, 111}, {114, 114}, {118, 119}},
         {"A macro expression the control cannot evaluate: overflow, format, variable number, nesting, bad argument.",
          "The control stops with alarm 111, 114, 118 or 119.", "#1=SQRT[-1]", "#1=SQRT[1]",
