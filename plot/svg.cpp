@@ -157,6 +157,7 @@ std::string subtitle_of(const Toolpath& t, const SvgOptions& o) {
     if (t.inch) s += ", inches (G20)";
     s += fmt::format(" | feed {:.1f} mm | rapid {:.1f} mm", t.feed_mm, t.rapid_mm);
     if (t.thread_mm > 0) s += fmt::format(" | thread {:.1f} mm", t.thread_mm);
+    if (t.not_drawn > 0) s += fmt::format(" | the last {} moves are not drawn (the picture is full)", t.not_drawn);
     return s;
 }
 
@@ -227,8 +228,7 @@ void append_arc(std::string& d, const Piece& p, const Layout& l) {
 
 void append_piece(std::string& d, const Piece& p, const Layout& l) {
     if (p.arc) return append_arc(d, p, l);
-    if (p.polyline.empty()) d += " L" + svg_point(l, p.to);
-    for (const Point& q : p.polyline) d += " L" + svg_point(l, q);
+    d += " L" + svg_point(l, p.to);
 }
 
 void write_path(Out out, Stroke stroke, const std::string& d) {
@@ -282,9 +282,9 @@ void alarm_marker(Out out, double x, double y) {
 
 // Alarms last: a run stopped by an alarm ends where the alarm is, and the cross must stay visible.
 void write_markers(Out out, const Toolpath& t, const Layout& l) {
-    if (!t.pieces.empty()) {
-        start_marker(out, l.x(t.pieces.front().from.h), l.y(t.pieces.front().from.v));
-        end_marker(out, l.x(t.pieces.back().to.h), l.y(t.pieces.back().to.v));
+    if (t.moves > 0) {
+        start_marker(out, l.x(t.start.h), l.y(t.start.v));
+        end_marker(out, l.x(t.end.h), l.y(t.end.v));
     }
     for (const Point& a : t.alarms) alarm_marker(out, l.x(a.h), l.y(a.v));
 }
@@ -353,7 +353,10 @@ std::string no_motion_svg(const SvgOptions& o) {
 }  // namespace
 
 std::string render_svg(const std::vector<interpreter::Event>& events, const SvgOptions& options) {
-    const Toolpath t = build_toolpath(events, {options.kind, options.diameter_x});
+    return render_svg(build_toolpath(events, {options.kind, options.diameter_x}), options);
+}
+
+std::string render_svg(const Toolpath& t, const SvgOptions& options) {
     if (t.bounds.empty) return no_motion_svg(options);
     const bool lathe = options.kind == dialects::MachineKind::lathe;
     const Layout l = make_layout(t.bounds, lathe, legend_width(t));

@@ -9,6 +9,7 @@
 
 #include "dialects/dialect.hpp"
 #include "interpreter/events.hpp"
+#include "plot/toolpath.hpp"
 
 namespace kerf::plot {
 
@@ -20,5 +21,8 @@ struct SvgOptions {
 
 // A complete SVG document ("<svg ...>...</svg>"). Without motion: a small picture saying so.
 std::string render_svg(const std::vector<interpreter::Event>& events, const SvgOptions& options);
+// The same for a toolpath built while the run went on (plot/toolpath.hpp ToolpathSink): the
+// document's size is bounded by the toolpath's, whatever the length of the run.
+std::string render_svg(const Toolpath& toolpath, const SvgOptions& options);
 
 }  // namespace kerf::plot

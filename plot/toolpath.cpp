@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <vector>
 
 #include "motion/arc.hpp"
 
@@ -88,61 +89,62 @@ std::optional<motion::Arc> rebuild_arc(const Event& e, const ViewOptions& o) {
 }
 
 // Positions are as programmed (inches after G20) and lengths in mm (docs/trace.md), so the ratio
-// of a feed line's length to its programmed length tells the unit of the drawing.
-bool programmed_in_inches(const std::vector<Event>& events, const ViewOptions& o) {
-    int inch = 0;
-    int metric = 0;
-    for (const Event& e : events) {
-        if (e.kind != EventKind::linear || !finite(e)) continue;
-        const double programmed = motion::distance(geometric(e.start, o), geometric(e.end, o));
-        if (programmed < 1e-6 || e.length_mm <= 0) continue;
-        const double ratio = e.length_mm / programmed;
-        if (std::fabs(ratio - 25.4) < 0.254) ++inch;
-        else if (std::fabs(ratio - 1) < 0.01) ++metric;
-    }
-    return inch > metric;
+// of a feed line's length to its programmed length tells the unit of the drawing: +1 inch, -1
+// metric, 0 no vote.
+int inch_vote(const Event& e, const ViewOptions& o) {
+    if (e.kind != EventKind::linear || !finite(e)) return 0;
+    const double programmed = motion::distance(geometric(e.start, o), geometric(e.end, o));
+    if (programmed < 1e-6 || e.length_mm <= 0) return 0;
+    const double ratio = e.length_mm / programmed;
+    if (std::fabs(ratio - 25.4) < 0.254) return 1;
+    if (std::fabs(ratio - 1) < 0.01) return -1;
+    return 0;
 }
 
-Piece line_piece(Stroke stroke, const Event& e, const ViewOptions& o, Box2& bounds) {
+Piece line_piece(Stroke stroke, Point from, Point to) {
     Piece p;
     p.stroke = stroke;
-    p.from = project(geometric(e.start, o), o);
-    p.to = project(geometric(e.end, o), o);
-    bounds.extend(p.from);
-    bounds.extend(p.to);
+    p.from = from;
+    p.to = to;
     return p;
 }
 
-Piece arc_piece(const motion::Arc& arc, const ViewOptions& o, Box2& bounds) {
-    Piece p;
-    p.from = project(arc.start, o);
-    p.to = project(arc.end, o);
+// A view-plane arc as one piece; an arc in another plane as the line pieces of its projection,
+// a point every 5°.
+void arc_pieces(const motion::Arc& arc, Stroke stroke, const ViewOptions& o, Box2& bounds, std::vector<Piece>& out) {
+    const motion::Box box = motion::bounds(arc);   // exact: includes the quadrant points passed
+    bounds.extend(project(box.min, o));
+    bounds.extend(project(box.max, o));
     if (arc.plane == view_plane(o)) {
         // A helix about the view normal projects onto its circle: the third axis drops out.
+        Piece p = line_piece(stroke, project(arc.start, o), project(arc.end, o));
         p.arc = true;
         p.radius = arc.radius;
         p.sweep = arc.sweep;
         p.mid = project(motion::point_at(arc, 0.5), o);
-    } else {
-        const int n = std::clamp(static_cast<int>(std::ceil(std::fabs(arc.sweep) / kPolylineStep)), 2, 72);
-        for (int i = 1; i <= n; ++i) p.polyline.push_back(project(motion::point_at(arc, static_cast<double>(i) / n), o));
+        out.push_back(p);
+        return;
     }
-    const motion::Box box = motion::bounds(arc);   // exact: includes the quadrant points passed
-    bounds.extend(project(box.min, o));
-    bounds.extend(project(box.max, o));
-    return p;
+    const int n = std::clamp(static_cast<int>(std::ceil(std::fabs(arc.sweep) / kPolylineStep)), 2, 72);
+    Point from = project(arc.start, o);
+    for (int i = 1; i <= n; ++i) {
+        const Point to = project(motion::point_at(arc, static_cast<double>(i) / n), o);
+        out.push_back(line_piece(stroke, from, to));
+        from = to;
+    }
 }
 
-Piece piece_of(const Event& e, Stroke stroke, const ViewOptions& o, Box2& bounds) {
-    if (e.kind == EventKind::arc_cw || e.kind == EventKind::arc_ccw) {
-        if (const std::optional<motion::Arc> arc = rebuild_arc(e, o)) {
-            Piece p = arc_piece(*arc, o, bounds);
-            p.stroke = stroke;
-            return p;
-        }
-        // Not a circle in any plane (should not come from the interpreter): the chord at least.
-    }
-    return line_piece(stroke, e, o, bounds);
+// The pieces of one move into `out` (cleared first; reused from move to move).
+void pieces_of(const Event& e, Stroke stroke, const ViewOptions& o, Box2& bounds, std::vector<Piece>& out) {
+    out.clear();
+    if (e.kind == EventKind::arc_cw || e.kind == EventKind::arc_ccw)
+        if (const std::optional<motion::Arc> arc = rebuild_arc(e, o)) return arc_pieces(*arc, stroke, o, bounds, out);
+    // A line, or an arc that is not a circle in any plane (should not come from the interpreter):
+    // the chord at least.
+    const Piece p = line_piece(stroke, project(geometric(e.start, o), o), project(geometric(e.end, o), o));
+    bounds.extend(p.from);
+    bounds.extend(p.to);
+    out.push_back(p);
 }
 
 void add_length(Toolpath& t, Stroke stroke, double mm) {
@@ -152,6 +154,8 @@ void add_length(Toolpath& t, Stroke stroke, double mm) {
     case Stroke::thread: t.thread_mm += mm; break;
     }
 }
+
+double length(Point a, Point b) { return std::hypot(b.h - a.h, b.v - a.v); }
 
 }  // namespace
 
@@ -168,22 +172,154 @@ void Box2::extend(Point p) {
     v_max = std::max(v_max, p.v);
 }
 
-Toolpath build_toolpath(const std::vector<interpreter::Event>& events, const ViewOptions& options) {
-    Toolpath t;
-    t.inch = programmed_in_inches(events, options);
-    for (const Event& e : events) {
-        if (e.kind == EventKind::alarm) {
-            if (!finite(e.end)) continue;
-            t.alarms.push_back(project(geometric(e.end, options), options));
-            t.bounds.extend(t.alarms.back());
-            continue;
-        }
-        const std::optional<Stroke> stroke = stroke_of(e.kind);
-        if (!stroke || !finite(e)) continue;
-        add_length(t, *stroke, e.length_mm);
-        t.pieces.push_back(piece_of(e, *stroke, options, t.bounds));
+// --- the builder ----------------------------------------------------------------------------------
+
+std::size_t ToolpathBuilder::KeyHash::operator()(const Key& k) const {
+    std::size_t h = k.kind;
+    for (const std::int64_t v : {k.a, k.b, k.c, k.d, k.e, k.f}) h = h * 1000003u ^ std::hash<std::int64_t>{}(v);
+    return h;
+}
+
+std::int64_t ToolpathBuilder::cell(double v) const {
+    // Far outside any drawing (a 1e300 coordinate) the cells saturate: such pieces still compare.
+    const double c = std::round(v / grid_);
+    return static_cast<std::int64_t>(std::clamp(c, -9.0e18, 9.0e18));
+}
+
+ToolpathBuilder::Key ToolpathBuilder::key_of(const Piece& p) const {
+    Key k{cell(p.from.h), cell(p.from.v), cell(p.to.h), cell(p.to.v), 0, 0,
+          static_cast<std::uint8_t>(static_cast<int>(p.stroke) * 4 + (p.arc ? 1 + (p.sweep > 0) : 0))};
+    if (p.arc) {
+        k.e = cell(p.mid.h);
+        k.f = cell(p.mid.v);
     }
-    return t;
+    return k;
+}
+
+void ToolpathBuilder::add(const interpreter::Event& e) {
+    if (e.kind == EventKind::alarm) {
+        if (!finite(e.end) || t_.alarms.size() >= kMaxAlarms) return;
+        t_.alarms.push_back(project(geometric(e.end, options_), options_));
+        t_.bounds.extend(t_.alarms.back());
+        return;
+    }
+    const std::optional<Stroke> stroke = stroke_of(e.kind);
+    if (!stroke || !finite(e)) return;
+    const int vote = inch_vote(e, options_);
+    inch_votes_ += vote > 0;
+    metric_votes_ += vote < 0;
+    add_length(t_, *stroke, e.length_mm);
+    ++t_.moves;
+    pieces_of(e, *stroke, options_, t_.bounds, move_pieces_);
+    if (t_.moves == 1) t_.start = move_pieces_.front().from;
+    t_.end = move_pieces_.back().to;
+    fit_grid();
+    bool drawn = true;
+    for (const Piece& p : move_pieces_) drawn = add_piece(p) && drawn;
+    if (!drawn) ++t_.not_drawn;
+}
+
+// The grid is the power of two at least 1/kGridCells of the drawing's extent, so it changes only
+// when the drawing doubles.
+void ToolpathBuilder::fit_grid() {
+    const double extent = std::max(t_.bounds.h_max - t_.bounds.h_min, t_.bounds.v_max - t_.bounds.v_min);
+    if (!(extent > 0) || !std::isfinite(extent)) {
+        if (grid_ == 0) grid_ = 1e-9;   // one point so far: exact
+        return;
+    }
+    if (extent <= grid_ * kGridCells) return;   // the common case: the grid still fits
+    const double wanted = std::exp2(std::ceil(std::log2(extent / kGridCells)));
+    if (wanted > grid_) resimplify(wanted);
+}
+
+void ToolpathBuilder::resimplify(double grid) {
+    grid_ = grid;
+    std::vector<Piece> pieces = std::move(t_.pieces);
+    t_.pieces.clear();
+    drawn_.clear();
+    open_ = false;
+    has_direction_ = false;
+    resimplifying_ = true;
+    for (Piece& p : pieces) add_piece(std::move(p));   // the last one stays open
+    resimplifying_ = false;
+}
+
+// A line continuing the open one (the same stroke, from where it ends) joins it while the open line
+// is shorter than a cell, or while the new end stays within half a cell of the open line's
+// direction and goes on forward (Reumann–Witkam): every point merged away lies within about a cell
+// of the line drawn, so a curve made of tiny moves stays a curve.
+bool ToolpathBuilder::extend_open_line(const Piece& p) {
+    if (!open_ || p.arc || t_.pieces.empty()) return false;
+    Piece& last = t_.pieces.back();
+    if (last.stroke != p.stroke || length(last.to, p.from) > grid_ * 1e-6) return false;
+    if (has_direction_) {
+        const double dh = p.to.h - last.from.h, dv = p.to.v - last.from.v;
+        const double across = std::fabs(dh * direction_.v - dv * direction_.h);
+        const double along_new = dh * direction_.h + dv * direction_.v;
+        const double along_old = (last.to.h - last.from.h) * direction_.h + (last.to.v - last.from.v) * direction_.v;
+        if (across > grid_ / 2 || along_new < along_old - grid_ / 2) return false;
+    }
+    last.to = p.to;
+    set_direction(last);
+    return true;
+}
+
+// The open line's direction, once it is a cell long.
+void ToolpathBuilder::set_direction(const Piece& line) {
+    if (has_direction_) return;
+    const double l = length(line.from, line.to);
+    if (!(l >= grid_)) return;
+    direction_ = {(line.to.h - line.from.h) / l, (line.to.v - line.from.v) / l};
+    has_direction_ = true;
+}
+
+// False when the picture is full and the piece is not drawn.
+bool ToolpathBuilder::add_piece(Piece p) {
+    if (p.arc && std::fabs(p.sweep) * p.radius < grid_) p.arc = false;   // an arc smaller than a cell is a line
+    if (extend_open_line(p)) return true;
+    close_open();
+    if (full_) return false;
+    t_.pieces.push_back(p);
+    if (p.arc) {
+        finalize_last();
+        return true;
+    }
+    open_ = true;
+    has_direction_ = false;
+    set_direction(p);
+    return true;
+}
+
+void ToolpathBuilder::close_open() {
+    if (!open_) return;
+    open_ = false;
+    finalize_last();
+}
+
+// The last piece is final: dropped when it repeats one drawn before; when the picture is full,
+// the grid coarsens, and at the coarsest one the picture stops growing.
+void ToolpathBuilder::finalize_last() {
+    if (!drawn_.insert(key_of(t_.pieces.back())).second) {
+        t_.pieces.pop_back();
+        return;
+    }
+    if (t_.pieces.size() < kMaxPieces || full_ || resimplifying_) return;
+    const double extent = std::max(t_.bounds.h_max - t_.bounds.h_min, t_.bounds.v_max - t_.bounds.v_min);
+    while (t_.pieces.size() > kMaxPieces / 2 && grid_ * 2 <= extent / kCoarsestCells) resimplify(grid_ * 2);
+    full_ = t_.pieces.size() > kMaxPieces / 2;
+}
+
+Toolpath ToolpathBuilder::finish() && {
+    close_open();
+    t_.inch = inch_votes_ > metric_votes_;
+    t_.resolution = grid_;
+    return std::move(t_);
+}
+
+Toolpath build_toolpath(const std::vector<interpreter::Event>& events, const ViewOptions& options) {
+    ToolpathBuilder builder(options);
+    for (const Event& e : events) builder.add(e);
+    return std::move(builder).finish();
 }
 
 }  // namespace kerf::plot
