@@ -39,6 +39,8 @@ struct CheckOptions {
     std::string baseline;
     std::string write_baseline;
     unsigned jobs = 0;
+    std::size_t max_findings_per_rule = 100;
+    project::LimitSettings limits;
 };
 
 int list_rules(const CheckOptions& o) {
@@ -71,7 +73,7 @@ void apply_baseline(std::vector<project::CheckedFile>& checked, const std::vecto
             kept.findings.push_back(std::move(r.findings[i]));
             kept.locations.push_back(r.locations[i]);
             kept.utf16.push_back(r.utf16[i]);
-            kept.lines.push_back(std::move(r.lines[i]));
+            kept.excerpts.push_back(std::move(r.excerpts[i]));
         }
         r = std::move(kept);
     }
@@ -105,7 +107,7 @@ int run_check(const CheckOptions& o) {
     std::optional<std::vector<an::BaselineEntry>> baseline;
     if (!o.baseline.empty() && !(baseline = load_baseline(o.baseline))) return kExitUsage;
     project::Workspace workspace(std::make_shared<project::DiskFileSystem>(),
-                                 overrides_of(o.dialect, o.dialect_files, o.machine_file));
+                                 overrides_of(o.dialect, o.dialect_files, o.machine_file, o.limits));
     const project::WalkResult sources =
         project::collect_program_files({o.paths.begin(), o.paths.end()}, workspace.files(), workspace.check_selector());
     int code = kExitClean;
@@ -114,8 +116,12 @@ int run_check(const CheckOptions& o) {
     std::vector<project::CheckedFile> checked(sources.files.size());
     ProblemPrinter problems;
     ProgressBar bar("kerf check");
+    project::CheckSettings settings;
+    settings.fix = o.fix;
+    // A baseline records every finding: no cap then.
+    settings.max_findings_per_rule = o.write_baseline.empty() ? o.max_findings_per_rule : 0;
     project::run_parallel(sources.files.size(), o.jobs, [&](std::size_t i) {
-        checked[i] = project::check_file(workspace, sources.files[i], o.fix);
+        checked[i] = project::check_file(workspace, sources.files[i], settings);
         problems.print(checked[i].problems);
     }, [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     std::vector<an::BaselineEntry> all_keys;
@@ -124,10 +130,8 @@ int run_check(const CheckOptions& o) {
     std::vector<an::FileReport> reports;
     std::size_t files = 0, fixed = 0;
     for (project::CheckedFile& c : checked) {
-        if (project::has_errors(c.problems)) {
-            code = kExitUsage;
-            continue;
-        }
+        if (project::has_errors(c.problems)) code = kExitUsage;
+        if (!c.checked) continue;   // a file checked whose fixes could not be written keeps its report
         ++files;
         fixed += c.fixed;
         if (!c.report.findings.empty()) reports.push_back(std::move(c.report));
@@ -157,6 +161,9 @@ Command add_check_command(CLI::App& app) {
     cmd->add_option("--write-baseline", o->write_baseline, "write all findings of this run as a baseline file");
     cmd->add_flag("--list-rules", o->list_rules, "print the rules: id, name, default severity, category");
     cmd->add_option("--jobs,-j", o->jobs, "threads (default: all cores)");
+    cmd->add_option("--max-findings-per-rule", o->max_findings_per_rule,
+                    "show at most this many findings of a rule per file, then 'and N more' (default 100; 0 = all)");
+    add_limit_options(*cmd, o->limits);
     return [o] { return run_check(*o); };
 }
 

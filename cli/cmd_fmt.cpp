@@ -12,6 +12,7 @@
 #include <iostream>
 #include <map>
 
+#include "ast/input.hpp"
 #include "cli/commands.hpp"
 #include "cli/dry_run.hpp"
 #include "cli/progress.hpp"
@@ -38,6 +39,7 @@ struct FmtOptions {
     std::string machine_file;
     std::map<std::string, std::string> style_flags;    // option key → value given on the command line
     std::map<std::string, CLI::Option*> style_options;
+    project::LimitSettings limits;
 };
 
 // The style of a file: its project's [format] table, then the flags over it (a bad flag is a problem).
@@ -54,6 +56,8 @@ formatter::Style style_for(const project::Project& p, const FmtOptions& o, std::
 struct FileResult {
     project::FormatOutcome outcome;
     int usage_error = 0;   // kExitUsage when the file could not be read or resolved
+    ast::Encoding encoding = ast::Encoding::utf8;   // of the input: the output is written in it
+    bool bom = false;
 };
 
 // The file's project problems (once each), its style and its formatting.
@@ -77,10 +81,18 @@ void print_messages(const FileResult& r) {
 }
 
 int run_stdin(const FmtOptions& o) {
-    std::string text(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>{});
-    project::Workspace workspace(std::make_shared<project::DiskFileSystem>(), overrides_of(o.dialect, o.dialect_files, o.machine_file));
+    std::string bytes(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>{});
+    project::Workspace workspace(std::make_shared<project::DiskFileSystem>(),
+                                 overrides_of(o.dialect, o.dialect_files, o.machine_file, o.limits));
     ProblemPrinter problems;
     // Named "<stdin>", found in the current folder: its .kerf.toml and its subprograms apply.
+    project::ReadResult read = project::decode_file("<stdin>", bytes, workspace.project_for("<stdin>")->limits().input);
+    problems.print(project::input_problems("<stdin>", read.problems));
+    if (!read.text) {
+        std::cout << bytes;   // an editor gets its text back either way
+        return kExitUsage;
+    }
+    const std::string& text = *read.text;
     FileResult r = format_file(workspace, "<stdin>", text, o, problems);
     print_messages(r);
     if (r.usage_error) return r.usage_error;
@@ -90,7 +102,8 @@ int run_stdin(const FmtOptions& o) {
         if (o.check && f.changed) std::cout << "<stdin>\n";
         return f.changed || !f.formatted ? kExitFindings : kExitClean;
     }
-    std::cout << (f.formatted ? *f.formatted : text);   // an editor gets its text back either way
+    // An editor gets its text back either way, in its encoding.
+    std::cout << (f.formatted ? ast::encode_output(*f.formatted, read.encoding, read.bom) : bytes);
     return f.formatted ? kExitClean : kExitFindings;
 }
 
@@ -108,21 +121,23 @@ int finish_file(const fs::path& path, FileResult& r, const FmtOptions& o, std::s
         std::cout << formatter::unified_diff(original, *f.formatted, path.string(), path.string() + " (formatted)");
         return f.changed ? kExitFindings : kExitClean;
     }
+    // The program keeps its encoding (a UTF-16 file stays UTF-16).
     if (o.write) {
         if (!f.changed) return kExitClean;
-        if (const auto error = project::write_atomically(path, *f.formatted)) {
+        if (const auto error = project::write_atomically(path, ast::encode_output(*f.formatted, r.encoding, r.bom))) {
             std::cerr << fmt::format("{}: error: {}\n", path.string(), *error);
             return kExitUsage;
         }
         return kExitClean;
     }
-    std::cout << *f.formatted;
+    std::cout << ast::encode_output(*f.formatted, r.encoding, r.bom);
     return kExitClean;
 }
 
 int run_fmt(const FmtOptions& o) {
     if (o.paths.size() == 1 && o.paths.front() == "-") return run_stdin(o);
-    project::Workspace workspace(std::make_shared<project::DiskFileSystem>(), overrides_of(o.dialect, o.dialect_files, o.machine_file));
+    project::Workspace workspace(std::make_shared<project::DiskFileSystem>(),
+                                 overrides_of(o.dialect, o.dialect_files, o.machine_file, o.limits));
     const project::WalkResult sources = project::collect_program_files({o.paths.begin(), o.paths.end()}, workspace.files());
     for (const std::string& e : sources.errors) std::cerr << "kerf: " << e << "\n";
     const bool to_stdout = !o.check && !o.diff && !o.write;
@@ -139,13 +154,18 @@ int run_fmt(const FmtOptions& o) {
         sources.files.size(), 0,
         [&](std::size_t i) {
             project::ReadResult read = workspace.read(sources.files[i]);
+            std::vector<project::Problem> input = project::input_problems(sources.files[i].string(), read.problems);
+            if (!read.text && !project::has_errors(input))
+                input.push_back({project::Level::error, sources.files[i].string(), 0, 0, "cannot open file"});
+            problems.print(input);
             if (!read.text) {
-                problems.print({{project::Level::error, sources.files[i].string(), 0, 0, "cannot open file"}});
                 results[i].usage_error = kExitUsage;
                 return;
             }
             if (o.diff) originals[i] = *read.text;
             results[i] = format_file(workspace, sources.files[i], std::move(*read.text), o, problems);
+            results[i].encoding = read.encoding;
+            results[i].bom = read.bom;
         },
         [&](std::size_t done, std::size_t total) { bar.update(done, total); });
     for (std::size_t i = 0; i < sources.files.size(); ++i) {
@@ -168,6 +188,7 @@ Command add_fmt_command(CLI::App& app) {
     cmd->add_option("--dialect", o->dialect, "dialect id, or auto (default)");
     cmd->add_option("--dialect-file", o->dialect_files, "load a dialect data file (TOML)");
     cmd->add_option("--machine", o->machine_file, "machine configuration file (TOML): its decimal-point mode decides decimal_point = add");
+    add_limit_options(*cmd, o->limits);
     for (const formatter::OptionInfo& info : formatter::options()) {
         std::string flag = "--" + std::string(info.key);
         std::replace(flag.begin(), flag.end(), '_', '-');

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "analyzer/output.hpp"
+#include "ast/display.hpp"
 #include "ast/dump.hpp"
 #include "ast/printer.hpp"
 #include "cli/commands.hpp"
@@ -26,30 +27,42 @@ struct ParseOptions {
     bool print = false;
     bool explain_dialect = false;
     bool stats = false;
+    project::LimitSettings limits;
 };
 
 void print_diagnostic(const std::string& file, const ast::LineIndex& lines, const ast::Diagnostic& d) {
     const ast::Position p = lines.utf8(d.range.begin);
     std::cerr << fmt::format("{}:{}:{}: {}: {} [{}]\n", file, p.line + 1, p.column + 1, ast::to_string(d.severity),
-                             d.message, analyzer::diagnostic_id(d.code, analyzer::builtin_rules()));
-    if (!d.hint.empty()) std::cerr << fmt::format("  hint: {}\n", d.hint);
+                             ast::printable(d.message), analyzer::diagnostic_id(d.code, analyzer::builtin_rules()));
+    if (!d.hint.empty()) std::cerr << fmt::format("  hint: {}\n", ast::printable(d.hint));
+}
+
+// The file (or standard input) through the input decoder under the project's limits; nullopt
+// after printing why not. Notes (an empty file, UTF-16 read) are printed too.
+std::optional<project::ReadResult> read_program(project::Workspace& workspace, const ParseOptions& o) {
+    project::ReadResult read;
+    const std::string name = o.file == "-" ? "<stdin>" : o.file;
+    if (o.file == "-") {
+        std::string bytes(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        read = project::decode_file(name, std::move(bytes), workspace.project_for(name)->limits().input);
+    } else {
+        read = workspace.read(o.file);
+    }
+    std::vector<project::Problem> problems = project::input_problems(name, read.problems);
+    if (!read.text && !project::has_errors(problems)) problems.push_back({project::Level::error, name, 0, 0, "cannot open file"});
+    ProblemPrinter().print(problems);
+    if (!read.text) return std::nullopt;
+    return read;
 }
 
 int run_parse(const ParseOptions& o) {
     const bool from_stdin = o.file == "-";
-    std::optional<std::string> text;
-    if (from_stdin) {
-        text = std::string(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-    } else {
-        project::ReadResult read = project::DiskFileSystem().read(o.file);
-        if (!read.text) {
-            std::cerr << "kerf: " << read.error << "\n";
-            return kExitUsage;
-        }
-        text = std::move(read.text);
-    }
     // The flag wins over the config, the config over the header and detection (project/workspace.hpp).
-    project::Workspace workspace(std::make_shared<project::DiskFileSystem>(), overrides_of(o.dialect, o.dialect_files, ""));
+    project::Workspace workspace(std::make_shared<project::DiskFileSystem>(),
+                                 overrides_of(o.dialect, o.dialect_files, "", o.limits));
+    std::optional<project::ReadResult> read = read_program(workspace, o);
+    if (!read) return kExitUsage;
+    std::optional<std::string>& text = read->text;
     const project::Resolved resolved = workspace.resolve(from_stdin ? "<stdin>" : o.file, *text);
     const bool bad_project = ProblemPrinter().print(resolved.project->problems());
     if (bad_project) return kExitUsage;
@@ -80,11 +93,11 @@ int run_parse(const ParseOptions& o) {
         return errors ? kExitFindings : kExitClean;
     }
     if (o.print) {
-        std::cout << ast::print(tree);
+        std::cout << ast::encode_output(ast::print(tree), read->encoding, read->bom);   // the file's bytes
     } else if (o.json) {
         std::cout << boost::json::serialize(ast::to_json(typed, lines)) << "\n";
     } else {
-        std::cout << ast::to_text(typed, lines);
+        std::cout << ast::printable(ast::to_text(typed, lines), true);   // the file's bytes never reach the terminal raw
     }
     bool errors = false;
     const std::string name = from_stdin ? "<stdin>" : o.file;
@@ -111,6 +124,7 @@ Command add_parse_command(CLI::App& app) {
     cmd->add_flag("--print", o->print, "print the file back from the syntax tree (byte for byte)")->excludes(json);
     cmd->add_flag("--stats", o->stats, "print counts and parse throughput instead of the tree");
     cmd->add_flag("--explain-dialect", o->explain_dialect, "say which dialect was chosen and why (stderr)");
+    add_limit_options(*cmd, o->limits, false);
     return [o] { return run_parse(*o); };
 }
 

@@ -43,10 +43,11 @@ int run_plot(const PlotCliOptions& o) {
     auto prepared = prepare(o.run);
     if (const int* code = std::get_if<int>(&prepared)) return *code;
     project::DryRun& run = *std::get<std::unique_ptr<project::DryRun>>(prepared);
-    interpreter::VectorSink sink;
+    // The toolpath is built and simplified while the run goes on: no event is kept (plot/toolpath.hpp).
+    plot::ToolpathSink sink({run.dialect->machine, run.setup.diameter_x});
     const interpreter::RunResult result = project::execute(run, sink, o.run.lenient);
     const plot::SvgOptions options{run.dialect->machine, run.setup.diameter_x, title_of(run, o.run.file)};
-    const std::string svg = plot::render_svg(sink.events, options);
+    const std::string svg = plot::render_svg(std::move(sink).finish(), options);
     const int code = report_alarms(run, result);
     return write_svg(svg, o.output) ? code : kExitUsage;
 }

@@ -4,6 +4,7 @@
 
 #include <iostream>
 
+#include "ast/display.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 
@@ -15,11 +16,13 @@ void add_dry_run_options(CLI::App& command, DryRunOptions& o) {
     command.add_option("--dialect-file", o.dialect_files, "load a dialect data file (TOML)");
     command.add_option("--machine", o.machine_file, "machine configuration file (TOML, machine/SCHEMA.md)");
     command.add_flag("--lenient", o.lenient, "run blocks with syntax errors without their defective words");
+    add_limit_options(command, o.limits);
 }
 
 project::Overrides overrides_of(const std::string& dialect, const std::vector<std::string>& dialect_files,
-                                const std::string& machine_file) {
+                                const std::string& machine_file, const project::LimitSettings& limits) {
     project::Overrides o;
+    o.limits = limits;
     o.dialect = dialect;
     o.dialect_files.assign(dialect_files.begin(), dialect_files.end());
     o.machine = machine_file;
@@ -28,7 +31,7 @@ project::Overrides overrides_of(const std::string& dialect, const std::vector<st
 
 std::variant<std::unique_ptr<project::DryRun>, int> prepare(const DryRunOptions& o) {
     auto workspace = std::make_shared<project::Workspace>(std::make_shared<project::DiskFileSystem>(),
-                                                          overrides_of(o.dialect, o.dialect_files, o.machine_file));
+                                                          overrides_of(o.dialect, o.dialect_files, o.machine_file, o.limits));
     project::PreparedRun prepared = project::prepare_dry_run(std::move(workspace), o.file);
     ProblemPrinter().print(prepared.problems);
     switch (prepared.outcome) {
@@ -42,7 +45,7 @@ std::variant<std::unique_ptr<project::DryRun>, int> prepare(const DryRunOptions&
 int report_alarms(const project::DryRun& run, const interpreter::RunResult& result) {
     for (const interpreter::Event& a : result.alarms)
         std::cerr << fmt::format("{}:{}: error: alarm {}: {}\n", run.programs.file(a.source.file).name(), a.source.line,
-                                 a.code, a.text);
+                                 a.code, ast::printable(a.text));   // alarm texts quote the program (#3000, comments)
     return result.alarms.empty() ? kExitClean : kExitFindings;
 }
 

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "cli/limits.hpp"
 #include "project/dry_run.hpp"
 
 namespace kerf::cli {
@@ -19,13 +20,15 @@ struct DryRunOptions {
     std::vector<std::string> dialect_files;
     std::string machine_file;   // "" = .kerf.toml's `machine`, else the dialect's built-in machine
     bool lenient = false;
+    project::LimitSettings limits;   // --max-file-bytes, --max-line-bytes, --time-limit
 };
 
+// FILE, --dialect, --dialect-file, --machine, --lenient and the limits (cli/limits.hpp).
 void add_dry_run_options(CLI::App& command, DryRunOptions& options);
 
 // The flags as the workspace's overrides.
 project::Overrides overrides_of(const std::string& dialect, const std::vector<std::string>& dialect_files,
-                                const std::string& machine_file);
+                                const std::string& machine_file, const project::LimitSettings& limits = {});
 
 // The prepared run, or the exit code to return (the reasons are on stderr already): 2 for a file
 // that cannot be read, an unknown dialect or a bad .kerf.toml or machine file; 1 for a file

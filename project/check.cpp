@@ -19,12 +19,14 @@ struct Analysis {
     std::vector<an::Finding> findings;
 };
 
-Analysis analyze(Workspace& workspace, const fs::path& path, std::string text, const Resolved& r) {
+Analysis analyze(Workspace& workspace, const fs::path& path, std::string text, const Resolved& r, std::size_t max_per_rule) {
     Analysis a;
     a.file = a.programs->add(path.string(), std::move(text), *r.dialect);
     a.programs->set_loader(workspace.loader_for(path), r.dialect);
     an::CheckOptions options;
     options.config = r.project->config().check;
+    options.max_findings_per_rule = max_per_rule;
+    options.time_limit = r.project->limits().time_limit;
     options.program_files = [&workspace, path](std::int64_t number) {
         std::vector<std::string> names;
         for (const IndexedProgram& p : workspace.find_programs(number, path))
@@ -43,42 +45,65 @@ void report(const fs::path& path, Analysis& a, CheckedFile& out) {
     out.report = an::make_report(name, *loaded.whole_tree(), *loaded.whole_lines(), std::move(a.findings));
 }
 
-CheckedFile check(Workspace& workspace, const fs::path& path, std::string text, bool fix) {
+// `encoding`: the file's (ast/input.hpp), for writing the fixes back.
+struct Source {
+    std::string text;
+    ast::Encoding encoding = ast::Encoding::utf8;
+    bool bom = false;
+};
+
+CheckedFile check(Workspace& workspace, const fs::path& path, Source source, const CheckSettings& settings,
+                  std::vector<Problem> problems) {
     CheckedFile out;
-    const Resolved r = workspace.resolve(path, text);
-    out.problems = r.problems;
+    out.problems = std::move(problems);
+    const Resolved r = workspace.resolve(path, source.text);
+    out.problems.insert(out.problems.end(), r.problems.begin(), r.problems.end());
     if (!r.ok() || has_errors(out.problems)) return out;
-    const std::string original = fix ? text : std::string();
-    Analysis a = analyze(workspace, path, std::move(text), r);
-    if (fix) {
+    const std::string original = settings.fix ? source.text : std::string();
+    Analysis a = analyze(workspace, path, std::move(source.text), r, settings.max_findings_per_rule);
+    if (settings.fix) {
         an::FixResult fixed = an::apply_fixes(original, a.findings);
         if (fixed.applied > 0) {
-            if (const auto error = write_atomically(path, fixed.text)) {
-                out.problems.push_back({Level::error, path.string(), 0, 0, *error});
-                return out;
+            // A file that cannot be written keeps its findings in the report: the error says why
+            // they were not fixed (issue 17: in a read-only folder they vanished).
+            if (const auto error = write_atomically(path, ast::encode_output(fixed.text, source.encoding, source.bom))) {
+                out.problems.push_back({Level::error, path.string(), 0, 0,
+                                        *error + "; nothing was fixed: its findings are reported as they are"});
+            } else {
+                out.fixed = fixed.applied;
+                a = analyze(workspace, path, std::move(fixed.text), r, settings.max_findings_per_rule);
             }
-            out.fixed = fixed.applied;
-            a = analyze(workspace, path, std::move(fixed.text), r);
         }
     }
     report(path, a, out);
+    out.checked = true;
     return out;
 }
 
 }  // namespace
 
-CheckedFile check_file(Workspace& workspace, const fs::path& file, bool fix) {
+CheckedFile check_file(Workspace& workspace, const fs::path& file, const CheckSettings& settings) {
     ReadResult read = workspace.read(file);
+    std::vector<Problem> problems = input_problems(file.string(), read.problems);
     if (!read.text) {
         CheckedFile out;
-        out.problems.push_back({Level::error, file.string(), 0, 0, "cannot open file"});
+        out.problems = std::move(problems);
+        if (!has_errors(out.problems)) out.problems.push_back({Level::error, file.string(), 0, 0, "cannot open file"});
         return out;
     }
-    return check(workspace, file, std::move(*read.text), fix);
+    return check(workspace, file, {std::move(*read.text), read.encoding, read.bom}, settings, std::move(problems));
 }
 
-CheckedFile check_text(Workspace& workspace, const fs::path& file, std::string text) {
-    return check(workspace, file, std::move(text), false);
+CheckedFile check_file(Workspace& workspace, const fs::path& file, bool fix) {
+    CheckSettings settings;
+    settings.fix = fix;
+    return check_file(workspace, file, settings);
+}
+
+CheckedFile check_text(Workspace& workspace, const fs::path& file, std::string text, std::size_t max_findings_per_rule) {
+    CheckSettings settings;
+    settings.max_findings_per_rule = max_findings_per_rule;
+    return check(workspace, file, {std::move(text)}, settings, {});
 }
 
 }  // namespace kerf::project

@@ -18,14 +18,27 @@ namespace kerf::project {
 struct CheckedFile {
     analyzer::FileReport report;
     std::vector<analyzer::BaselineEntry> keys;   // one per finding of the report
-    std::vector<Problem> problems;               // with errors: the file was not checked (exit 2)
+    // With errors: exit 2. The file was not checked when `checked` is false (it cannot be read, the
+    // decoder refuses it, its project is bad); a file checked whose fixes cannot be written has
+    // its report, and the error says why nothing was fixed. Notes: the decoder's (an empty file).
+    std::vector<Problem> problems;
+    bool checked = false;
     std::size_t fixed = 0;                       // fixes applied (check_file with fix)
 };
 
-// Reads `file` through the workspace and checks it; `name` is how reports name it.
+struct CheckSettings {
+    bool fix = false;
+    // Findings shown per rule and file before one "and N more" (analyzer::CheckOptions; 0 = all).
+    std::size_t max_findings_per_rule = 100;
+};
+
+// Reads `file` through the workspace (decoded under its project's limits) and checks it; with
+// `fix`, the fixed text is written back in the file's encoding.
+CheckedFile check_file(Workspace& workspace, const std::filesystem::path& file, const CheckSettings& settings);
 CheckedFile check_file(Workspace& workspace, const std::filesystem::path& file, bool fix);
 // Checks `text` as the contents of `file` (an open document): nothing is read or written but the
 // subprograms its calls reach.
-CheckedFile check_text(Workspace& workspace, const std::filesystem::path& file, std::string text);
+CheckedFile check_text(Workspace& workspace, const std::filesystem::path& file, std::string text,
+                       std::size_t max_findings_per_rule = 100);
 
 }  // namespace kerf::project

@@ -6,6 +6,7 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <tuple>
 
 #include <toml++/toml.h>
@@ -16,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::array<KeyInfo, 16> kKeys = {{
+constexpr std::array<KeyInfo, 20> kKeys = {{
     {"", "dialect", "string", "dialect id for every program under this file (`kerf dialects`), or \"auto\""},
     {"", "dialect_files", "array of strings", "user dialect files (dialects/SCHEMA.md), relative to this file"},
     {"", "machine", "string", "machine file (machine/SCHEMA.md), relative to this file"},
@@ -25,11 +26,15 @@ constexpr std::array<KeyInfo, 16> kKeys = {{
     {"", "format", "table", "kerf fmt style (docs/fmt.md)"},
     {"", "run", "table", "dry run: call, set, passes"},
     {"", "programs", "table", "program index: library, resident"},
+    {"", "limits", "table", "bounds of every command: max_file_bytes, max_line_bytes, time_limit"},
     {"run", "call", "string", "the caller's block of a macro run, \"G65 P9010 A1.\""},
     {"run", "set", "array of strings", "common variables before the run, [\"#100=5\"]"},
     {"run", "passes", "integer", "passes of a main program ending in M99 (bar-feed loop), 1 or more"},
     {"programs", "library", "array of strings", "folders whose programs calls can reach, relative to this file"},
     {"programs", "resident", "array of strings", "program ranges kept in the machine, [\"O9000-O9999\"]"},
+    {"limits", "max_file_bytes", "integer", "refuse program files larger than this many bytes (default 512 MiB; 0 = no limit)"},
+    {"limits", "max_line_bytes", "integer", "refuse program files with a longer line (default 64 KiB; 0 = no limit)"},
+    {"limits", "time_limit", "number", "stop a dry run after this many seconds with alarm 90005 (default 10; 0 = none)"},
     {"check", "include", "array of strings", "globs of the files to check, relative to this file"},
     {"check", "exclude", "array of strings", "globs of the files never to check"},
     {"check", "rules", "table", "rule id or name = \"error\" | \"warning\" | \"info\" | \"hint\" | \"off\""},
@@ -92,10 +97,11 @@ private:
     ConfigResult& result_;
 };
 
-constexpr std::array<std::string_view, 8> kTopKeys = {"dialect", "dialect_files", "machine", "check",
-                                                      "rules", "format", "run", "programs"};
+constexpr std::array<std::string_view, 9> kTopKeys = {"dialect", "dialect_files", "machine", "check",
+                                                      "rules", "format", "run", "programs", "limits"};
 constexpr std::array<std::string_view, 3> kRunKeys = {"call", "set", "passes"};
 constexpr std::array<std::string_view, 2> kProgramsKeys = {"library", "resident"};
+constexpr std::array<std::string_view, 3> kLimitsKeys = {"max_file_bytes", "max_line_bytes", "time_limit"};
 
 // "#100=5", "#500 = -1.5": a common variable and a value (the run's evaluator reads it later).
 bool looks_like_assignment(std::string_view s) {
@@ -135,6 +141,26 @@ void read_programs(Reader& in, const toml::table& t, ProgramSettings& programs) 
     }
 }
 
+// [limits]: sizes in bytes (integers, 0 = no limit), the time in seconds (a number, 0 = none).
+void read_limits(Reader& in, const toml::table& t, LimitSettings& limits) {
+    in.check_keys(t, "limits", kLimitsKeys);
+    for (const std::string_view key : {std::string_view("max_file_bytes"), std::string_view("max_line_bytes")}) {
+        const toml::node* node = t.get(key);
+        if (!node) continue;
+        const std::optional<std::int64_t> n = node->is_integer() ? node->value<std::int64_t>() : std::nullopt;
+        if (!n || *n < 0) {
+            in.error(node->source(), fmt::format("limits.{}: expected a number of bytes, 0 for no limit", key));
+            continue;
+        }
+        (key == "max_file_bytes" ? limits.max_file_bytes : limits.max_line_bytes) = static_cast<std::uint64_t>(*n);
+    }
+    if (const toml::node* node = t.get("time_limit")) {
+        const std::optional<double> s = node->is_number() ? node->value<double>() : std::nullopt;
+        if (s && *s >= 0 && *s <= 1e6) limits.time_limit_s = *s;
+        else in.error(node->source(), "limits.time_limit: expected seconds from 0 (no limit) to 1000000");
+    }
+}
+
 void read_top(Reader& in, const toml::table& root, Config& c) {
     in.check_keys(root, "", kTopKeys);
     if (const auto d = in.string(root.get("dialect"), "dialect"); d && *d != "auto") c.dialect = *d;
@@ -142,6 +168,7 @@ void read_top(Reader& in, const toml::table& root, Config& c) {
     if (const auto m = in.string(root.get("machine"), "machine")) c.machine = in.relative(*m);
     if (const toml::table* run = in.table(root.get("run"), "run")) read_run(in, *run, c.run);
     if (const toml::table* programs = in.table(root.get("programs"), "programs")) read_programs(in, *programs, c.programs);
+    if (const toml::table* limits = in.table(root.get("limits"), "limits")) read_limits(in, *limits, c.limits);
     in.table(root.get("format"), "format");   // its keys: formatter::style_from_toml
 }
 
@@ -182,6 +209,15 @@ std::optional<ProgramRange> parse_program_range(std::string_view text) {
     const auto last = dash == std::string_view::npos ? first : program_number(text.substr(dash + 1));
     if (!first || !last || *first > *last) return std::nullopt;
     return ProgramRange{*first, *last};
+}
+
+Limits resolve_limits(const LimitSettings& over, const LimitSettings& under) {
+    Limits limits;
+    if (const auto v = over.max_file_bytes ? over.max_file_bytes : under.max_file_bytes) limits.input.max_file_bytes = *v;
+    if (const auto v = over.max_line_bytes ? over.max_line_bytes : under.max_line_bytes) limits.input.max_line_bytes = *v;
+    const double seconds = std::min(over.time_limit_s.value_or(under.time_limit_s.value_or(kDefaultTimeLimitS)), 1e6);
+    limits.time_limit = std::chrono::milliseconds(static_cast<std::int64_t>(std::llround(seconds * 1000)));
+    return limits;
 }
 
 bool ProgramSettings::resident_contains(std::int64_t number) const {

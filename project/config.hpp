@@ -8,6 +8,7 @@
 // [rules] by analyzer/config.hpp, [format] by formatter/style.hpp; the rest here.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "analyzer/config.hpp"
+#include "ast/input.hpp"
 #include "formatter/style.hpp"
 #include "project/problem.hpp"
 
@@ -47,6 +49,29 @@ struct ProgramSettings {
     bool resident_contains(std::int64_t number) const;
 };
 
+// [limits]: the bounds of every command on a file (ARCHITECTURE.md "Bounded resources"); the
+// command line's --max-file-bytes, --max-line-bytes and --time-limit (Overrides::limits) win.
+// nullopt = not set here.
+struct LimitSettings {
+    std::optional<std::uint64_t> max_file_bytes;   // refuse larger files (0 = no limit)
+    std::optional<std::uint64_t> max_line_bytes;   // refuse files with a longer line (0 = no limit)
+    std::optional<double> time_limit_s;            // stop a dry run after this many seconds (0 = none)
+};
+
+// A run still going after this many seconds stops with alarm 90005: far above any real program's
+// dry run (a 100 MB CAM program runs in about a second), and below the patience of an editor or a
+// CI job.
+inline constexpr double kDefaultTimeLimitS = 10;
+
+// The bounds in force: the decoder's input limits (ast/input.hpp) and the dry run's wall clock.
+struct Limits {
+    ast::InputLimits input;
+    std::chrono::milliseconds time_limit{0};   // 0 = none
+};
+
+// `over` (the command line) over `under` (.kerf.toml) over the defaults.
+Limits resolve_limits(const LimitSettings& over, const LimitSettings& under);
+
 struct Config {
     std::filesystem::path file;    // the .kerf.toml; empty for the defaults (no file found)
     std::string dialect;           // "" when not set (or "auto"): the header, then detection
@@ -56,6 +81,7 @@ struct Config {
     formatter::Style format;
     RunSettings run;
     ProgramSettings programs;
+    LimitSettings limits;
 
     // The folder of the .kerf.toml: relative paths and [check] globs start there.
     std::filesystem::path folder() const { return file.parent_path(); }
@@ -71,9 +97,9 @@ ConfigResult parse_config(std::string_view toml_text, const std::filesystem::pat
 
 // Every key of the file, for the unknown-key message and the documentation test (docs/config.md).
 struct KeyInfo {
-    std::string_view table;   // "" for the top level, "run", "programs", "check", "format"
+    std::string_view table;   // "" for the top level, "run", "programs", "limits", "check", "format"
     std::string_view key;
-    std::string_view type;    // "string", "array of strings", "integer", "table"
+    std::string_view type;    // "string", "array of strings", "integer", "number", "table"
     std::string_view description;
 };
 std::span<const KeyInfo> config_keys();

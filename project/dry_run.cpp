@@ -27,17 +27,22 @@ bool load_program(DryRun& run, Workspace& workspace, const fs::path& file) {
 
 PreparedRun prepare_dry_run(std::shared_ptr<Workspace> workspace, const fs::path& file) {
     PreparedRun prepared;
-    std::string error;
-    std::optional<MappedFile> source = MappedFile::open(file, error);
+    // The project's limits decide which files the decoder refuses (ast/input.hpp).
+    const ast::InputLimits limits = workspace->project_for(file)->limits().input;
+    ReadResult failure;
+    std::optional<MappedFile> source = MappedFile::open(file, limits, failure);
     if (!source) {
-        prepared.problems.push_back({Level::error, file.string(), 0, 0, "cannot open file"});
+        prepared.problems = input_problems(file.string(), failure.problems);
+        if (!has_errors(prepared.problems)) prepared.problems.push_back({Level::error, file.string(), 0, 0, "cannot open file"});
         return prepared;
     }
+    std::vector<Problem> notes = input_problems(file.string(), source->input().problems);
     auto run = std::make_unique<DryRun>();
     run->source = std::make_unique<MappedFile>(std::move(*source));
     run->workspace = std::move(workspace);
     Resolved resolved = run->workspace->resolve(file, run->source->text());
-    prepared.problems = std::move(resolved.problems);
+    prepared.problems = std::move(notes);
+    prepared.problems.insert(prepared.problems.end(), resolved.problems.begin(), resolved.problems.end());
     if (!resolved.ok() || has_errors(prepared.problems)) return prepared;
     run->project = resolved.project;
     run->dialect = resolved.dialect;
@@ -57,6 +62,7 @@ interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink, bool l
     interpreter::RunOptions options;
     options.lenient = lenient;
     options.emit_state = emit_state;
+    options.time_limit = run.project->limits().time_limit;
     return interpreter::run(run.programs, run.main, *run.dialect, run.setup, sink, options);
 }
 

@@ -17,13 +17,62 @@ fs::path normal_path(const fs::path& path) {
     return (ec ? path : absolute).lexically_normal();
 }
 
+namespace {
+
+// "PATH:LINE: message (hint)" of the decoder's refusal.
+std::string refusal_text(const fs::path& path, const ast::InputProblem& p) {
+    std::string s = p.line > 0 ? fmt::format("{}:{}: {}", path.string(), p.line, p.message) : fmt::format("{}: {}", path.string(), p.message);
+    if (!p.hint.empty()) s += fmt::format(" ({})", p.hint);
+    return s;
+}
+
+// A head cut anywhere may end inside a character or a line: only the encoding matters here.
+ReadResult decode_head(ReadResult r) {
+    if (!r.text) return r;
+    ast::DecodedInput input = ast::decode_input(*r.text, ast::InputLimits{0, 0});
+    if (!input.refused()) {
+        r.text = std::move(input.text);
+        r.encoding = input.encoding;
+        r.bom = input.bom;
+    }
+    return r;
+}
+
+}  // namespace
+
+ReadResult refusal(const fs::path& path, ast::InputProblem problem) {
+    ReadResult r;
+    r.error = refusal_text(path, problem);
+    r.problems.push_back(std::move(problem));
+    return r;
+}
+
+ReadResult decode_file(const fs::path& path, std::string bytes, const ast::InputLimits& limits) {
+    ast::DecodedInput input = ast::decode_input(std::move(bytes), limits);
+    ReadResult r;
+    r.encoding = input.encoding;
+    r.bom = input.bom;
+    r.problems = std::move(input.problems);
+    for (const ast::InputProblem& p : r.problems)
+        if (p.severity == ast::Severity::error && r.error.empty()) r.error = refusal_text(path, p);
+    if (r.error.empty()) r.text = std::move(input.text);
+    return r;
+}
+
 ReadResult FileSystem::read_head(const fs::path& path, std::size_t bytes) const {
-    ReadResult r = read(path);
+    ReadResult r = read(path, ast::InputLimits{0, 0});
     if (r.text && r.text->size() > bytes) r.text->resize(bytes);
     return r;
 }
 
-ReadResult DiskFileSystem::read(const fs::path& path) const {
+ReadResult DiskFileSystem::read(const fs::path& path, const ast::InputLimits& limits) const {
+    std::error_code ec;
+    if (fs::is_regular_file(path, ec)) {
+        // Refused before reading: a 50 GB file is not read into memory to be refused.
+        const std::uintmax_t size = fs::file_size(path, ec);
+        if (!ec)
+            if (auto too_large = ast::check_file_size(size, limits)) return refusal(path, std::move(*too_large));
+    }
     ReadResult r;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -47,8 +96,7 @@ ReadResult DiskFileSystem::read(const fs::path& path) const {
         r.error = fmt::format("{}: read error", path.string());
         return r;
     }
-    r.text = std::move(text);
-    return r;
+    return decode_file(path, std::move(text), limits);
 }
 
 ReadResult DiskFileSystem::read_head(const fs::path& path, std::size_t bytes) const {
@@ -62,7 +110,7 @@ ReadResult DiskFileSystem::read_head(const fs::path& path, std::size_t bytes) co
     in.read(head.data(), static_cast<std::streamsize>(bytes));
     head.resize(static_cast<std::size_t>(in.gcount()));
     r.text = std::move(head);
-    return r;
+    return decode_head(std::move(r));
 }
 
 bool DiskFileSystem::is_file(const fs::path& path) const {
@@ -90,12 +138,16 @@ void OverlayFileSystem::remove(const fs::path& path) {
     documents_.erase(normal_path(path));
 }
 
-ReadResult OverlayFileSystem::read(const fs::path& path) const {
+ReadResult OverlayFileSystem::read(const fs::path& path, const ast::InputLimits& limits) const {
     {
         const std::shared_lock lock(mutex_);
-        if (const auto it = documents_.find(normal_path(path)); it != documents_.end()) return {it->second, {}};
+        if (const auto it = documents_.find(normal_path(path)); it != documents_.end()) {
+            ReadResult r;
+            r.text = it->second;
+            return r;
+        }
     }
-    return base_->read(path);
+    return base_->read(path, limits);
 }
 
 bool OverlayFileSystem::is_file(const fs::path& path) const {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "analyzer/output.hpp"
+#include "ast/display.hpp"
 #include "ast/typed.hpp"
 #include "formatter/format.hpp"
 #include "formatter/verify.hpp"
@@ -17,8 +18,8 @@ namespace {
 std::string diagnostic_line(const std::string& name, const ast::LineIndex& lines, const ast::Diagnostic& d) {
     const ast::Position at = lines.utf8(d.range.begin);
     std::string s = fmt::format("{}:{}:{}: {}: {} [{}]", name, at.line + 1, at.column + 1, ast::to_string(d.severity),
-                                d.message, analyzer::diagnostic_id(d.code, analyzer::builtin_rules()));
-    if (!d.hint.empty()) s += fmt::format("\n  hint: {}", d.hint);
+                                ast::printable(d.message), analyzer::diagnostic_id(d.code, analyzer::builtin_rules()));
+    if (!d.hint.empty()) s += fmt::format("\n  hint: {}", ast::printable(d.hint));
     return s;
 }
 
@@ -40,6 +41,7 @@ void verify_result(Workspace& workspace, const fs::path& file, std::string text,
     v.dialect = resolved.dialect;
     v.setup = *resolved.setup;
     v.loader = workspace.loader_for(file);
+    v.run.time_limit = resolved.project->limits().time_limit;
     const std::string name = file.string();
     const formatter::VerifyResult result = formatter::verify(name, std::move(text), *r.formatted, v);
     if (!result.difference) return;

@@ -7,37 +7,71 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "project/files.hpp"
 
 namespace kerf::project {
 
-std::optional<MappedFile> MappedFile::open(const std::filesystem::path& path, std::string& error) {
+namespace {
+
+// The decoder reads a mapped file in windows of this size, dropping each behind it.
+constexpr std::size_t kScanWindow = std::size_t{16} << 20;
+
+}  // namespace
+
+std::optional<MappedFile> MappedFile::open(const std::filesystem::path& path, const ast::InputLimits& limits,
+                                           ReadResult& failure) {
     MappedFile file;
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     struct stat st {};
     if (fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+        if (const auto too_large = ast::check_file_size(static_cast<std::uint64_t>(st.st_size), limits)) {
+            ::close(fd);
+            failure = refusal(path, *too_large);
+            return std::nullopt;
+        }
         void* p = mmap(nullptr, static_cast<std::size_t>(st.st_size), PROT_READ, MAP_PRIVATE, fd, 0);
         ::close(fd);
         if (p != MAP_FAILED) {
             madvise(p, static_cast<std::size_t>(st.st_size), MADV_SEQUENTIAL);
             file.mapped_ = static_cast<const char*>(p);
             file.size_ = static_cast<std::size_t>(st.st_size);
-            return file;
+            ast::InputScanner scanner(limits);
+            for (std::size_t at = 0; at < file.size_; at += kScanWindow) {
+                const std::size_t end = std::min(file.size_, at + kScanWindow);
+                scanner.feed(std::string_view(file.mapped_ + at, end - at));
+                file.release(at, end);
+            }
+            file.input_ = scanner.finish();
+            if (file.input_.encoding == ast::Encoding::utf8) {
+                if (!file.input_.refused()) return file;
+                for (const ast::InputProblem& problem : file.input_.problems)
+                    if (problem.severity == ast::Severity::error) failure = refusal(path, problem);
+                return std::nullopt;
+            }
+            // UTF-16/32: decoded into memory (such files are small: written by editors, not CAM).
+            munmap(const_cast<char*>(file.mapped_), file.size_);
+            file.mapped_ = nullptr;
+            file.size_ = 0;
         }
     } else if (fd >= 0) {
         ::close(fd);
     }
-    ReadResult read = DiskFileSystem().read(path);   // pipes, empty and special files
+    ReadResult read = DiskFileSystem().read(path, limits);   // pipes, empty and special files; UTF-16/32
     if (!read.text) {
-        error = std::move(read.error);
+        failure = std::move(read);
         return std::nullopt;
     }
     file.copy_ = std::move(*read.text);
+    file.input_.encoding = read.encoding;
+    file.input_.bom = read.bom;
+    file.input_.problems = std::move(read.problems);
     return file;
 }
 
 MappedFile::MappedFile(MappedFile&& other) noexcept
-    : mapped_(other.mapped_), size_(other.size_), copy_(std::move(other.copy_)) {
+    : mapped_(other.mapped_), size_(other.size_), copy_(std::move(other.copy_)), input_(std::move(other.input_)) {
     other.mapped_ = nullptr;
     other.size_ = 0;
 }

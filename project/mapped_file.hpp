@@ -9,13 +9,20 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "ast/input.hpp"
+#include "project/files.hpp"
 
 namespace kerf::project {
 
 class MappedFile {
 public:
-    // nullopt after writing the reason to `error`.
-    static std::optional<MappedFile> open(const std::filesystem::path& path, std::string& error);
+    // nullopt after writing to `failure` why: the file cannot be read (its `error`), or the input
+    // decoder (ast/input.hpp) refuses it (its `problems` too). The decoder sees the mapped bytes in
+    // windows whose pages are dropped behind it; a UTF-16/32 file is decoded into memory instead.
+    static std::optional<MappedFile> open(const std::filesystem::path& path, const ast::InputLimits& limits,
+                                          ReadResult& failure);
     MappedFile(MappedFile&& other) noexcept;
     MappedFile& operator=(MappedFile&&) = delete;
     MappedFile(const MappedFile&) = delete;
@@ -24,12 +31,15 @@ public:
     std::string_view text() const { return mapped_ ? std::string_view(mapped_, size_) : std::string_view(copy_); }
     // Drops the whole pages inside [begin, end) from this process's memory.
     void release(std::size_t begin, std::size_t end) const;
+    // What the decoder said about the file and it still read (notes, warnings).
+    const ast::DecodedInput& input() const { return input_; }
 
 private:
     MappedFile() = default;
     const char* mapped_ = nullptr;
     std::size_t size_ = 0;
     std::string copy_;
+    ast::DecodedInput input_;   // encoding and problems; its text is empty (the text is above)
 };
 
 }  // namespace kerf::project

@@ -7,11 +7,12 @@
 #include <string_view>
 #include <vector>
 
+#include "ast/input.hpp"
 #include "dialects/dialect.hpp"
 
 namespace kerf::project {
 
-enum class Level { error, warning };
+enum class Level { error, warning, note };
 
 struct Problem {
     Level level = Level::error;
@@ -30,6 +31,10 @@ inline bool has_errors(const std::vector<Problem>& problems) {
         if (p.level == Level::error) return true;
     return false;
 }
+
+// The input decoder's problems about `file` (ast/input.hpp: a refusal is an error, "file is empty"
+// a note), at their line (column 1) when they have one, the hint after the message.
+std::vector<Problem> input_problems(const std::string& file, const std::vector<ast::InputProblem>& problems);
 
 // A dialect or machine loader error (dialects/toml_errors.hpp): its message starts with its source
 // ("<file>: <key>: what is wrong"), which the Problem names apart.

@@ -88,6 +88,7 @@ Project::Project(Config config, std::vector<Problem> problems, const Overrides& 
     registry_ = std::move(loaded.registry);
     problems_.insert(problems_.end(), loaded.problems.begin(), loaded.problems.end());
     machine_file_ = !overrides.machine.empty() ? overrides.machine : config_.machine.value_or(fs::path{});
+    limits_ = resolve_limits(overrides.limits, config_.limits);
 }
 
 const Project::SetupEntry& Project::setup(const dialects::Dialect& dialect) const {

@@ -43,6 +43,7 @@ struct Overrides {
     std::string dialect;                                 // "" or "auto": not overridden
     std::vector<std::filesystem::path> dialect_files;    // loaded before the .kerf.toml's
     std::filesystem::path machine;                       // "": not overridden
+    LimitSettings limits;                                // --max-file-bytes, --max-line-bytes, --time-limit
     std::string dialect_origin = "--dialect";            // how problems name the override ("kerf.dialect")
     std::string machine_origin = "--machine";
 };
@@ -77,6 +78,8 @@ public:
     const std::vector<Problem>& problems() const { return problems_; }
     // The machine file in force: the override, else the .kerf.toml's; empty for the built-in machine.
     const std::filesystem::path& machine_file() const { return machine_file_; }
+    // The bounds in force for the project's files: the overrides over [limits] over the defaults.
+    const Limits& limits() const { return limits_; }
 
     struct SetupEntry {
         std::optional<interpreter::Setup> setup;   // nullopt when the machine file has errors
@@ -92,6 +95,7 @@ private:
     std::vector<Problem> problems_;
     dialects::Registry registry_;
     std::filesystem::path machine_file_;
+    Limits limits_;
     const FileSystem& files_;
     mutable std::mutex setups_mutex_;
     mutable std::map<std::string, std::unique_ptr<SetupEntry>> setups_;
@@ -112,7 +116,8 @@ public:
     explicit Workspace(std::shared_ptr<const FileSystem> files = std::make_shared<DiskFileSystem>(), Overrides overrides = {});
 
     const FileSystem& files() const { return *files_; }
-    ReadResult read(const std::filesystem::path& file) const { return files_->read(file); }
+    // A program file, decoded under its project's limits (project/files.hpp).
+    ReadResult read(const std::filesystem::path& file) { return files_->read(file, project_for(file)->limits().input); }
 
     // New overrides (the server's settings changed): projects are read again on next use.
     void set_overrides(Overrides overrides);

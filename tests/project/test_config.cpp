@@ -85,7 +85,7 @@ TEST_CASE("config: an unknown key is an error at its position that lists the val
     REQUIRE(r.problems.size() == 3);
     CHECK(to_string(r.problems[0]) ==
           "/shop/parts/.kerf.toml:2:1: error: dialekt: unknown key; the keys at the top level are dialect, dialect_files, "
-          "machine, check, rules, format, run, programs (docs/config.md)");
+          "machine, check, rules, format, run, programs, limits (docs/config.md)");
     CHECK(to_string(r.problems[1]) ==
           "/shop/parts/.kerf.toml:4:1: error: run.pasess: unknown key; the keys of [run] are call, set, passes (docs/config.md)");
     CHECK(to_string(r.problems[2]) ==
@@ -143,6 +143,37 @@ TEST_CASE("config: program ranges") {
     CHECK_FALSE(parse_program_range(""));
     CHECK_FALSE(parse_program_range("O-5"));
     CHECK_FALSE(parse_program_range("O123456789"));
+}
+
+TEST_CASE("config: [limits] sets the bounds, the command line wins, bad values are errors") {
+    const ConfigResult r = parse_config("[limits]\nmax_file_bytes = 1000\nmax_line_bytes = 0\ntime_limit = 2.5\n", kFile);
+    CHECK(r.problems.empty());
+    CHECK(r.config.limits.max_file_bytes == 1000u);
+    CHECK(r.config.limits.max_line_bytes == 0u);
+    REQUIRE(r.config.limits.time_limit_s);
+    CHECK(*r.config.limits.time_limit_s == 2.5);
+    // The file over the defaults; 0 = no limit stays 0.
+    const kerf::project::Limits from_file = kerf::project::resolve_limits({}, r.config.limits);
+    CHECK(from_file.input.max_file_bytes == 1000u);
+    CHECK(from_file.input.max_line_bytes == 0u);
+    CHECK(from_file.time_limit == std::chrono::milliseconds(2500));
+    // A flag over the file; what neither sets keeps its default (64 KiB, 10 s).
+    kerf::project::LimitSettings flags;
+    flags.max_file_bytes = 5;
+    const kerf::project::Limits both = kerf::project::resolve_limits(flags, {});
+    CHECK(both.input.max_file_bytes == 5u);
+    CHECK(both.input.max_line_bytes == 65536u);
+    CHECK(both.time_limit == std::chrono::milliseconds(10000));
+
+    const ConfigResult bad = parse_config("[limits]\nmax_file_bytes = -1\ntime_limit = \"10s\"\nmax_lines = 5\n", kFile);
+    REQUIRE(bad.problems.size() == 3);
+    CHECK(to_string(bad.problems[0]) ==
+          "/shop/parts/.kerf.toml:2:18: error: limits.max_file_bytes: expected a number of bytes, 0 for no limit");
+    CHECK(to_string(bad.problems[1]) ==
+          "/shop/parts/.kerf.toml:3:14: error: limits.time_limit: expected seconds from 0 (no limit) to 1000000");
+    CHECK(to_string(bad.problems[2]) ==
+          "/shop/parts/.kerf.toml:4:1: error: limits.max_lines: unknown key; the keys of [limits] are max_file_bytes, "
+          "max_line_bytes, time_limit (docs/config.md)");
 }
 
 TEST_CASE("config: docs/config.md documents every key") {
