@@ -1,0 +1,47 @@
+// The invariants of kerf's fuzz targets (fuzz/README.md), in one library used by the libFuzzer
+// targets (fuzz/fuzz_target.cpp: a broken invariant is a crash) and by the test suite, which runs
+// every file of fuzz/regressions/<target>/ through the same check (tests/test_fuzz_regressions.cpp).
+//
+// Program inputs (interpreter, analyzer, formatter): byte 0 picks the dialect as in fuzz_grammar
+// ((byte + 6) % 9: the digits '0'..'8' of the seeds pick the nine built-in dialects in order) and
+// the options (byte / 9: lenient run, style choices); the rest is the program text. TOML inputs
+// (machine, dialect) are the file text.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace kerf::fuzz {
+
+// What broke, or nullopt.
+using Broken = std::optional<std::string>;
+
+// The largest input a check reads (longer ones pass unchecked): a dry run is step-limited, but a
+// long program still makes every run slow.
+inline constexpr std::size_t kMaxProgramInput = 64 * 1024;
+
+// Dry run (step- and move-limited, strict or lenient): every event valid (kind, source inside
+// the file, no NaN position, length, time or feed; arcs with a centre), nothing but messages after
+// an alarm, every event writes as one valid JSON line, the run within its bounds.
+Broken check_interpreter(std::string_view input);
+
+// kerf check: every finding's range inside the text, its rule known, at most the cap per rule
+// (plus one "and N more"); every fix's edits inside the text; the fixes apply and the fixed text
+// parses losslessly with no more syntax errors than the original.
+Broken check_analyzer(std::string_view input);
+
+// kerf fmt: the output parses losslessly; formatting it again changes nothing (idempotent); when
+// the input has no syntax error, --verify finds the two runs equal.
+Broken check_formatter(std::string_view input);
+
+// Machine TOML: the loader returns errors with positions inside the text or a machine; a machine
+// resolves for every dialect and its Setup dry-runs a fixed program with valid events.
+Broken check_machine_toml(std::string_view input);
+
+// Dialect TOML: the loader returns errors with positions inside the text or dialects; each new
+// dialect parses, binds and dry-runs a fixed program with valid events.
+Broken check_dialect_toml(std::string_view input);
+
+}  // namespace kerf::fuzz

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Seed corpora for the fuzz targets, generated at run time (fuzz/README.md): nothing here is
+committed, the seeds are written under OUT (default build-fuzz/seeds/<target>/).
+
+Program targets (grammar, interpreter, analyzer, formatter): byte 0 picks the dialect, so each
+program becomes one seed per dialect it may be: the dialect of its `(DIALECT: id)` header (the
+reference examples carry one), else the guess of its corpus folder (lathe -> fanuc-lathe-a, the
+others -> fanuc-mill). Programs are cut to SEED_BYTES at a line end: a dry run of a whole CAM
+program would make every execution slow, and libFuzzer mutates the start of a seed most.
+Sources: fuzz/corpus (already in the target format), ../shared/reference/examples, ../shared/corpus.
+TOML targets: machine/data/*.toml and dialects/data/*.toml, the examples of the schemas.
+
+usage: fuzz/make_seeds.py [OUT]
+"""
+import hashlib
+import os
+import re
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+SHARED = os.path.join(ROOT, "..", "shared")
+OUT = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build-fuzz", "seeds")
+SEED_BYTES = 16 * 1024
+# byte 0 -> dialect: (byte + 6) % 9 (fuzz/checks.cpp, fuzz/fuzz_grammar.cpp): '0'..'8' in this order.
+DIALECTS = ["fanuc-lathe-a", "fanuc-lathe-b", "fanuc-lathe-c", "spinner-lathe-a", "fanuc-mill",
+            "adv400-mill", "adv400-lathe", "pcnc-mill", "iso-legacy-mill"]
+
+
+def write(target, data):
+    d = os.path.join(OUT, target)
+    os.makedirs(d, exist_ok=True)
+    name = hashlib.sha1(data).hexdigest()[:16]
+    with open(os.path.join(d, name), "wb") as f:
+        f.write(data)
+
+
+def cut(data):
+    if len(data) <= SEED_BYTES:
+        return data
+    end = data.rfind(b"\n", 0, SEED_BYTES)
+    return data[: end + 1 if end > 0 else SEED_BYTES]
+
+
+def dialect_byte(path, data):
+    m = re.search(rb"\(DIALECT:\s*([a-z0-9-]+)", data[:4096])
+    if m and m.group(1).decode() in DIALECTS:
+        return str(DIALECTS.index(m.group(1).decode())).encode()
+    return b"0" if os.sep + "lathe" + os.sep in path else b"4"
+
+
+def programs():
+    corpus = os.path.join(HERE, "corpus")
+    for name in sorted(os.listdir(corpus)):
+        with open(os.path.join(corpus, name), "rb") as f:
+            yield f.read()
+    for top in (os.path.join(SHARED, "reference", "examples"), os.path.join(SHARED, "corpus")):
+        for dirpath, _, files in os.walk(top):
+            for name in sorted(files):
+                if name.endswith(".md"):
+                    continue
+                path = os.path.join(dirpath, name)
+                with open(path, "rb") as f:
+                    data = cut(f.read())
+                yield dialect_byte(path, data) + data
+
+
+def main():
+    count = 0
+    for seed in programs():
+        for target in ("grammar", "interpreter", "analyzer", "formatter"):
+            write(target, seed)
+        count += 1
+    for target, folder in (("machine_toml", "machine/data"), ("dialect_toml", "dialects/data")):
+        d = os.path.join(ROOT, folder)
+        for name in sorted(os.listdir(d)):
+            if name.endswith(".toml"):
+                with open(os.path.join(d, name), "rb") as f:
+                    write(target, f.read())
+    print(f"{count} program seeds and the TOML seeds in {OUT}")
+
+
+main()
