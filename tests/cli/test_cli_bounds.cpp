@@ -3,6 +3,7 @@
 // the message the user gets. The figures before the change are the issue's.
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -53,15 +54,15 @@ TEST_CASE("bounds: kerf check on a 1 MB line of 'X1. Y1.' is refused by the line
     const auto refused = run_kerf_measured("check --dialect fanuc-mill " + shell_quote(file), kWork / "line" / "a");
     check_bounded(refused, 100, 10);
     CHECK(refused.code == 2);
-    CHECK(refused.err.find("line.nc:1: error: line 1 is 1.0 MiB long, over the limit of 64.0 KiB per line") !=
+    CHECK(refused.err.find("line.nc:1:1: error: line 1 is 1.0 MiB long, over the limit of 64.0 KiB per line") !=
           std::string::npos);
     CHECK(refused.err.find("--max-line-bytes") != std::string::npos);
-    // Without the limit the file is checked: 262,143 repeated addresses, 100 shown.
+    // Without the limit the file is checked: 262,142 repeated addresses (131,072 X words and 131,072 Y words, each but the first a repeat), 100 shown.
     const auto checked =
         run_kerf_measured("check --max-line-bytes 0 --dialect fanuc-mill " + shell_quote(file), kWork / "line" / "b");
     check_bounded(checked, 400, 60);
     CHECK(count(checked.out, "warning K1021") == 100);
-    CHECK(checked.out.find("info K1021 duplicate-address: and 262043 more findings of K1021 in this file, not shown") !=
+    CHECK(checked.out.find("info K1021 duplicate-address: and 262042 more findings of K1021 in this file, not shown") !=
           std::string::npos);
     CHECK(checked.out.size() < 100'000);
 }
@@ -254,15 +255,26 @@ TEST_CASE("bounds: a file with CR-only line ends reads line by line in every com
 
 // Before: exit 2 and the file's 29 findings vanished from the report.
 TEST_CASE("bounds: kerf check --fix that cannot write the file still reports its findings") {
-    const fs::path file = write_text(kWork / "fix" / "x.nc", "O1000\nG0 X1. Y2.\nMO6\nM30\n");
-    // A file size limit of 0 makes every write fail, for root too (SIGXFSZ ignored: write gets EFBIG).
-    const auto r = run_kerf_measured("check --fix --dialect fanuc-mill " + shell_quote(file), kWork / "fix", "trap '' XFSZ; ulimit -f 0; ");
-    check_bounded(r, 100, 10);
-    CHECK(r.code == 2);
-    CHECK(r.err.find("nothing was fixed: its findings are reported as they are") != std::string::npos);
-    CHECK(r.out.find("x.nc:3:2: error K1003") != std::string::npos);   // MO6: the letter O for a zero
-    CHECK(r.out.find("in 1 file(s) checked") != std::string::npos);
+    const fs::path dir = kWork / "fix";
+    const fs::path file = write_text(dir / "x.nc", "O1000\nG0 X1. Y2.\nMO6\nM30\n");
+    // A file size limit of 0 makes every write to a file fail, for root too (SIGXFSZ ignored: write
+    // gets EFBIG). kerf's output goes through a pipe, which the limit does not cover; the exit code
+    // is written by the unlimited shell around it.
+    const fs::path out = dir / "out.txt", code = dir / "code.txt";
+    const std::string cmd = "( (trap '' XFSZ; ulimit -f 0; exec " + std::string(KERF_BINARY) +
+                            " check --fix --dialect fanuc-mill " + shell_quote(file) + " </dev/null 2>&1); echo $? >" +
+                            shell_quote(code) + " ) | cat >" + shell_quote(out);
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    const std::string printed = kerf::test::read_text(out);
+    INFO(printed);
+    CHECK(kerf::test::read_text(code) == "2\n");
+    CHECK(printed.find("nothing was fixed: its findings are reported as they are") != std::string::npos);
+    CHECK(printed.find("x.nc:3:1: error K1003") != std::string::npos);   // MO6: the letter O for a zero
+    CHECK(printed.find("in 1 file(s) checked") != std::string::npos);
     CHECK(kerf::test::read_text(file) == "O1000\nG0 X1. Y2.\nMO6\nM30\n");
+    std::size_t entries = 0;   // x.nc, out.txt, code.txt: no temporary file left behind
+    for (const auto& e : fs::directory_iterator(dir)) entries += e.path().filename() != "stdout.txt" && e.path().filename() != "stderr.txt";
+    CHECK(entries == 3);
 }
 
 // Before: every command said all was well.
@@ -280,8 +292,11 @@ TEST_CASE("bounds: an empty file gets a note from every command") {
 
 TEST_CASE("bounds: control bytes of a file are escaped in what kerf prints") {
     // ESC [2J (clear screen) in a comment, a NUL and a BEL in junk, C1 CSI (U+009B) in a comment.
-    const fs::path file =
-        write_text(kWork / "ctl" / "ctl.nc", std::string("O1000\nG0 X1. (\x1b[2J)\nX2. @\x07@ \0@\nG1 X3 (\xC2\x9B" "31m)\nM30\n", 45));
+    // Twenty ordinary blocks keep the two control bytes under 1 % of the file: a stray NUL in a
+    // program is read and shown escaped (in a file of a few lines it would be refused as binary).
+    const std::string program =
+        "O1000\n" + repeat("G1 X1. Y1.\n", 20) + std::string("G0 X1. (\x1b[2J)\nX2. @\x07@ \0@\nG1 X3 (\xC2\x9B" "31m)\nM30\n", 43);
+    const fs::path file = write_text(kWork / "ctl" / "ctl.nc", program);
     for (const std::string command : {"check", "parse", "fmt"}) {
         INFO(command);
         const auto r = run_kerf_measured(command + " --dialect fanuc-mill " + shell_quote(file), kWork / "ctl" / "out");
