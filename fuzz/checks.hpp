@@ -32,8 +32,8 @@ Broken check_interpreter(std::string_view input);
 // parses losslessly with no more syntax errors than the original.
 Broken check_analyzer(std::string_view input);
 
-// kerf fmt: the output parses losslessly; formatting it again changes nothing (idempotent); when
-// the input has no syntax error, --verify finds the two runs equal.
+// kerf fmt, on what it formats (texts without syntax errors): the output parses losslessly;
+// formatting it again changes nothing (idempotent); --verify finds the two runs equal.
 Broken check_formatter(std::string_view input);
 
 // Machine TOML: the loader returns errors with positions inside the text or a machine; a machine
@@ -43,5 +43,16 @@ Broken check_machine_toml(std::string_view input);
 // Dialect TOML: the loader returns errors with positions inside the text or dialects; each new
 // dialect parses, binds and dry-runs a fixed program with valid events.
 Broken check_dialect_toml(std::string_view input);
+
+// The input decoder (ast/input.hpp), as every reader of files calls it: decode_input and the
+// InputScanner fed the same bytes in pieces (split where the input says) agree on the encoding,
+// the refusal and every problem; a UTF-8 input read is returned byte for byte; a transcoded input
+// without bad sequences encodes back into its own bytes (fmt --write keeps a UTF-16 file as it was);
+// every refusal and note has a message.
+Broken check_input(std::string_view input);
+
+// .kerf.toml (project/config.hpp): parse_config never throws, every problem has a message and a
+// position inside the text (or none), and its text names the file.
+Broken check_kerf_toml(std::string_view input);
 
 }  // namespace kerf::fuzz

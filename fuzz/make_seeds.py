@@ -8,7 +8,10 @@ reference examples carry one), else the guess of its corpus folder (lathe -> fan
 others -> fanuc-mill). Programs are cut to SEED_BYTES at a line end: a dry run of a whole CAM
 program would make every execution slow, and libFuzzer mutates the start of a seed most.
 Sources: fuzz/corpus (already in the target format), ../shared/reference/examples, ../shared/corpus.
-TOML targets: machine/data/*.toml and dialects/data/*.toml, the examples of the schemas.
+TOML targets: machine/data/*.toml and dialects/data/*.toml, the examples of the schemas; for
+kerf_toml, the .kerf.toml files of docs/config.md and tests/. The input target (the decoder) gets
+the program seeds in UTF-8 and transcoded to UTF-16LE/BE (BOM or not) and UTF-32LE, behind its two
+option bytes (line limit 0 = none, split step).
 
 usage: fuzz/make_seeds.py [OUT]
 """
@@ -71,6 +74,22 @@ def main():
         for target in ("grammar", "interpreter", "analyzer", "formatter"):
             write(target, seed)
         count += 1
+        if count % 7 == 0:   # a sample: the decoder does not need every program
+            text = seed[1:4097]
+            write("input", b"\0\x07" + text)
+            try:
+                u = text.decode("utf-8")
+                for enc, bom in (("utf-16-le", b"\xff\xfe"), ("utf-16-be", b""), ("utf-32-le", b"")):
+                    write("input", b"\0\x05" + bom + u.encode(enc))
+            except UnicodeDecodeError:
+                pass
+    for example in (
+        b"dialect = \"fanuc-mill\"\n[check]\ninclude = [\"**/*.nc\"]\n[check.rules]\nK1020 = \"off\"\n",
+        b"[run]\ncall = \"G65 P9010 A1.\"\nset = [\"#100=5\"]\npasses = 2\n[programs]\nlibrary = [\"../lib\"]\n"
+        b"resident = [\"O9000-O9999\"]\n[limits]\nmax_file_bytes = 1000\ntime_limit = 2.5\n",
+        b"[format]\nletter_case = \"upper\"\nspacing = \"none\"\n",
+    ):
+        write("kerf_toml", example)
     for target, folder in (("machine_toml", "machine/data"), ("dialect_toml", "dialects/data")):
         d = os.path.join(ROOT, folder)
         for name in sorted(os.listdir(d)):

@@ -51,6 +51,9 @@ TEST_CASE("fuzz checks hold on the seed corpus and the examples") {
         CHECK(kerf::fuzz::check_interpreter(input).value_or("") == "");
         CHECK(kerf::fuzz::check_analyzer(input).value_or("") == "");
         CHECK(kerf::fuzz::check_formatter(input).value_or("") == "");
+        // The decoder: no line limit / a 40-byte one, pieces of 1 and of 13 bytes.
+        for (const char* options : {"\0\0", "\x28\x0c"})
+            CHECK(kerf::fuzz::check_input(std::string(options, 2) + input.substr(1)).value_or("") == "");
         ++n;
     }
     CHECK(n >= 80);
@@ -70,6 +73,23 @@ TEST_CASE("fuzz regressions of the interpreter, analyzer, formatter and TOML loa
     run_regressions("formatter", kerf::fuzz::check_formatter);
     run_regressions("machine_toml", kerf::fuzz::check_machine_toml);
     run_regressions("dialect_toml", kerf::fuzz::check_dialect_toml);
+    run_regressions("input", kerf::fuzz::check_input);
+    run_regressions("kerf_toml", kerf::fuzz::check_kerf_toml);
+}
+
+// The decoder's target on inputs written for it: UTF-16 both ways with and without BOM, a CRLF
+// split between two pieces, a lone CR at a piece's end, a line just over the limit.
+TEST_CASE("fuzz check of the input decoder holds on hand-made inputs") {
+    using kerf::fuzz::check_input;
+    const std::string u16le("\xFF\xFEG\0""0\0 \0X\0""1\0\n\0", 14);
+    const std::string u16be("\0G\0""0\0 \0X\0""1\0\n", 12);
+    CHECK(check_input(std::string("\0\x01", 2) + u16le).value_or("") == "");
+    CHECK(check_input(std::string("\0\x02", 2) + u16be).value_or("") == "");
+    CHECK(check_input(std::string("\x05\x02", 2) + "G0\r\nX1\r\nY2345678\r").value_or("") == "");
+    CHECK(check_input(std::string("\x05\x03", 2) + "G0\rX1\r\rY2345678\n").value_or("") == "");
+    CHECK(check_input(std::string("\0\x00", 2) + "   \r\n\t").value_or("") == "");
+    const std::string config = "dialect = 3\n[limits]\nmax_file_bytes = -1\n[nope]\n";
+    CHECK(kerf::fuzz::check_kerf_toml(config).value_or("") == "");
 }
 
 TEST_CASE("fuzz regressions stay fixed") {
