@@ -35,9 +35,9 @@ test-sanitize: deps
 	cd $(SANITIZE_DIR) && ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:strict_string_checks=1 \
 	  UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 ctest --output-on-failure -j $(JOBS)
 
-# Installs only the packages that are missing (dpkg-query), without prompts.
-deps:
-	@missing=""; for p in $(PACKAGES); do \
+# Installs the packages of the list $(1) that are missing (dpkg-query), without prompts.
+define install_missing
+	@missing=""; for p in $(1); do \
 	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
@@ -45,18 +45,16 @@ deps:
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
 	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
 	fi
+endef
+
+deps:
+	$(call install_missing,$(PACKAGES))
 
 # The parse benchmark (bench/run.sh), then the dry run against LinuxCNC's rs274
 # (bench/dryrun_vs_rs274.sh; rs274 comes from linuxcnc-uspace, /usr/bin/time from time).
 BENCH_PACKAGES := libbenchmark-dev linuxcnc-uspace time
 bench: deps
-	@missing=""; for p in $(BENCH_PACKAGES); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
-	done; \
-	if [ -n "$$missing" ]; then \
-	  echo "installing:$$missing"; \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
-	fi
+	$(call install_missing,$(BENCH_PACKAGES))
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DKERF_BENCH=ON
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target kerf_bench kerf_bench_dryrun kerf
 	./bench/run.sh $(BUILD_DIR)
@@ -68,13 +66,7 @@ FUZZ_PACKAGES := clang libclang-rt-14-dev
 FUZZ_TARGETS := fuzz_grammar fuzz_interpreter fuzz_analyzer fuzz_formatter fuzz_machine_toml fuzz_dialect_toml \
                 fuzz_input fuzz_kerf_toml
 fuzz: deps
-	@missing=""; for p in $(FUZZ_PACKAGES); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
-	done; \
-	if [ -n "$$missing" ]; then \
-	  echo "installing:$$missing"; \
-	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
-	fi
+	$(call install_missing,$(FUZZ_PACKAGES))
 	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DKERF_FUZZ=ON -DKERF_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 	cmake --build build-fuzz -j $(JOBS) --target $(FUZZ_TARGETS)
 	python3 fuzz/make_seeds.py build-fuzz/seeds
