@@ -86,22 +86,22 @@ std::optional<InputProblem> binary_problem(std::string_view head) {
                         fmt::format("binary data, not an NC program: {} of the first {} bytes are NUL or control "
                                     "bytes; nothing of it was read",
                                     control, head.size()),
-                        "name program files only (or exclude this one in .kerf.toml [check] exclude)"};
+                        "name program files only, or exclude this one in .kerf.toml [check] exclude"};
 }
 
 InputProblem too_large(std::uint64_t size, std::uint64_t limit) {
     return {InputProblemKind::too_large, Severity::error, 0,
             fmt::format("the file is {}, over the limit of {} per file; nothing of it was read", size_text(size),
                         size_text(limit)),
-            "split the program, or raise the limit (--max-file-bytes, or max_file_bytes in .kerf.toml [limits])"};
+            "split the program, or raise the limit with --max-file-bytes or max_file_bytes in .kerf.toml [limits]"};
 }
 
 InputProblem line_too_long(std::uint64_t line, std::uint64_t length, std::uint64_t limit) {
     return {InputProblemKind::line_too_long, Severity::error, static_cast<std::uint32_t>(std::min<std::uint64_t>(line, UINT32_MAX)),
             fmt::format("line {} is {} long, over the limit of {} per line; nothing of the file was read", line,
                         size_text(length), size_text(limit)),
-            "an NC block is a short line: is this a program? Raise the limit with --max-line-bytes (or "
-            "max_line_bytes in .kerf.toml [limits])"};
+            "an NC block is a short line: is this a program? Raise the limit with --max-line-bytes or "
+            "max_line_bytes in .kerf.toml [limits]"};
 }
 
 InputProblem empty_note(bool has_bytes) {

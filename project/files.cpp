@@ -19,10 +19,10 @@ fs::path normal_path(const fs::path& path) {
 
 namespace {
 
-// "PATH:LINE: message (hint)" of the decoder's refusal.
+// "PATH:LINE: message; hint" of the decoder's refusal.
 std::string refusal_text(const fs::path& path, const ast::InputProblem& p) {
     std::string s = p.line > 0 ? fmt::format("{}:{}: {}", path.string(), p.line, p.message) : fmt::format("{}: {}", path.string(), p.message);
-    if (!p.hint.empty()) s += fmt::format(" ({})", p.hint);
+    if (!p.hint.empty()) s += fmt::format("; {}", p.hint);
     return s;
 }
 

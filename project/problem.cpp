@@ -18,7 +18,7 @@ std::vector<Problem> input_problems(const std::string& file, const std::vector<a
                             : p.severity == ast::Severity::warning ? Level::warning
                                                                    : Level::note;
         std::string message = p.message;
-        if (!p.hint.empty()) message += fmt::format(" ({})", p.hint);
+        if (!p.hint.empty()) message += fmt::format("; {}", p.hint);
         const int line = static_cast<int>(p.line);
         out.push_back({level, file, line, line > 0 ? 1 : 0, std::move(message)});
     }

@@ -37,7 +37,7 @@ Expected read_expected(const fs::path& file) {
         } else if (line.starts_with("# program-files ")) {
             std::istringstream words(line.substr(16));
             words >> e.program;
-            for (std::string file; words >> file;) e.program_files.push_back(file);
+            for (std::string name; words >> name;) e.program_files.push_back(name);
         }
         else if (!line.empty() && line[0] != '#') e.findings.push_back(line);
     }
