@@ -7,6 +7,8 @@
 #include <cctype>
 #include <optional>
 
+#include "ast/source.hpp"
+
 namespace kerf::project {
 
 namespace {
@@ -192,14 +194,18 @@ LineKind classify(std::string_view raw, std::string& line) {
 Recognition by_content(std::string_view text) {
     // Whole lines only: a head cut inside a line would judge half a word.
     if (text.size() >= kRecognitionHead)
-        if (const std::size_t last = text.rfind('\n'); last != std::string_view::npos) text = text.substr(0, last + 1);
+        if (const std::size_t cut = ast::last_line_end_before(text, text.size()); cut != std::string_view::npos)
+            text = text.substr(0, cut);
     std::size_t nc = 0, prose = 0, lines = 0;
     std::string buffer;
+    // Lines as the grammar reads them ("\n", "\r\n", a lone "\r": a CR-only program is recognised).
+    ast::LineBreaks breaks(text);
+    std::size_t pos = 0;
     // Stop early on a plain program: kEnoughBlocks NC blocks and no prose decide it.
-    while (!text.empty() && lines < kMaxLines && !(nc >= kEnoughBlocks && prose == 0)) {
-        const std::size_t eol = text.find('\n');
-        const std::string_view line = text.substr(0, eol);
-        text = eol == std::string_view::npos ? std::string_view{} : text.substr(eol + 1);
+    while (pos < text.size() && lines < kMaxLines && !(nc >= kEnoughBlocks && prose == 0)) {
+        const ast::LineBreaks::Line l = breaks.line_from(pos);
+        const std::string_view line = text.substr(pos, l.end - pos);
+        pos = l.next;
         switch (classify(line, buffer)) {
             case LineKind::nc: ++nc, ++lines; break;
             case LineKind::prose: ++prose, ++lines; break;

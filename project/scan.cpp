@@ -5,6 +5,8 @@
 #include <cstring>
 #include <optional>
 
+#include "ast/source.hpp"
+
 namespace kerf::project {
 
 namespace {
@@ -349,10 +351,12 @@ std::vector<ScannedProgram> scan_programs(std::string_view text, const ScanRules
     const bool bom = text.starts_with("\xEF\xBB\xBF");
     bool program_seen = false;   // code since the opening '%' (grammar::ParseState)
     std::size_t pos = 0;
+    // Lines end where the grammar ends them: "\n", "\r\n" or a lone "\r" (ast/source.hpp).
+    ast::LineBreaks breaks(text);
     while (pos < text.size()) {
-        const char* nl = static_cast<const char*>(std::memchr(text.data() + pos, '\n', text.size() - pos));
-        const std::size_t le = nl ? static_cast<std::size_t>(nl - text.data()) : text.size();
-        const std::size_t next = nl ? le + 1 : text.size();
+        const ast::LineBreaks::Line line = breaks.line_from(pos);
+        const std::size_t le = line.end;
+        const std::size_t next = line.next;
         std::size_t p = pos;
         Kind last = Kind::blank;
         while (true) {

@@ -256,6 +256,7 @@ TEST_CASE("bounds: a file with CR-only line ends reads line by line in every com
 // Before: exit 2 and the file's 29 findings vanished from the report.
 TEST_CASE("bounds: kerf check --fix that cannot write the file still reports its findings") {
     const fs::path dir = kWork / "fix";
+    fs::remove_all(dir);   // the folder is counted below
     const fs::path file = write_text(dir / "x.nc", "O1000\nG0 X1. Y2.\nMO6\nM30\n");
     // A file size limit of 0 makes every write to a file fail, for root too (SIGXFSZ ignored: write
     // gets EFBIG). kerf's output goes through a pipe, which the limit does not cover; the exit code

@@ -103,3 +103,14 @@ TEST_CASE("recognise: NC extensions, content for everything else") {
     CHECK_FALSE(program("points.csv", "X,Y,Z\n1.0,2.0,3.0\n4.0,5.0,6.0\n"));
     CHECK_FALSE(program(".kerf.toml", "dialect = \"fanuc-mill\"\n[check]\nexclude = [\"old/**\"]\n"));
 }
+
+TEST_CASE("recognise: a program with CR-only line ends is recognised by its content, as the grammar reads it") {
+    // Six NC blocks on six lines ended by a lone CR (ast/source.hpp LineBreaks), in a file whose
+    // name says nothing: recognised by its content, line by line as with LF line ends.
+    const std::string cr = "O1000\rG21 G90\rG0 X10. Y10.\rG1 Z-1. F100.\rX20.\rM30\r";
+    CHECK(recognize_program("part", cr).reason == "content: 6 NC blocks in the first 6 lines");   // six lines, not one
+    std::string lf = cr;
+    for (char& c : lf)
+        if (c == '\r') c = '\n';
+    CHECK(recognize_program("part", lf).reason == "content: 6 NC blocks in the first 6 lines");
+}
