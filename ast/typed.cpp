@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "ast/diagnostic_ids.hpp"
 #include "dialects/functions.hpp"
 
 namespace kerf::ast {
@@ -193,7 +194,7 @@ TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bo
         if (facts.second_n) {
             const Token& n = tree.tokens[facts.second_n];
             file.diagnostics_.push_back(
-                {n.range(), Severity::error, "S0302",
+                {n.range(), Severity::error, ast::diagnostic_id::second_sequence_number,
                  fmt::format("second sequence number '{}' in one block", tree.spelling(n)),
                  "a block has one N word, at its start; remove this one or split the block"});
         }
@@ -211,7 +212,7 @@ TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bo
         if (call && call->packed && l) {
             const Token& p = tree.tokens[call->p_token];
             file.diagnostics_.push_back(
-                {p.range(), Severity::error, "S0301",
+                {p.range(), Severity::error, ast::diagnostic_id::packed_p_with_l,
                  fmt::format("M98 '{}' packs the repeat count into P and also has L", tree.spelling(p)),
                  "use one form: M98 P<repeats><4-digit program> or M98 P<program> L<repeats>"});
         }

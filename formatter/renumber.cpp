@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "ast/diagnostic_ids.hpp"
 #include "dialects/functions.hpp"
 
 namespace kerf::formatter {
@@ -68,7 +69,7 @@ private:
     }
 
     void refuse(std::uint32_t block, ast::Range range, std::string message, std::string hint) {
-        problems_.push_back({range, Severity::error, "F0001",
+        problems_.push_back({range, Severity::error, ast::diagnostic_id::renumber_refused,
                              fmt::format("cannot renumber: {} in block '{}'", message, quote(block)), std::move(hint)});
     }
 

@@ -7,6 +7,7 @@
 
 #include <boost/spirit/home/x3.hpp>
 
+#include "ast/diagnostic_ids.hpp"
 #include "grammar/expression_def.hpp"
 
 namespace kerf::grammar {
@@ -81,7 +82,7 @@ void fill_value(Builder& b, ast::Token& t, std::string_view written) {
             const bool lenient = b.rules.decimal_comma_lenient;
             std::string fixed(written);
             for (char& c : fixed) if (c == ',') c = '.';
-            b.diagnose(n.begin, n.end, lenient ? Severity::warning : Severity::error, "S0105",
+            b.diagnose(n.begin, n.end, lenient ? Severity::warning : Severity::error, ast::diagnostic_id::decimal_comma,
                        fmt::format("decimal comma in '{}': FANUC controls read only '.' as the decimal point",
                                    written),
                        fmt::format("write '{}'", fixed));
@@ -108,7 +109,7 @@ struct make_word_t {
         fill_value<Ctx>(b, t, std::string_view(begin, static_cast<std::size_t>(end - begin)));
         b.last_error_mergeable = false;
         if (kind == TokenKind::comma_word && !b.rules.is_comma_word(t.letter)) {
-            b.diagnose(begin, end, Severity::error, "S0110",
+            b.diagnose(begin, end, Severity::error, ast::diagnostic_id::unknown_comma_word,
                        fmt::format("',{}' is not a comma word of this dialect (allowed: {})", t.letter,
                                    b.rules.comma_words.empty() ? std::string("none") : b.rules.comma_words),
                        "remove the comma, or choose the dialect that has this direct-drawing word");
@@ -197,12 +198,12 @@ struct paren_comment_parser : builder_primitive<paren_comment_parser> {
         ast::Token& t = b.add_token(TokenKind::comment, &*first, &*first + (p - first));
         if (!closed) {
             t.flags |= ast::token_flags::unclosed;
-            b.diagnose(&*first, &*first + (p - first), Severity::error, "S0201",
+            b.diagnose(&*first, &*first + (p - first), Severity::error, ast::diagnostic_id::unclosed_comment,
                        "comment is not closed: ')' is missing before the end of the line",
                        "add ')' where the comment ends; a comment cannot continue on the next line");
         }
         if (nested_at) {
-            b.diagnose(nested_at, nested_at + 1, Severity::warning, "S0202",
+            b.diagnose(nested_at, nested_at + 1, Severity::warning, ast::diagnostic_id::nested_comment,
                        "'(' inside a comment: FANUC comments cannot be nested and end at the first ')'",
                        "replace the inner parentheses, e.g. with '[' and ']' or '-'");
         }
@@ -374,7 +375,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             b.too_deep_at = nullptr;
             const char* r = end;
             while (r > p && *(r - 1) == '\r') --r;
-            b.add_error(begin, r, "S0114",
+            b.add_error(begin, r, ast::diagnostic_id::nesting_too_deep,
                         fmt::format("expression nested more than {} levels deep", Builder::kMaxExpressionDepth),
                         "FANUC allows 5 levels of brackets; split the expression with #variables", false);
             return finish(r);
@@ -390,7 +391,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                     std::string fixed(begin, r);
                     for (std::size_t i = 1; i < fixed.size(); ++i)
                         if (fixed[i] == 'O' || fixed[i] == 'o') fixed[i] = '0';
-                    b.add_error(begin, r, "S0103",
+                    b.add_error(begin, r, ast::diagnostic_id::letter_o_for_zero,
                                 fmt::format("letter O in '{}' where the digit zero is meant", view(begin, r)),
                                 fmt::format("write '{}'", fixed), false);
                     return finish(r);
@@ -400,7 +401,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             if (q < end && (*q == '?' || *q == '_')) {
                 const char* r = q;
                 while (r < end && (*r == '?' || *r == '_')) ++r;
-                b.add_error(begin, r, "S0104",
+                b.add_error(begin, r, ast::diagnostic_id::placeholder_value,
                             fmt::format("placeholder '{}': the value of {} is missing", view(begin, r), L),
                             fmt::format("replace '{}' with the value of {}", view(q, r), L), false);
                 return finish(r);
@@ -416,14 +417,14 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                         // N10... : an ellipsis of a printed listing, not a number.
                         const char* e = s;
                         while (e < end && e[0] == '.') ++e;
-                        b.add_error(begin, e, "S0113",
+                        b.add_error(begin, e, ast::diagnostic_id::listing_ellipsis,
                                     fmt::format("'{}' ends in an ellipsis: a listing's omission mark, not program text",
                                                 view(begin, e)),
                                     "write the omitted blocks, or put the note in a comment", false);
                         return finish(e);
                     }
                     while (s < end && (*s == '.' || is_digit(*s))) ++s;
-                    b.add_error(begin, s, "S0102",
+                    b.add_error(begin, s, ast::diagnostic_id::malformed_number,
                                 fmt::format("malformed number in '{}': more than one decimal point", view(begin, s)),
                                 "keep one decimal point, e.g. " + std::string(begin, n.end) + "", false);
                     return finish(s);
@@ -435,7 +436,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             while (run < end && is_letter(*run)) ++run;
             if (run - begin >= 3) {
                 const char* r = run;
-                b.add_error(begin, r, "S0106",
+                b.add_error(begin, r, ast::diagnostic_id::unknown_word,
                             fmt::format("'{}' is neither an address word nor a macro keyword", view(begin, r)),
                             b.rules.macro_b ? "put text in a comment '( ... )', or check the spelling of the keyword"
                                             : "put text in a comment; this dialect has no macro statements",
@@ -449,7 +450,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             t.flags |= ast::token_flags::value_none;
             b.last_error_mergeable = false;
             if (L != 'N') {
-                b.diagnose(begin, q, Severity::error, "S0101", fmt::format("address {} has no value", L),
+                b.diagnose(begin, q, Severity::error, ast::diagnostic_id::address_without_value, fmt::format("address {} has no value", L),
                            fmt::format("write the value right after {} (e.g. {}0.) or remove the letter", L, L));
             }
             return finish(q);
@@ -464,7 +465,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
                 t.letter = 'O';
                 t.payload = 0;
                 for (const char* d = p + 1; d < s; ++d) t.payload = t.payload * 10 + (*d - '0');
-                b.diagnose(begin, p + 1, Severity::warning, "S0112",
+                b.diagnose(begin, p + 1, Severity::warning, ast::diagnostic_id::zero_for_letter_o,
                            fmt::format("'{}' reads as program number O{}: the letter O was written as the digit 0",
                                        view(begin, s), view(p + 1, s)),
                            fmt::format("write 'O{}'", view(p + 1, s)));
@@ -476,7 +477,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
         if (*p == '.' && p + 2 < end && p[1] == '.' && p[2] == '.') {
             const char* e = p;
             while (e < end && *e == '.') ++e;
-            b.add_error(begin, e, "S0113", "'...' marks omitted blocks in a listing; it is not program text",
+            b.add_error(begin, e, ast::diagnostic_id::listing_ellipsis, "'...' marks omitted blocks in a listing; it is not program text",
                         "write the omitted blocks, or put the note in a comment", false);
             return finish(e);
         }
@@ -486,7 +487,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             NumberLit n;
             if (scan_number(s, end, true, false, n)) {
                 while (s < end && (*s == '.' || is_digit(*s))) ++s;
-                b.add_error(begin, s, "S0107",
+                b.add_error(begin, s, ast::diagnostic_id::value_without_address,
                             fmt::format("value '{}' has no address letter", view(begin, s)),
                             "every value needs its address (X, Z, F, ...) in front; is a letter missing?", true);
                 return finish(s);
@@ -496,17 +497,17 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             // '//' comments belong to Syntec and other PC controls; FANUC reads '/' as block delete.
             const char* r = end;
             while (r > p && *(r - 1) == '\r') --r;
-            b.add_error(begin, r, "S0111", "'//' comment: FANUC controls have no '//' comments",
+            b.add_error(begin, r, ast::diagnostic_id::slash_comment, "'//' comment: FANUC controls have no '//' comments",
                         "write the comment in parentheses: ( ... )", false);
             return finish(r);
         }
         if (*p == '/' && !b.last_error_mergeable) {
-            b.add_error(begin, p + 1, "S0108", "block delete '/' must be the first character of the block",
+            b.add_error(begin, p + 1, ast::diagnostic_id::misplaced_block_delete, "block delete '/' must be the first character of the block",
                         "move '/' to the start of the block, or remove it", false);
             return finish(p + 1);
         }
         if (*p == ')' && !b.last_error_mergeable) {
-            b.add_error(begin, p + 1, "S0203", "')' without '(': the comment has no start",
+            b.add_error(begin, p + 1, ast::diagnostic_id::unmatched_close_paren, "')' without '(': the comment has no start",
                         "add '(' where the comment begins", false);
             return finish(p + 1);
         }
@@ -514,7 +515,7 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
         const char* r = p + 1;
         if (static_cast<unsigned char>(*p) >= 0x80)
             while (r < end && static_cast<unsigned char>(*r) >= 0x80) ++r;
-        b.add_error(begin, r, "S0109", fmt::format("unexpected '{}'", view(begin, r)),
+        b.add_error(begin, r, ast::diagnostic_id::stray_text, fmt::format("unexpected '{}'", view(begin, r)),
                     b.rules.paren_comments ? "text must be inside a comment '( ... )'" : "remove it", true);
         return finish(r);
     }

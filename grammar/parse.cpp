@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "ast/diagnostic_ids.hpp"
 #include "ast/display.hpp"
 #include "grammar/block_def.hpp"
 
@@ -171,7 +172,7 @@ private:
         x3::parse(it, line_end, x3::with<builder_tag>(std::ref(builder_))[block_detail::block_body]);
         if (it < line_end && !(*it == ';' && builder_.rules.semicolon == dialects::SemicolonRole::end_of_block)) {
             // The item loop only stops at ';' or the line end; anything else is a grammar bug.
-            builder_.add_error(it, line_end, "S0199", "internal: the grammar stopped here", "", false);
+            builder_.add_error(it, line_end, ast::diagnostic_id::grammar_stopped, "internal: the grammar stopped here", "", false);
             it = line_end;
         }
         builder_.depth = 0;
@@ -191,7 +192,7 @@ private:
             const std::string shown = ast::shorten(text, 80);   // on a UTF-8 character boundary
             if (text.back() == ')') {
                 // Prose that ends in ')' is a comment that lost its '(' (seed 000, N040).
-                d.code = "S0203";
+                d.code = ast::diagnostic_id::unmatched_close_paren;
                 d.message = fmt::format("text '{}' ends with ')' but has no '(': a comment without its start", shown);
                 d.hint = "add '(' where the comment begins";
             } else {
@@ -221,7 +222,7 @@ ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules) {
         // Offsets are 32-bit; a 4 GiB NC program is not a program.
         tree.text = std::string();
         tree.blocks.push_back({});
-        tree.diagnostics.push_back({{0, 0}, ast::Severity::error, "S0001",
+        tree.diagnostics.push_back({{0, 0}, ast::Severity::error, ast::diagnostic_id::file_too_large,
                                     "file is too large (4 GiB or more)", "split the file"});
         return tree;
     }
@@ -242,7 +243,7 @@ ParseState parse_into(ast::SyntaxTree& tree, std::string_view text, const dialec
     if (text.size() >= 0xFFFFFFF0u) {
         tree.text.clear();
         tree.blocks.push_back({});
-        tree.diagnostics.push_back({{0, 0}, ast::Severity::error, "S0001", "piece too large (4 GiB or more)", "split the file"});
+        tree.diagnostics.push_back({{0, 0}, ast::Severity::error, ast::diagnostic_id::file_too_large, "piece too large (4 GiB or more)", "split the file"});
         return {false, start.program_seen, true};
     }
     return Driver(tree, rules).run(start);

@@ -2,6 +2,7 @@
 #include <bitset>
 
 #include "analyzer/rules/common.hpp"
+#include "dialects/alarms.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -130,10 +131,10 @@ void add_macro(Registry& r) {
          "#2=#1+10.\nG01 X#2", "#1=5.\n#2=#1+10.\nG01 X#2", "dialects.md §3.7; [FANUC] vacant variables"})));
     r.add(with_alarms(static_rule<DivisionByZero>(rule("K4002", "division-by-zero", S::error,
         {"A division (or MOD) by zero, written or found when the program runs.", "The control stops with alarm 112.",
-         "#1=10/0", "#1=10/2", "interpreter/macro/evaluate.hpp M0112"})), {{112, 112}}));
+         "#1=10/0", "#1=10/2", "interpreter/macro/evaluate.hpp M0112"})), {{alarms::macro_division_by_zero, alarms::macro_division_by_zero}}));
     r.add(with_alarms(static_rule<WriteReadOnly>(rule("K4003", "write-read-only-variable", S::error,
         {"An assignment to #0 or, found by the dry run, to a read-only system variable.",
-         "The control stops with alarm 116.", "#0=1", "#100=1", "interpreter/macro/evaluate.hpp M0116"})), {{116, 116}}));
+         "The control stops with alarm 116.", "#0=1", "#100=1", "interpreter/macro/evaluate.hpp M0116"})), {{alarms::macro_write_protected, alarms::macro_write_protected}}));
 }
 
 }  // namespace kerf::analyzer::rules

@@ -5,6 +5,8 @@
 #include <set>
 
 #include "analyzer/rules/common.hpp"
+#include "ast/diagnostic_ids.hpp"
+#include "dialects/alarms.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -221,7 +223,7 @@ private:
         const std::uint32_t end = p.end_block < tree.block_count() ? tree.blocks[p.end_block].begin
                                                                     : static_cast<std::uint32_t>(tree.text.size());
         for (const ast::Diagnostic& d : tree.diagnostics)
-            if (d.code == "S0113" && d.range.begin >= begin && d.range.begin < end) return true;
+            if (d.code == ast::diagnostic_id::listing_ellipsis && d.range.begin >= begin && d.range.begin < end) return true;
         if (p.number) return false;
         return std::none_of(tree.blocks.begin(), tree.blocks.end(),
                             [](const ast::Block& b) { return b.kind == ast::BlockKind::percent; });
@@ -321,7 +323,7 @@ void add_references(Registry& r) {
         {"G70–G73 P/Q, GOTO n or M98 Q n to a sequence number the program does not have.",
          "The control stops with alarm 060 (cycles), 128 (GOTO) or 078 (M98 Q) in the middle of the job.",
          "G71 P100 Q200 U0.5 W0.1 F0.3\nN100 G00 X20.\nN210 G01 Z-10.", "G71 P100 Q200 U0.5 W0.1 F0.3\nN100 G00 X20.\nN200 G01 Z-10.",
-         "cycles.md §5; dialects.md §3.6, §3.7"})), {{60, 60}, {128, 128}}));
+         "cycles.md §5; dialects.md §3.6, §3.7"})), {{alarms::profile_sequence, alarms::profile_sequence}, {alarms::goto_target, alarms::goto_target}}));
     r.add(static_rule<AmbiguousLabel>(rule("K3002", "ambiguous-label", S::warning,
         {"A jump (P/Q, GOTO, M98 Q) to a sequence number that several blocks carry.",
          "The control searches from the top and takes the first block: maybe not the one you meant.",
@@ -331,11 +333,11 @@ void add_references(Registry& r) {
         {"M98 P, G65 P or G66 P to a program that is in no file kerf can reach: this file, the files of its "
          "folder (by the O numbers inside them) and the .kerf.toml's [programs] library folders.",
          "The control stops with alarm 078 when the call is reached.", "M98 P1234", "M98 P1000 (O1000 in a file of the folder)",
-         "dialects.md §3.6"})), {{78, 78}}));
+         "dialects.md §3.6"})), {{alarms::program_not_found, alarms::program_not_found}}));
     r.add(with_alarms(static_rule<LoopsPairs>(rule("K3004", "loop-mismatch", S::error,
         {"DO m without END m, END m without DO m, loops crossing, or a loop number other than 1–3.",
          "The control stops with alarm 124 or 126.", "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 2",
-         "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "dialects.md §3.7"})), {{124, 124}, {126, 126}}));
+         "WHILE [#1 LT 3] DO 1\n#1=#1+1\nEND 1", "dialects.md §3.7"})), {{alarms::loop_nesting, alarms::loop_nesting}, {alarms::loop_number, alarms::loop_number}}));
     r.add(static_rule<LoopsDepth>(rule("K3005", "loop-nesting-too-deep", S::error,
         {"WHILE/DO loops nested more than 3 deep.", "The control stops with alarm 124.",
          "DO1 DO2 DO3 DO1 (four levels)", "three levels, the fourth in a G65 macro", "dialects.md §3.7"})));

@@ -26,6 +26,7 @@
 #include <string>
 
 #include "ast/diagnostic.hpp"
+#include "ast/diagnostic_ids.hpp"
 #include "ast/syntax.hpp"
 #include "interpreter/macro/value.hpp"
 #include "interpreter/macro/variables.hpp"
@@ -62,14 +63,14 @@ struct Options {
 
 // Stable error codes: "M0" + the FANUC alarm number; M09xx are kerf's own.
 namespace codes {
-inline constexpr const char* overflow = "M0111";          // alarm 111
-inline constexpr const char* division_by_zero = "M0112";  // alarm 112
-inline constexpr const char* format = "M0114";            // alarm 114
-inline constexpr const char* variable_number = "M0115";   // alarm 115
-inline constexpr const char* write_protected = "M0116";   // alarm 116
-inline constexpr const char* nesting = "M0118";           // alarm 118
-inline constexpr const char* argument = "M0119";          // alarm 119
-inline constexpr const char* bad_tree = "M0901";          // not an expression the grammar makes
+inline constexpr const char* overflow = ast::diagnostic_id::macro_overflow;          // alarm 111
+inline constexpr const char* division_by_zero = ast::diagnostic_id::macro_division_by_zero;  // alarm 112
+inline constexpr const char* format = ast::diagnostic_id::macro_format;            // alarm 114
+inline constexpr const char* variable_number = ast::diagnostic_id::macro_variable_number;   // alarm 115
+inline constexpr const char* write_protected = ast::diagnostic_id::macro_write_protected;   // alarm 116
+inline constexpr const char* nesting = ast::diagnostic_id::macro_bracket_nesting;           // alarm 118
+inline constexpr const char* argument = ast::diagnostic_id::macro_argument;          // alarm 119
+inline constexpr const char* bad_tree = ast::diagnostic_id::macro_bad_tree;          // not an expression the grammar makes
 }  // namespace codes
 
 struct Error {
