@@ -85,6 +85,30 @@ struct LexicalRules {
     char incremental_axis_of(char letter) const;
 };
 
+// One clue of dialect detection (dialects/SCHEMA.md `[detect]`; grammar/detect.cpp weighs them).
+struct DetectClue {
+    enum class Kind : std::uint8_t { code, word, absent_word, comment, header, variable, lexical };
+    Kind kind = Kind::code;
+    char letter = 0;                 // code: 'G' / 'M'; word, absent_word: the address letter
+    CodeKey key = 0;                 // code
+    std::string spelling;            // what the explanation quotes: "G50 S", "word U", "'::' comment"
+    std::vector<std::pair<char, std::optional<double>>> with;   // code: words the block must have ("P0": P = 0)
+    std::string with_any;            // code: one of these letters too; absent_word: the file has one of them
+    std::string without;             // code: none of these letters in the block
+    std::string text;                // comment: the prefix; header: the text; lexical: the observation
+    std::int64_t from = 0, to = 0;   // variable: #from .. #to
+    int weight = 0;                  // points for the first occurrence (negative: evidence against)
+    std::string proves;              // what the clue proves, for the explanation
+    bool own = true;                 // false: a base's clue in an overlay's combination
+    int line = 0, column = 0;        // in the data file, for errors found once the dialect is complete
+};
+
+struct DetectRules {
+    std::vector<DetectClue> clues;
+    bool needs_own = false;   // an overlay's combination: a candidate only when its own clues score
+    bool fallback = false;    // `default = true`: the dialect of files without evidence
+};
+
 class Dialect {
 public:
     std::string id;
@@ -92,6 +116,8 @@ public:
     MachineKind machine = MachineKind::lathe;
     std::string reference;
     std::vector<std::string> overlays;   // ids of the overlays applied, in order
+    std::vector<std::string> bases;      // `base` inheritance: the dialect this one derives from, its base, ...
+    DetectRules detect;                  // [detect]: the evidence that proves this dialect
     LexicalRules lexical;
 
     const CodeInfo* code(char letter, CodeKey key) const;
@@ -128,15 +154,33 @@ struct LoadError {
     int column = 0;
 };
 
-// A parsed data file: either a base dialect or an overlay.
+// `[[patch]]` in a derived dialect: single fields of an inherited code.
+struct CodePatch {
+    char letter = 'G';
+    CodeKey key = 0;
+    std::string spelling;
+    CodeInfo fields;                 // the values of the keys below
+    std::vector<std::string> keys;   // the keys the patch sets ("reference", "notes", ...)
+    int line = 0, column = 0;
+};
+
+// A parsed data file: a whole dialect, a dialect derived from another (`base`), or an overlay.
 struct DialectFile {
     Dialect dialect;
     bool overlay = false;
     std::vector<std::string> applies_to;
     std::vector<std::string> combined_ids;
-    // Lexical keys present in an overlay file (only these override the base).
+    // Lexical keys present in an overlay or derived file (only these override the base).
     std::vector<std::string> lexical_keys_set;
     LexicalRules lexical_overrides;
+    // `base = "id"`: the dialect is its base's tables with `remove`, the file's codes and `patch`.
+    std::string base;
+    bool machine_set = false;                                    // `machine` given (else the base's)
+    std::vector<std::pair<std::string, std::pair<int, int>>> remove;   // spelling, line/column
+    std::vector<CodePatch> patches;
+    bool detect_set = false;       // a [detect] table (else a derived dialect takes its base's)
+    bool detect_inherit = false;   // [detect] inherit = true: the base's clues and these
+    int base_line = 0, base_column = 0;
 };
 
 struct LoadResult {
@@ -150,6 +194,15 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
 // Base + overlay → combined dialect (spinner-lathe-a = fanuc-lathe-a + spinner).
 Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::string combined_id);
 
+// Base + derived file → the derived dialect (fanuc-lathe-b = fanuc-lathe-a with B's differences);
+// errors for a `remove` or `[[patch]]` code the base does not have. `source_name` is for messages.
+Dialect derive_dialect(const Dialect& base, const DialectFile& file, std::string_view source_name,
+                       std::vector<LoadError>& errors);
+
+// A complete dialect's [detect] clues checked against its tables: a code clue with a positive
+// weight must name a code of the dialect (evidence for a code it lacks proves nothing).
+std::vector<LoadError> check_detect(const Dialect& dialect, std::string_view source_name);
+
 
 class Registry {
 public:
@@ -162,6 +215,7 @@ public:
     std::span<const DialectFile> overlay_files() const { return overlays_; }
 
 private:
+    std::vector<LoadError> add_derived(DialectFile file, std::string_view source_name);
     std::deque<Dialect> dialects_;   // a deque keeps pointers stable as dialects are added
     std::vector<DialectFile> overlays_;
 };

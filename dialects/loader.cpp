@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdlib>
 
 #include <toml++/toml.h>
 
@@ -100,16 +101,19 @@ FunctionId read_function(Reader& r, const toml::table& t, std::string_view where
     return {};
 }
 
-std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, std::size_t index) {
-    const std::string where = fmt::format("{}[{}]", letter == 'G' ? "g" : "m", index);
+// A [[g]]/[[m]] table, or with `partial` a [[patch]] table (only `code` required; letter 0: either).
+std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, const std::string& where,
+                                  bool partial = false) {
     CodeInfo info;
-    info.letter = letter;
     info.spelling = r.string(t, "code", where, true);
     const auto parsed = parse_code_spelling(info.spelling);
-    if (!parsed || parsed->first != letter) {
-        r.error(t.get("code"), fmt::format("{}.code: '{}' is not a {} code", where, info.spelling, letter));
+    if (!parsed || (parsed->first != 'G' && parsed->first != 'M') || (letter && parsed->first != letter)) {
+        r.error(t.get("code"), fmt::format("{}.code: '{}' is not a {} code", where, info.spelling,
+                                           letter ? std::string(1, letter) : std::string("G or M")));
         return std::nullopt;
     }
+    letter = parsed->first;
+    info.letter = letter;
     info.key = parsed->second;
     const std::string label = fmt::format("{} ({})", where, info.spelling);
     r.check_keys(t, {"code", "aliases", "group", "modal", "default", "function", "words", "parameter_words", "required", "required_one_of",
@@ -118,10 +122,10 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     info.aliases = r.strings(t, "aliases", label);
     for (const std::string& alias : info.aliases)
         if (!parse_code_spelling(alias)) r.error(t.get("aliases"), fmt::format("{}.aliases: bad code '{}'", label, alias));
-    info.group = r.string(t, "group", label, letter == 'G');
-    info.modal = r.boolean(t, "modal", label, false, letter == 'G');
+    info.group = r.string(t, "group", label, letter == 'G' && !partial);
+    info.modal = r.boolean(t, "modal", label, false, letter == 'G' && !partial);
     info.power_on_default = r.boolean(t, "default", label, false);
-    info.function = read_function(r, t, label);
+    if (!partial || t.contains("function")) info.function = read_function(r, t, label);
     info.words = r.strings(t, "words", label);
     for (const std::string& w : r.strings(t, "parameter_words", label)) {
         if (w.size() != 1) r.error(t.get("parameter_words"), fmt::format("{}.parameter_words: '{}' is not one letter", label, w));
@@ -146,9 +150,9 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     }
     info.availability = parse_availability(r, t, label);
     info.availability_note = r.string(t, "availability_note", label, false);
-    info.en = r.string(t, "en", label, true);
-    info.ru = r.string(t, "ru", label, true);
-    info.reference = r.string(t, "reference", label, true);
+    info.en = r.string(t, "en", label, !partial);
+    info.ru = r.string(t, "ru", label, !partial);
+    info.reference = r.string(t, "reference", label, !partial);
     info.notes = r.string(t, "notes", label, false);
     return info;
 }
@@ -233,9 +237,217 @@ std::vector<CodeInfo> read_codes(Reader& r, const toml::table& root, char letter
             r.error(&(*a)[i], fmt::format("{}[{}]: expected a table", key, i));
             continue;
         }
-        if (auto info = read_code(r, *t, letter, i)) out.push_back(std::move(*info));
+        if (auto info = read_code(r, *t, letter, fmt::format("{}[{}]", key, i))) out.push_back(std::move(*info));
     }
     return out;
+}
+
+// The array of tables under `key` (each item a table), or none; errors for anything else.
+template <class F>
+void each_table(Reader& r, const toml::table& t, std::string_view key, std::string_view where, F&& f) {
+    const toml::node* n = t.get(key);
+    if (!n) return;
+    const toml::array* a = n->as_array();
+    if (!a) {
+        r.error(n, fmt::format("{}.{}: expected an array of tables", where, key));
+        return;
+    }
+    for (std::size_t i = 0; i < a->size(); ++i) {
+        if (const toml::table* item = (*a)[i].as_table())
+            f(*item, fmt::format("{}.{}[{}]", where, key, i));
+        else
+            r.error(&(*a)[i], fmt::format("{}.{}[{}]: expected a table", where, key, i));
+    }
+}
+
+// `remove = ["G32", ...]`: spellings with their positions.
+void read_remove(Reader& r, const toml::table& root, DialectFile& file) {
+    const toml::node* n = root.get("remove");
+    if (!n) return;
+    const toml::array* a = n->as_array();
+    if (!a) {
+        r.error(n, "remove: expected an array of code spellings");
+        return;
+    }
+    for (const toml::node& item : *a) {
+        const auto v = item.value<std::string>();
+        if (!v || !parse_code_spelling(*v)) {
+            r.error(&item, "remove: expected code spellings such as \"G50\"");
+            continue;
+        }
+        file.remove.push_back({*v, {static_cast<int>(item.source().begin.line), static_cast<int>(item.source().begin.column)}});
+    }
+}
+
+void read_patches(Reader& r, const toml::table& root, DialectFile& file) {
+    each_table(r, root, "patch", "top level", [&](const toml::table& t, const std::string& where) {
+        const auto info = read_code(r, t, 0, where, true);
+        if (!info) return;
+        CodePatch p;
+        p.letter = info->letter;
+        p.key = info->key;
+        p.spelling = info->spelling;
+        p.fields = *info;
+        for (const auto& [key, node] : t)
+            if (key.str() != "code") p.keys.emplace_back(key.str());
+        p.line = static_cast<int>(t.source().begin.line);
+        p.column = static_cast<int>(t.source().begin.column);
+        file.patches.push_back(std::move(p));
+    });
+}
+
+// One [detect] entry's weight and proves (both required).
+bool read_weight(Reader& r, const toml::table& t, const std::string& where, DetectClue& c) {
+    const toml::node* w = t.get("weight");
+    const auto v = w ? w->value<std::int64_t>() : std::nullopt;
+    if (!v || *v == 0 || *v < -50 || *v > 50) {
+        r.error(w ? w : &t, fmt::format("{}.weight: expected an integer from -50 to 50, not 0", where));
+        return false;
+    }
+    c.weight = static_cast<int>(*v);
+    c.proves = r.string(t, "proves", where, true);
+    c.line = static_cast<int>(t.source().begin.line);
+    c.column = static_cast<int>(t.source().begin.column);
+    return true;
+}
+
+std::string one_letter(Reader& r, const toml::table& t, std::string_view key, const std::string& where) {
+    const std::string s = r.string(t, key, where, true);
+    if (s.size() == 1 && s[0] >= 'A' && s[0] <= 'Z') return s;
+    if (!s.empty()) r.error(t.get(key), fmt::format("{}.{}: '{}' is not one upper-case letter", where, key, s));
+    return {};
+}
+
+// `with = ["S", "P0"]`: a letter, optionally with the value the word must have.
+bool read_with(Reader& r, const toml::table& t, const std::string& where, DetectClue& c) {
+    for (const std::string& w : r.strings(t, "with", where)) {
+        if (w.empty() || w[0] < 'A' || w[0] > 'Z') {
+            r.error(t.get("with"), fmt::format("{}.with: '{}' is not a letter with an optional value", where, w));
+            return false;
+        }
+        std::optional<double> value;
+        if (w.size() > 1) {
+            char* end = nullptr;
+            const double v = std::strtod(w.c_str() + 1, &end);
+            if (end != w.c_str() + w.size()) {
+                r.error(t.get("with"), fmt::format("{}.with: '{}' is not a letter with an optional value", where, w));
+                return false;
+            }
+            value = v;
+        }
+        c.with.emplace_back(w[0], value);
+    }
+    return true;
+}
+
+std::string letters_text(std::string_view letters) {
+    std::string out;
+    for (const char L : letters) out += (out.empty() ? "" : "/") + std::string(1, L);
+    return out;
+}
+
+void read_detect(Reader& r, const toml::table& root, DialectFile& file) {
+    const toml::node* n = root.get("detect");
+    if (!n) return;
+    const toml::table* t = n->as_table();
+    if (!t) {
+        r.error(n, "detect: expected a table");
+        return;
+    }
+    file.detect_set = true;
+    DetectRules& rules = file.dialect.detect;
+    r.check_keys(*t, {"default", "inherit", "codes", "words", "comments", "headers", "variables", "lexical"}, "detect");
+    rules.fallback = r.boolean(*t, "default", "detect", false);
+    file.detect_inherit = r.boolean(*t, "inherit", "detect", false);
+    each_table(r, *t, "codes", "detect", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"code", "with", "with_any", "without", "weight", "proves"}, where);
+        DetectClue c;
+        c.kind = DetectClue::Kind::code;
+        const std::string code = r.string(e, "code", where, true);
+        const auto parsed = parse_code_spelling(code);
+        if (!parsed || (parsed->first != 'G' && parsed->first != 'M')) {
+            r.error(e.get("code"), fmt::format("{}.code: '{}' is not a G or M code", where, code));
+            return;
+        }
+        c.letter = parsed->first;
+        c.key = parsed->second;
+        if (!read_with(r, e, where, c) || !read_weight(r, e, where, c)) return;
+        c.with_any = r.letters(e, "with_any", where);
+        c.without = r.letters(e, "without", where);
+        c.spelling = code;
+        for (const std::string& w : r.strings(e, "with", where)) c.spelling += " " + w;
+        if (!c.with_any.empty()) c.spelling += " " + letters_text(c.with_any);
+        if (!c.without.empty()) c.spelling += " without " + letters_text(c.without);
+        rules.clues.push_back(std::move(c));
+    });
+    each_table(r, *t, "words", "detect", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"letter", "absent", "given", "weight", "proves"}, where);
+        DetectClue c;
+        const bool absent = e.contains("absent");
+        if (absent == e.contains("letter")) {
+            r.error(&e, fmt::format("{}: give either `letter` (the word is used) or `absent` (it never is)", where));
+            return;
+        }
+        c.kind = absent ? DetectClue::Kind::absent_word : DetectClue::Kind::word;
+        const std::string L = one_letter(r, e, absent ? "absent" : "letter", where);
+        if (L.empty() || !read_weight(r, e, where, c)) return;
+        c.letter = L[0];
+        c.with_any = r.letters(e, "given", where);
+        if (absent && c.with_any.empty()) {
+            r.error(&e, fmt::format("{}: `absent` needs `given`, the letters the file must use (a file without "
+                                    "words proves nothing)", where));
+            return;
+        }
+        c.spelling = absent ? fmt::format("no {} word ({} used)", L, letters_text(c.with_any)) : "word " + L;
+        rules.clues.push_back(std::move(c));
+    });
+    each_table(r, *t, "comments", "detect", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"prefix", "weight", "proves"}, where);
+        DetectClue c;
+        c.kind = DetectClue::Kind::comment;
+        c.text = r.string(e, "prefix", where, true);
+        if (c.text.empty() || !read_weight(r, e, where, c)) return;
+        c.spelling = fmt::format("'{}' comment", c.text);
+        rules.clues.push_back(std::move(c));
+    });
+    each_table(r, *t, "headers", "detect", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"contains", "weight", "proves"}, where);
+        DetectClue c;
+        c.kind = DetectClue::Kind::header;
+        c.text = r.string(e, "contains", where, true);
+        if (c.text.empty() || !read_weight(r, e, where, c)) return;
+        c.spelling = fmt::format("header comment with \"{}\"", c.text);
+        rules.clues.push_back(std::move(c));
+    });
+    each_table(r, *t, "variables", "detect", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"from", "to", "weight", "proves"}, where);
+        DetectClue c;
+        c.kind = DetectClue::Kind::variable;
+        const auto from = e.get("from") ? e.get("from")->value<std::int64_t>() : std::nullopt;
+        const auto to = e.get("to") ? e.get("to")->value<std::int64_t>() : std::nullopt;
+        if (!from || !to || *from < 0 || *to < *from) {
+            r.error(&e, fmt::format("{}: expected integers from <= to", where));
+            return;
+        }
+        if (!read_weight(r, e, where, c)) return;
+        c.from = *from;
+        c.to = *to;
+        c.spelling = fmt::format("#{}–#{}", *from, *to);
+        rules.clues.push_back(std::move(c));
+    });
+    each_table(r, *t, "lexical", "detect", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"observe", "weight", "proves"}, where);
+        DetectClue c;
+        c.kind = DetectClue::Kind::lexical;
+        c.text = r.string(e, "observe", where, true);
+        if (c.text != "prose-after-semicolon") {
+            r.error(e.get("observe"), fmt::format("{}.observe: unknown observation '{}' (prose-after-semicolon)", where, c.text));
+            return;
+        }
+        if (!read_weight(r, e, where, c)) return;
+        c.spelling = "text after ';' that reads as no block";
+        rules.clues.push_back(std::move(c));
+    });
 }
 
 }  // namespace
@@ -248,13 +460,24 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     const toml::table& root = *parsed;
     DialectFile file;
     Dialect& d = file.dialect;
-    r.check_keys(root, {"id", "name", "machine", "reference", "overlay", "applies_to", "combined_ids", "lexical", "g", "m"},
+    r.check_keys(root, {"id", "name", "machine", "reference", "overlay", "applies_to", "combined_ids", "base", "remove",
+                        "lexical", "g", "m", "patch", "detect"},
                  "top level");
     d.id = r.string(root, "id", "top level", true);
     d.name = r.string(root, "name", "top level", true);
     d.reference = r.string(root, "reference", "top level", false);
     file.overlay = r.boolean(root, "overlay", "top level", false);
-    const std::string machine = r.string(root, "machine", "top level", !file.overlay);
+    file.base = r.string(root, "base", "top level", false);
+    if (const toml::node* b = root.get("base")) {
+        file.base_line = static_cast<int>(b->source().begin.line);
+        file.base_column = static_cast<int>(b->source().begin.column);
+        if (file.overlay) r.error(b, "base: an overlay names its bases in applies_to");
+    }
+    const bool derived = !file.base.empty();
+    if (!derived && (root.contains("remove") || root.contains("patch")))
+        r.error(root.get(root.contains("remove") ? "remove" : "patch"), "remove and [[patch]] need a base dialect (`base = \"id\"`)");
+    file.machine_set = root.contains("machine");
+    const std::string machine = r.string(root, "machine", "top level", !file.overlay && !derived);
     if (machine == "mill") d.machine = MachineKind::mill;
     else if (machine == "lathe" || machine.empty()) d.machine = MachineKind::lathe;
     else r.error(root.get("machine"), fmt::format("machine: unknown value '{}' (lathe or mill)", machine));
@@ -266,16 +489,19 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     }
     if (const toml::node* n = root.get("lexical")) {
         if (const toml::table* lex = n->as_table()) {
-            if (file.overlay)
+            if (file.overlay || derived)
                 file.lexical_overrides = read_lexical(r, *lex, LexicalRules{}, file.lexical_keys_set);
             else
                 d.lexical = read_lexical(r, *lex, LexicalRules{}, file.lexical_keys_set);
         } else {
             r.error(n, "lexical: expected a table");
         }
-    } else if (!file.overlay) {
+    } else if (!file.overlay && !derived) {
         r.error(&root, "missing [lexical] table");
     }
+    read_remove(r, root, file);
+    read_patches(r, root, file);
+    read_detect(r, root, file);
     std::vector<CodeInfo> codes = read_codes(r, root, 'G');
     std::vector<CodeInfo> ms = read_codes(r, root, 'M');
     codes.insert(codes.end(), std::make_move_iterator(ms.begin()), std::make_move_iterator(ms.end()));
@@ -285,15 +511,12 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     return result;
 }
 
-Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::string combined_id) {
-    Dialect out = base;
-    out.id = std::move(combined_id);
-    out.name = fmt::format("{} + {}", base.name, overlay.dialect.name);
-    out.overlays.push_back(overlay.dialect.id);
-    std::vector<std::string> unused;
-    LexicalRules& lex = out.lexical;
-    const LexicalRules& o = overlay.lexical_overrides;
-    for (const std::string& key : overlay.lexical_keys_set) {
+namespace {
+
+// The lexical keys a file sets override the base's, one by one.
+void override_lexical(LexicalRules& lex, const DialectFile& file) {
+    const LexicalRules& o = file.lexical_overrides;
+    for (const std::string& key : file.lexical_keys_set) {
         if (key == "semicolon") lex.semicolon = o.semicolon;
         else if (key == "paren_comments") lex.paren_comments = o.paren_comments;
         else if (key == "line_comments") lex.line_comments = o.line_comments;
@@ -309,16 +532,122 @@ Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::stri
         else if (key == "macro_b") lex.macro_b = o.macro_b;
         else if (key == "max_m_per_block") lex.max_m_per_block = o.max_m_per_block;
     }
-    std::vector<CodeInfo> codes(base.codes().begin(), base.codes().end());
-    for (const CodeInfo& info : overlay.dialect.codes()) {
+}
+
+// The file's codes replace the base's entry of the same code in place, or come after the base's.
+void merge_codes(std::vector<CodeInfo>& codes, const Dialect& changes) {
+    for (const CodeInfo& info : changes.codes()) {
         const auto same = std::find_if(codes.begin(), codes.end(), [&](const CodeInfo& c) {
             return c.letter == info.letter && c.key == info.key;
         });
         if (same != codes.end()) *same = info;
         else codes.push_back(info);
     }
+}
+
+void apply_patch(CodeInfo& c, const CodePatch& p) {
+    const CodeInfo& f = p.fields;
+    for (const std::string& key : p.keys) {
+        if (key == "aliases") c.aliases = f.aliases;
+        else if (key == "group") c.group = f.group;
+        else if (key == "modal") c.modal = f.modal;
+        else if (key == "default") c.power_on_default = f.power_on_default;
+        else if (key == "function") c.function = f.function;
+        else if (key == "words") c.words = f.words;
+        else if (key == "parameter_words") c.parameter_letters = f.parameter_letters;
+        else if (key == "required") c.required = f.required;
+        else if (key == "required_one_of") c.required_one_of = f.required_one_of;
+        else if (key == "availability") c.availability = f.availability;
+        else if (key == "availability_note") c.availability_note = f.availability_note;
+        else if (key == "en") c.en = f.en;
+        else if (key == "ru") c.ru = f.ru;
+        else if (key == "reference") c.reference = f.reference;
+        else if (key == "notes") c.notes = f.notes;
+    }
+}
+
+LoadError error_at(std::string_view source, int line, int column, std::string message) {
+    return {fmt::format("{}: {}", source, message), line, column};
+}
+
+}  // namespace
+
+Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::string combined_id) {
+    Dialect out = base;
+    out.id = std::move(combined_id);
+    out.name = fmt::format("{} + {}", base.name, overlay.dialect.name);
+    out.overlays.push_back(overlay.dialect.id);
+    out.bases.insert(out.bases.begin(), base.id);
+    override_lexical(out.lexical, overlay);
+    // Detection: the base's clues and the overlay's; a candidate only when the overlay's score.
+    for (DetectClue& c : out.detect.clues) c.own = false;
+    out.detect.clues.insert(out.detect.clues.end(), overlay.dialect.detect.clues.begin(),
+                            overlay.dialect.detect.clues.end());
+    out.detect.needs_own = true;
+    out.detect.fallback = false;
+    std::vector<CodeInfo> codes(base.codes().begin(), base.codes().end());
+    merge_codes(codes, overlay.dialect);
     out.set_codes(std::move(codes));
     return out;
+}
+
+Dialect derive_dialect(const Dialect& base, const DialectFile& file, std::string_view source_name,
+                       std::vector<LoadError>& errors) {
+    const Dialect& d = file.dialect;
+    Dialect out = base;
+    out.id = d.id;
+    out.name = d.name;
+    if (!d.reference.empty()) out.reference = d.reference;
+    if (file.machine_set) out.machine = d.machine;
+    out.bases.insert(out.bases.begin(), base.id);
+    override_lexical(out.lexical, file);
+    if (file.detect_set) {
+        if (!file.detect_inherit) out.detect.clues.clear();
+        out.detect.clues.insert(out.detect.clues.end(), d.detect.clues.begin(), d.detect.clues.end());
+        out.detect.fallback = d.detect.fallback;
+        out.detect.needs_own = false;
+    } else {
+        out.detect.fallback = false;   // one default dialect: the base stays it
+    }
+    std::vector<CodeInfo> codes(base.codes().begin(), base.codes().end());
+    for (const auto& [spelling, at] : file.remove) {
+        const auto parsed = parse_code_spelling(spelling);
+        const auto it = std::find_if(codes.begin(), codes.end(), [&](const CodeInfo& c) {
+            return parsed && c.letter == parsed->first && c.key == parsed->second;
+        });
+        if (it == codes.end())
+            errors.push_back(error_at(source_name, at.first, at.second,
+                                      fmt::format("remove: {} is not a code of the base dialect {}", spelling, base.id)));
+        else
+            codes.erase(it);
+    }
+    merge_codes(codes, d);
+    for (const CodePatch& p : file.patches) {
+        const auto it = std::find_if(codes.begin(), codes.end(),
+                                     [&](const CodeInfo& c) { return c.letter == p.letter && c.key == p.key; });
+        if (it == codes.end())
+            errors.push_back(error_at(source_name, p.line, p.column,
+                                      fmt::format("patch: {} is not a code of the base dialect {} (a new code is a "
+                                                  "whole [[{}]] entry)",
+                                                  p.spelling, base.id, p.letter == 'G' ? "g" : "m")));
+        else
+            apply_patch(*it, p);
+    }
+    out.set_codes(std::move(codes));
+    return out;
+}
+
+std::vector<LoadError> check_detect(const Dialect& dialect, std::string_view source_name) {
+    std::vector<LoadError> errors;
+    for (const DetectClue& c : dialect.detect.clues) {
+        if (c.kind != DetectClue::Kind::code || c.weight <= 0 || !c.own) continue;
+        if (!dialect.code(c.letter, c.key))
+            errors.push_back(error_at(source_name, c.line, c.column,
+                                      fmt::format("detect: {} is not a code of {}: evidence for it cannot prove the "
+                                                  "dialect (a negative weight may name any code)",
+                                                  c.spelling.substr(0, c.spelling.find(' ')), dialect.id)));
+    }
+    return errors;
 }
 
 }  // namespace kerf::dialects

@@ -2,17 +2,18 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
-#include <optional>
 #include <map>
 
 #include "ast/source.hpp"
-#include "dialects/dialect.hpp"
 #include "grammar/parse.hpp"
 
 namespace kerf::grammar {
 namespace {
+
+using dialects::DetectClue;
 
 // Lexical rules that read every dialect's text without losing words: ';' ends blocks, ADV400 line
 // comments are comments, macros on, comma words on.
@@ -24,26 +25,167 @@ dialects::LexicalRules permissive_rules() {
     return r;
 }
 
-struct Evidence {
-    std::map<std::string, int> score;
-    std::vector<std::string> reasons;
-    std::map<std::string, int> seen;   // one reason per kind of evidence
-
-    void add(const std::string& what, std::uint32_t offset, const ast::LineIndex& lines,
-             std::initializer_list<std::pair<const char*, int>> weights) {
-        if (seen[what]++ > 0) {
-            for (const auto& [d, w] : weights) score[d] += w / 4;   // repeated evidence counts, less
-            return;
-        }
-        const ast::Position p = lines.utf8(offset);
-        std::string suggests;
-        for (const auto& [d, w] : weights) {
-            score[d] += w;
-            if (w > 0) suggests += (suggests.empty() ? "" : ", ") + std::string(d);
-        }
-        reasons.push_back(fmt::format("{} at {}:{} suggests {}", what, p.line + 1, p.column + 1, suggests));
-    }
+struct Word {
+    std::uint32_t block;
+    std::uint32_t offset;
+    bool number;
+    double value;
 };
+
+// What a file says, read once from the permissive tree; every dialect's clues are weighed against it.
+struct Facts {
+    std::array<std::vector<Word>, 26> words;                            // by letter, in text order
+    std::vector<std::uint32_t> block_begin;                              // per block
+    std::vector<std::vector<std::pair<char, double>>> block_words;       // per block: letter, value (NaN: no number)
+    std::vector<std::pair<std::string_view, std::uint32_t>> comments;    // text, offset
+    std::vector<std::pair<std::string_view, std::uint32_t>> header;      // comments before the first code
+    std::vector<std::pair<double, std::uint32_t>> variables;             // #n with a plain number n
+    std::vector<std::uint32_t> prose_after_semicolon;                    // offsets
+};
+
+bool letter_ok(char L) { return L >= 'A' && L <= 'Z'; }
+
+Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
+    Facts f;
+    bool in_header = true;
+    f.block_words.resize(tree.block_count());
+    f.block_begin.resize(tree.block_count());
+    for (std::size_t bi = 0; bi < tree.block_count(); ++bi) {
+        const auto b = static_cast<std::uint32_t>(bi);
+        f.block_begin[bi] = tree.blocks[bi].begin;
+        for (const ast::Token& t : tree.block_tokens(bi)) {
+            if (t.kind == ast::TokenKind::comment) {
+                f.comments.emplace_back(tree.spelling(t), t.begin);
+                if (in_header) f.header.emplace_back(tree.spelling(t), t.begin);
+            }
+            // Text after ';' on the same line that does not read as a block: ';' starts a comment.
+            if (t.kind == ast::TokenKind::error && bi > 0 && tree.blocks[bi - 1].has(ast::block_flags::has_eob) &&
+                lines.utf8(tree.blocks[bi].begin).line == lines.utf8(tree.blocks[bi - 1].begin).line)
+                f.prose_after_semicolon.push_back(t.begin);
+            if (t.kind != ast::TokenKind::word || !letter_ok(t.letter)) continue;
+            // The header ends at the first word that is not a program or sequence number.
+            if (t.letter != 'O' && t.letter != 'N') in_header = false;
+            const bool number = t.is_number();
+            const double value = number ? tree.number_value(t) : std::numeric_limits<double>::quiet_NaN();
+            f.words[static_cast<std::size_t>(t.letter - 'A')].push_back({b, t.begin, number, value});
+            f.block_words[bi].emplace_back(t.letter, value);
+        }
+    }
+    for (const ast::Expr& e : tree.exprs) {
+        if (e.kind != ast::ExprKind::variable || e.a < 0) continue;
+        const ast::Expr& n = tree.exprs[static_cast<std::size_t>(e.a)];
+        if (n.kind == ast::ExprKind::number) f.variables.emplace_back(tree.number_value(n), e.begin);
+    }
+    return f;
+}
+
+// The G65/G66 blocks of dialect `d` (its codes with traits::takes_arguments): their words are
+// macro arguments (`W#23` is argument W, not an incremental Z), so they prove nothing.
+std::vector<bool> macro_call_blocks(const Facts& f, const dialects::Dialect& d) {
+    std::vector<bool> out(f.block_words.size(), false);
+    for (const Word& w : f.words['G' - 'A']) {
+        if (!w.number) continue;
+        const auto key = dialects::code_key(w.value);
+        const dialects::CodeInfo* info = key ? d.fast_code('G', *key) : nullptr;
+        if (info && info->has(dialects::traits::takes_arguments)) out[w.block] = true;
+    }
+    return out;
+}
+
+bool block_has(const Facts& f, std::uint32_t block, char letter, std::optional<double> value = std::nullopt) {
+    for (const auto& [L, v] : f.block_words[block])
+        if (L == letter && (!value || v == *value)) return true;
+    return false;
+}
+
+bool block_has_any(const Facts& f, std::uint32_t block, std::string_view letters) {
+    return std::any_of(letters.begin(), letters.end(), [&](char L) { return block_has(f, block, L); });
+}
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
+}
+
+// The offsets where a clue holds (text order); one entry at offset ~0u for a clue about the whole file.
+std::vector<std::uint32_t> occurrences(const DetectClue& c, const Facts& f, const std::vector<bool>& macro_calls) {
+    std::vector<std::uint32_t> at;
+    switch (c.kind) {
+        case DetectClue::Kind::code:
+            for (const Word& w : f.words[static_cast<std::size_t>(c.letter - 'A')]) {
+                if (!w.number || dialects::code_key(w.value) != std::optional<dialects::CodeKey>(c.key)) continue;
+                bool ok = true;
+                for (const auto& [L, v] : c.with) ok &= block_has(f, w.block, L, v);
+                if (!c.with_any.empty()) ok &= block_has_any(f, w.block, c.with_any);
+                if (!c.without.empty()) ok &= !block_has_any(f, w.block, c.without);
+                if (ok) at.push_back(f.block_begin[w.block]);
+            }
+            break;
+        case DetectClue::Kind::word:
+            for (const Word& w : f.words[static_cast<std::size_t>(c.letter - 'A')])
+                if (!macro_calls[w.block]) at.push_back(w.offset);
+            break;
+        case DetectClue::Kind::absent_word: {
+            bool present = false, given = false;
+            for (const Word& w : f.words[static_cast<std::size_t>(c.letter - 'A')]) present |= !macro_calls[w.block];
+            for (const char L : c.with_any)
+                for (const Word& w : f.words[static_cast<std::size_t>(L - 'A')]) given |= !macro_calls[w.block];
+            if (!present && given) at.push_back(~0u);
+            break;
+        }
+        case DetectClue::Kind::comment:
+            for (const auto& [text, offset] : f.comments)
+                if (text.starts_with(c.spelling)) at.push_back(offset);
+            break;
+        case DetectClue::Kind::header:
+            for (const auto& [text, offset] : f.header)
+                if (upper(text).find(upper(c.spelling)) != std::string::npos) at.push_back(offset);
+            break;
+        case DetectClue::Kind::variable:
+            for (const auto& [n, offset] : f.variables)
+                if (n >= static_cast<double>(c.from) && n <= static_cast<double>(c.to)) at.push_back(offset);
+            break;
+        case DetectClue::Kind::lexical:
+            at = f.prose_after_semicolon;   // the one observation the schema knows
+            break;
+    }
+    return at;
+}
+
+// A repeated clue counts, less: a quarter of its weight for each further occurrence.
+int points(int weight, std::size_t count) { return count == 0 ? 0 : weight + static_cast<int>(count - 1) * (weight / 4); }
+
+struct Score {
+    const dialects::Dialect* dialect;
+    int total = 0;
+    int own = 0;   // the overlay's own clues (DetectRules::needs_own)
+    std::vector<Clue> clues;
+};
+
+Score weigh(const dialects::Dialect& d, const Facts& f, const ast::LineIndex& lines) {
+    Score s{&d};
+    const std::vector<bool> macro_calls = macro_call_blocks(f, d);
+    for (const DetectClue& c : d.detect.clues) {
+        const std::vector<std::uint32_t> at = occurrences(c, f, macro_calls);
+        if (at.empty()) continue;
+        Clue clue;
+        clue.dialect = d.id;
+        clue.what = c.spelling;
+        clue.proves = c.proves;
+        if (at.front() != ~0u) {
+            const ast::Position p = lines.utf8(at.front());
+            clue.line = static_cast<int>(p.line) + 1;
+            clue.column = static_cast<int>(p.column) + 1;
+        }
+        clue.count = static_cast<int>(at.size());
+        clue.points = points(c.weight, at.size());
+        s.total += clue.points;
+        if (c.own) s.own += clue.points;
+        s.clues.push_back(std::move(clue));
+    }
+    return s;
+}
 
 // "(DIALECT: spinner-lathe-a - live tools)" → "spinner-lathe-a": the id after the tag, up to the
 // first character that cannot be part of an id.
@@ -61,16 +203,17 @@ std::string_view id_after_tag(std::string_view comment) {
     return comment.substr(0, n);
 }
 
-// A header comment naming a known dialect id decides (the reference examples carry one:
+// A header comment naming a dialect of the registry decides (the reference examples carry one:
 // reference/README.md "Example files", `(DIALECT: <dialect id> [- machine options])`). Only the
 // comment-only blocks before the first word count: a comment further down is about something else.
-std::optional<Detection> header_dialect(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
+std::optional<Detection> header_dialect(const ast::SyntaxTree& tree, const ast::LineIndex& lines,
+                                        const dialects::Registry& registry) {
     for (std::size_t bi = 0; bi < tree.block_count(); ++bi) {
         for (const ast::Token& t : tree.block_tokens(bi)) {
             if (t.kind == ast::TokenKind::word) return std::nullopt;
             if (t.kind != ast::TokenKind::comment) continue;
             const std::string_view id = id_after_tag(tree.spelling(t));
-            if (id.empty() || !dialects::builtin_registry().find(id)) continue;
+            if (id.empty() || !registry.find(id)) continue;
             const ast::Position p = lines.utf8(t.begin);
             Detection d;
             d.dialect = std::string(id);
@@ -83,9 +226,23 @@ std::optional<Detection> header_dialect(const ast::SyntaxTree& tree, const ast::
     return std::nullopt;
 }
 
+std::string clue_line(const Clue& c) {
+    const std::string where = c.line ? fmt::format("{}:{} ", c.line, c.column) : std::string("the file: ");
+    const std::string times = c.count > 1 ? fmt::format(" ×{}", c.count) : std::string();
+    return fmt::format("    {}{}{} ({:+d}): {}", where, c.what, times, c.points, c.proves);
+}
+
+// The registry's dialect for files without evidence: the first with `[detect] default = true`, else the first.
+std::string default_dialect(const dialects::Registry& registry) {
+    const std::vector<std::string> ids = registry.ids();
+    for (const std::string& id : ids)
+        if (registry.find(id)->detect.fallback) return id;
+    return ids.empty() ? std::string() : ids.front();
+}
+
 }  // namespace
 
-Detection detect_dialect(std::string_view text) {
+Detection detect_dialect(std::string_view text, const dialects::Registry& registry, const DetectOptions& options) {
     // The evidence of a program is in its first lines (headers, first tool, first moves); reading
     // a 100 MB program to the end would cost a whole second parse. Whole lines only.
     constexpr std::size_t kEnough = std::size_t{256} << 10;
@@ -95,99 +252,74 @@ Detection detect_dialect(std::string_view text) {
     }
     const ast::SyntaxTree tree = parse(std::string(text), permissive_rules());
     const ast::LineIndex lines(tree.text);
-    if (std::optional<Detection> header = header_dialect(tree, lines)) return *std::move(header);
-    Evidence ev;
-    bool has_y = false;
-    for (std::size_t bi = 0; bi < tree.block_count(); ++bi) {
-        const auto tokens = tree.block_tokens(bi);
-        auto has_letter = [&](char L) {
-            for (const ast::Token& t : tokens)
-                if (t.kind == ast::TokenKind::word && t.letter == L) return true;
-            return false;
-        };
-        auto code_in_block = [&](char L, int whole, int tenth = 0) {
-            for (const ast::Token& t : tokens) {
-                if (t.kind != ast::TokenKind::word || t.letter != L || !t.is_number()) continue;
-                const double v = tree.number_value(t);
-                if (static_cast<int>(v * 10 + 0.5) == whole * 10 + tenth) return true;
-            }
-            return false;
-        };
-        for (const ast::Token& t : tokens) {
-            if (t.kind == ast::TokenKind::comment) {
-                const std::string_view s = tree.spelling(t);
-                if (s.starts_with("::") || s.starts_with(";;"))
-                    ev.add("'" + std::string(s.substr(0, 2)) + "' comment", t.begin, lines,
-                           {{"adv400-mill", 6}, {"adv400-lathe", 6}});
-            }
-            // Text after ';' on the same line that does not read as a block: ';' starts a comment.
-            if (t.kind == ast::TokenKind::error && bi > 0 && tree.blocks[bi - 1].has(ast::block_flags::has_eob) &&
-                lines.utf8(tree.blocks[bi].begin).line == lines.utf8(tree.blocks[bi - 1].begin).line)
-                ev.add("text after ';' (a comment)", t.begin, lines, {{"pcnc-mill", 6}});
-            if (t.kind != ast::TokenKind::word) continue;
-            switch (t.letter) {
-                case 'U': case 'W':
-                    ev.add(fmt::format("incremental word {}", t.letter), t.begin, lines, {{"fanuc-lathe-a", 3}});
-                    break;
-                case 'Y':
-                    has_y = true;
-                    ev.add("Y axis word", t.begin, lines, {{"fanuc-mill", 2}, {"adv400-mill", 1}, {"pcnc-mill", 1}});
-                    break;
-                case 'B':
-                    ev.add("B axis word", t.begin, lines, {{"spinner-lathe-a", 1}});
-                    break;
-                default: break;
-            }
-        }
-        const std::uint32_t at = tree.blocks[bi].begin;
-        if (code_in_block('G', 50) && has_letter('S')) ev.add("G50 S (spindle clamp)", at, lines, {{"fanuc-lathe-a", 4}});
-        if (code_in_block('G', 96)) ev.add("G96 (constant surface speed)", at, lines, {{"fanuc-lathe-a", 2}, {"fanuc-lathe-b", 1}});
-        if (code_in_block('G', 99) && has_letter('F')) ev.add("G99 F (feed per revolution)", at, lines, {{"fanuc-lathe-a", 3}});
-        for (int g : {70, 71, 72, 73, 74, 75, 76})
-            if (code_in_block('G', g) && has_letter('P') && has_letter('Q'))
-                ev.add(fmt::format("G{} P Q (multiple repetitive cycle)", g), at, lines, {{"fanuc-lathe-a", 4}});
-        if (code_in_block('G', 91)) ev.add("G91", at, lines, {{"fanuc-lathe-b", 1}, {"fanuc-mill", 1}});
-        for (int g : {77, 78, 79})
-            if (code_in_block('G', g) && has_letter('Z')) ev.add(fmt::format("G{} X Z (system B single cycle; no such code in A)", g), at, lines, {{"fanuc-lathe-b", 8}});
-        for (int g : {38, 138, 238, 380, 384, 100, 101})
-            if (code_in_block('G', g)) ev.add(fmt::format("G{} (SPINNER cycle)", g), at, lines, {{"spinner-lathe-a", 8}});
-        for (int m : {329, 432})
-            if (code_in_block('M', m)) ev.add(fmt::format("M{} (SPINNER cycle)", m), at, lines, {{"spinner-lathe-a", 8}});
-        if (code_in_block('G', 10) && code_in_block('P', 0) && (has_letter('Z') || has_letter('W')))
-            ev.add("G10 P0 Z/W (work shift)", at, lines, {{"spinner-lathe-a", 4}});
-        if (code_in_block('M', 98) && has_letter('L')) ev.add("M98 P L", at, lines, {{"adv400-mill", 3}, {"adv400-lathe", 3}});
-        if (code_in_block('G', 92, 1)) ev.add("G92.1", at, lines, {{"adv400-mill", 5}});
-        if (code_in_block('G', 50, 1)) ev.add("G50.1 (ADV400 coordinate cancel)", at, lines, {{"adv400-lathe", 2}});
-        if (code_in_block('G', 25) || code_in_block('G', 26)) ev.add("G25/G26", at, lines, {{"adv400-mill", 2}, {"adv400-lathe", 2}});
-        if (code_in_block('G', 152)) ev.add("G152", at, lines, {{"pcnc-mill", 8}});
-        if (code_in_block('G', 30) && has_letter('P')) ev.add("G30 P", at, lines, {{"pcnc-mill", 3}});
-        for (int g : {45, 46, 47, 48})
-            if (code_in_block('G', g) && has_letter('D')) ev.add(fmt::format("G{} D (one-block offset)", g), at, lines, {{"iso-legacy-mill", 6}});
-        if (code_in_block('G', 28) && has_letter('K') && has_letter('F'))
-            ev.add("G28 K F (corner slow-down)", at, lines, {{"iso-legacy-mill", 8}});
-        if (code_in_block('G', 43) && has_letter('H')) ev.add("G43 H", at, lines, {{"fanuc-mill", 3}});
-        if (code_in_block('M', 6)) ev.add("M06 (tool change)", at, lines, {{"fanuc-mill", 3}});
-        if (code_in_block('G', 17)) ev.add("G17", at, lines, {{"fanuc-mill", 1}});
+    if (std::optional<Detection> header = header_dialect(tree, lines, registry)) return *std::move(header);
+    const Facts facts = read_facts(tree, lines);
+
+    std::vector<Score> scores;
+    for (const std::string& id : registry.ids()) {
+        const dialects::Dialect& d = *registry.find(id);
+        Score s = weigh(d, facts, lines);
+        // An overlay's combination (spinner-lathe-a) scores its base's clues too; it is a candidate
+        // only when the overlay's own clues point to it, else it would tie with its base.
+        if (d.detect.needs_own && s.own <= 0) s.total = std::min(s.total, 0);
+        scores.push_back(std::move(s));
     }
-    // ADV400 evidence splits by axes; the SPINNER overlay needs its base.
-    auto& s = ev.score;
-    if (has_y) s["adv400-lathe"] -= 3; else s["adv400-mill"] -= 3;
-    if (s["spinner-lathe-a"] > 0) s["spinner-lathe-a"] += s["fanuc-lathe-a"];
-    Detection d;
-    d.dialect = has_y ? "fanuc-mill" : "fanuc-lathe-a";
-    int best = 0;
-    for (const auto& [id, score] : s) {
-        if (score > best) {
-            best = score;
-            d.dialect = id;
-        }
+    Detection out;
+    const Score* best = nullptr;
+    for (const Score& s : scores)   // ties go to the dialect registered first
+        if (s.total > 0 && (!best || s.total > best->total)) best = &s;
+    std::vector<const Score*> ranked;
+    for (const Score& s : scores)
+        if (!s.clues.empty()) ranked.push_back(&s);
+    std::stable_sort(ranked.begin(), ranked.end(), [](const Score* a, const Score* b) { return a->total > b->total; });
+    for (const Score* s : ranked) {
+        out.scores.emplace_back(s->dialect->id, s->total);
+        out.clues.insert(out.clues.end(), s->clues.begin(), s->clues.end());
     }
-    d.confidence = best;
-    d.reasons = std::move(ev.reasons);
-    if (best == 0)
-        d.reasons.push_back(fmt::format("no dialect evidence; {} because {}", d.dialect,
-                                        has_y ? "the program has Y words" : "the program has no Y words"));
-    return d;
+    if (best) {
+        out.dialect = best->dialect->id;
+        out.confidence = best->total;
+        std::string others;
+        for (const auto& [id, score] : out.scores)
+            if (id != out.dialect) others += fmt::format("{}{} {}", others.empty() ? "" : ", ", id, score);
+        out.reasons.push_back(fmt::format("score {}{}", best->total, others.empty() ? "" : "; others: " + others));
+    } else {
+        out.evidence = false;
+        const bool given = !options.fallback.empty() && registry.find(options.fallback);
+        out.dialect = given ? options.fallback : default_dialect(registry);
+        out.reasons.push_back(
+            given ? fmt::format("no dialect evidence in the file; {} as {}", out.dialect, options.fallback_reason)
+                  : fmt::format("no dialect evidence in the file; {}, the default for files without evidence "
+                                "(`[detect] default = true`, dialects/SCHEMA.md): name the dialect in .kerf.toml, "
+                                "a (DIALECT: id) header comment or --dialect",
+                                out.dialect));
+    }
+    for (const Score* s : ranked) {
+        out.reasons.push_back(fmt::format("  {} {}{}:", s->dialect->id, s->total,
+                                          s->dialect->detect.needs_own && s->own <= 0 ? " (none of its own clues)" : ""));
+        for (const Clue& c : s->clues) out.reasons.push_back(clue_line(c));
+    }
+    return out;
+}
+
+Detection detect_dialect(std::string_view text) { return detect_dialect(text, dialects::builtin_registry()); }
+
+std::optional<std::pair<std::string, std::string>> folder_majority(std::span<const Detection> others) {
+    std::map<std::string, std::pair<int, int>> votes;   // dialect → files, summed score
+    int with_evidence = 0;
+    for (const Detection& d : others) {
+        if (!d.evidence) continue;
+        ++with_evidence;
+        auto& v = votes[d.dialect];
+        ++v.first;
+        v.second += d.confidence;
+    }
+    if (votes.empty()) return std::nullopt;
+    const auto best = std::max_element(votes.begin(), votes.end(), [](const auto& a, const auto& b) {
+        return a.second < b.second;   // more files, then the higher summed score
+    });
+    return std::pair{best->first, fmt::format("{} of the {} other programs with evidence in its folder",
+                                              best->second.first, with_evidence)};
 }
 
 }  // namespace kerf::grammar

@@ -174,7 +174,11 @@ const std::vector<LoadError>& builtin_machine_errors() { return builtins().error
 
 Machine default_machine_for(const dialects::Dialect& dialect) {
     const Registry& r = builtin_machines();
+    // The machine that names the dialect, else the one that names its nearest base (a user dialect
+    // derived from adv400-lathe runs on the ADV400 lathe), else the FANUC machine of its kind.
     const Machine* m = r.for_dialect(dialect.id);
+    for (const std::string& base : dialect.bases)
+        if (!m) m = r.for_dialect(base);
     if (!m) m = r.find(dialect.machine == MachineKind::lathe ? "fanuc-lathe" : "fanuc-mill");
     if (!m) return fallback_machine();
     return resolve_for_dialect(*m, dialect);

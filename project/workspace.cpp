@@ -46,7 +46,8 @@ Project::SetupEntry load_setup(const fs::path& file, const dialects::Dialect& di
 
 }  // namespace
 
-DialectChoice choose_dialect(const Overrides& overrides, const Config& config, std::string_view text) {
+DialectChoice choose_dialect(const Overrides& overrides, const Config& config, std::string_view text,
+                             const dialects::Registry& registry, const FolderRule& folder) {
     DialectChoice c;
     if (!overrides.dialect.empty() && overrides.dialect != "auto") {
         c.id = overrides.dialect;
@@ -57,10 +58,16 @@ DialectChoice choose_dialect(const Overrides& overrides, const Config& config, s
         c.source = DialectSource::config;
         c.why = fmt::format("dialect {} from {}", c.id, config.file.string());
     } else {
-        const grammar::Detection d = grammar::detect_dialect(text);
+        grammar::Detection d = grammar::detect_dialect(text, registry);
+        if (!d.evidence && folder) {
+            if (const auto majority = folder())
+                d = grammar::detect_dialect(text, registry, {majority->first, majority->second});
+        }
         c.id = d.dialect;
         c.source = DialectSource::detection;
-        c.why = fmt::format("dialect {} detected (score {})", c.id, d.confidence);
+        c.no_evidence = !d.evidence;
+        c.why = d.evidence ? fmt::format("dialect {} detected (score {})", c.id, d.confidence)
+                           : fmt::format("dialect {}: no dialect evidence in the file", c.id);
         c.evidence = d.reasons;
     }
     return c;
@@ -115,6 +122,7 @@ void Workspace::set_overrides(Overrides overrides) {
     const std::lock_guard lock(mutex_);
     overrides_ = std::move(overrides);
     projects_.clear();
+    folder_votes_.clear();
 }
 
 Overrides Workspace::overrides() const {
@@ -126,6 +134,47 @@ void Workspace::forget_projects() {
     const std::lock_guard lock(mutex_);
     projects_.clear();
     config_of_.clear();
+    folder_votes_.clear();
+}
+
+std::optional<std::pair<std::string, std::string>> Workspace::folder_dialect(const fs::path& file,
+                                                                               const dialects::Registry& registry) {
+    const fs::path self = normal_path(file);
+    const std::pair key{self.parent_path(), &registry};
+    std::vector<FolderVote> votes;
+    bool cached = false;
+    {
+        const std::lock_guard lock(mutex_);
+        if (const auto it = folder_votes_.find(key); it != folder_votes_.end()) {
+            votes = it->second;
+            cached = true;
+        }
+    }
+    if (!cached) {
+        std::vector<fs::path> files = files_->files_in(key.first);
+        std::sort(files.begin(), files.end());
+        std::size_t sampled = 0;
+        for (const fs::path& f : files) {
+            if (sampled == kFolderSample) break;
+            if (is_hidden(f)) continue;
+            const ReadResult head = files_->read_head(f, kRecognitionHead);
+            if (!head.text || !recognize_program(f.filename().string(), *head.text).program) continue;
+            ++sampled;
+            const grammar::Detection d = grammar::detect_dialect(*head.text, registry);
+            if (d.evidence) votes.push_back({normal_path(f), d.dialect, d.confidence});
+        }
+        const std::lock_guard lock(mutex_);
+        folder_votes_.emplace(key, votes);
+    }
+    std::vector<grammar::Detection> others;
+    for (const FolderVote& v : votes) {
+        if (v.file == self) continue;
+        grammar::Detection d;
+        d.dialect = v.dialect;
+        d.confidence = v.confidence;
+        others.push_back(std::move(d));
+    }
+    return grammar::folder_majority(others);
 }
 
 std::optional<fs::path> Workspace::find_config(const fs::path& file) const {
@@ -171,7 +220,9 @@ Resolved Workspace::resolve(const fs::path& file, std::string_view text) {
     Resolved r;
     r.project = project_for(file);
     r.problems = r.project->problems();
-    r.choice = choose_dialect(overrides(), r.project->config(), text);
+    const dialects::Registry& registry = r.project->dialects();
+    r.choice = choose_dialect(overrides(), r.project->config(), text, registry,
+                              [&] { return folder_dialect(file, registry); });
     r.dialect = r.project->dialects().find(r.choice.id);
     if (!r.dialect) {
         const std::string origin = r.choice.source == DialectSource::config ? r.project->config().file.string() : "";
@@ -209,6 +260,7 @@ void Workspace::forget_folder(const fs::path& folder) {
     {
         const std::lock_guard lock(mutex_);
         indexed_.erase(normal);
+        std::erase_if(folder_votes_, [&](const auto& entry) { return entry.first.first == normal; });
     }
     for (const fs::path& file : index_.files())
         if (file.parent_path() == normal) index_.remove_file(file);

@@ -6,7 +6,9 @@
 //     the dialect registry (built-ins, then the override's dialect files, then the .kerf.toml's)
 //     and a cache of one interpreter Setup per dialect; projects are read once and shared;
 //   - its dialect: the override (--dialect, the client's kerf.dialect), then the .kerf.toml's
-//     `dialect`, then the `(DIALECT: ...)` header and detection (grammar/detect.hpp);
+//     `dialect`, then the `(DIALECT: ...)` header and detection over the project's registry
+//     (grammar/detect.hpp: each dialect's `[detect]` evidence, so a user's dialect file is detected),
+//     and for a file without evidence the folder rule (what most programs of its folder are);
 //   - its machine: the override (--machine, kerf.machine), then `machine = ...`, then the dialect's
 //     built-in machine;
 //   - the programs its calls reach: the program index (project/index.hpp) of its folder and the
@@ -18,6 +20,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -55,10 +58,18 @@ struct DialectChoice {
     DialectSource source = DialectSource::detection;
     std::string why;                     // "dialect fanuc-mill from --dialect", "... detected (score 7)"
     std::vector<std::string> evidence;   // detection's reasons (the header comment when it decided)
+    bool no_evidence = false;            // detection found nothing in the file (the folder rule or the default chose)
 };
 
-// Pure: the override, else the configuration's dialect, else the header and detection on `text`.
-DialectChoice choose_dialect(const Overrides& overrides, const Config& config, std::string_view text);
+// For a file without evidence: the dialect most programs of its folder were detected as, and why
+// ("3 of the 4 other programs with evidence in its folder"); nullopt when none had evidence.
+using FolderRule = std::function<std::optional<std::pair<std::string, std::string>>()>;
+
+// Pure: the override, else the configuration's dialect, else the header and detection on `text`
+// over `registry`; `folder` is asked only when the file has no evidence.
+DialectChoice choose_dialect(const Overrides& overrides, const Config& config, std::string_view text,
+                             const dialects::Registry& registry = dialects::builtin_registry(),
+                             const FolderRule& folder = {});
 
 // The built-in dialects and the user dialect files, in order (dialects/SCHEMA.md); a file that
 // cannot be read or has errors is a problem and adds nothing.
@@ -153,15 +164,29 @@ public:
     // [check] include/exclude of each file's project, for collect_program_files in `kerf check`.
     Selector check_selector();
 
+    // The folder rule of detection (dialects/SCHEMA.md [detect]): the dialect most of the programs
+    // in `folder` (at most kFolderSample of them, by name, recognised by content) are detected as
+    // over `registry`, other than `file`. Cached per folder and registry until forget_projects().
+    static constexpr std::size_t kFolderSample = 32;
+    std::optional<std::pair<std::string, std::string>> folder_dialect(const std::filesystem::path& file,
+                                                                      const dialects::Registry& registry);
+
 private:
     std::shared_ptr<const Project> load_project(const std::optional<std::filesystem::path>& config);
 
     std::shared_ptr<const FileSystem> files_;
-    mutable std::mutex mutex_;   // guards overrides_, projects_, config_of_, indexed_
+    mutable std::mutex mutex_;   // guards overrides_, projects_, config_of_, indexed_, folder_votes_
     Overrides overrides_;
     std::map<std::filesystem::path, std::shared_ptr<const Project>> projects_;        // by .kerf.toml ("" = none)
     std::map<std::filesystem::path, std::optional<std::filesystem::path>> config_of_;  // folder → .kerf.toml
     std::set<std::filesystem::path> indexed_;
+    // folder_dialect's detections: folder + registry → the sampled files that had evidence.
+    struct FolderVote {
+        std::filesystem::path file;
+        std::string dialect;
+        int confidence = 0;
+    };
+    std::map<std::pair<std::filesystem::path, const dialects::Registry*>, std::vector<FolderVote>> folder_votes_;
     std::mutex index_mutex_;   // one folder indexed at a time
     ProgramIndex index_;
 };

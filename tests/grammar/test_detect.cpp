@@ -28,13 +28,65 @@ TEST_CASE("detection follows the evidence of dialects.md §10 and says why") {
     }
 }
 
-TEST_CASE("without evidence: a mill when Y is used, else a lathe, and the reason says so") {
+TEST_CASE("X and Z without Y is lathe evidence; a file with no evidence takes the default dialect and says so") {
     const auto mill = detect_dialect("G0 X1 Y2\n");
     CHECK(mill.dialect == "fanuc-mill");
+    // fanuc-lathe-a.toml [detect]: `absent = "Y", given = ["X", "Z"]`, weight 2.
     const auto lathe = detect_dialect("G0 X1 Z2\n");
     CHECK(lathe.dialect == "fanuc-lathe-a");
-    REQUIRE_FALSE(lathe.reasons.empty());
-    CHECK(lathe.reasons.back().find("no dialect evidence") != std::string::npos);
+    CHECK(lathe.evidence);
+    // Only macro statements: nothing points anywhere. fanuc-mill is `[detect] default = true`.
+    const auto none = detect_dialect("#1=5\n#2=#1+1\nM30\n");
+    CHECK_FALSE(none.evidence);
+    CHECK(none.dialect == "fanuc-mill");
+    REQUIRE_FALSE(none.reasons.empty());
+    CHECK(none.reasons.front().find("no dialect evidence") != std::string::npos);
+    // The caller's fallback (the folder rule) wins over the registry default, with its reason.
+    const auto folder = detect_dialect("#1=5\nM30\n", kerf::dialects::builtin_registry(),
+                                       {"fanuc-lathe-a", "3 of the 3 other programs with evidence in its folder"});
+    CHECK(folder.dialect == "fanuc-lathe-a");
+    CHECK(folder.reasons.front().find("3 of the 3 other programs") != std::string::npos);
+}
+
+// Issue 12: `G65 P9724 W#23` passes argument W; it is no incremental Z. The Renishaw mill macros
+// O09811/O09812 were read as lathe programs because of such words.
+TEST_CASE("G65 argument letters are not axis evidence") {
+    // Only G65 calls: U and W are arguments, so nothing in the file is evidence (before: U and W
+    // scored 3 each for fanuc-lathe-a).
+    const auto d = detect_dialect("O9811\nG65 P9724 U#21 W#23\nG65 P9726 U1. W2.\nM99\n");
+    CHECK_FALSE(d.evidence);
+    CHECK(d.dialect == "fanuc-mill");
+    for (const kerf::grammar::Clue& c : d.clues) {
+        INFO(c.dialect << " " << c.what);
+        CHECK(c.what != "word U");
+        CHECK(c.what != "word W");
+    }
+}
+
+TEST_CASE("a user dialect's [detect] evidence makes it detectable") {
+    kerf::dialects::Registry registry = kerf::dialects::builtin_registry();
+    const auto errors = registry.add_text(R"(id = "user-lathe-b2"
+name = "User lathe derived from system B"
+base = "fanuc-lathe-b"
+[detect]
+inherit = true
+codes = [ { code = "M213", weight = 9, proves = "M213 is this shop's live tool on" } ]
+[[m]]
+code = "M213"
+function = "machine-builder-code"
+en = "Live tool on"
+ru = "Приводной инструмент вкл."
+reference = "test"
+)", "user.toml");
+    INFO((errors.empty() ? std::string() : errors.front().message));
+    REQUIRE(errors.empty());
+    const auto d = detect_dialect("O1\nG0 X20. Z2.\nM213\nG1 Z-5. F100.\nM30\n", registry);
+    CHECK(d.dialect == "user-lathe-b2");
+    bool explained = false;
+    for (const std::string& r : d.reasons) explained |= r.find("M213 is this shop's live tool on") != std::string::npos;
+    CHECK(explained);
+    // The built-in registry does not know it.
+    CHECK(detect_dialect("O1\nG0 X20. Z2.\nM213\nM30\n").dialect != "user-lathe-b2");
 }
 
 // reference/README.md "Example files": `(DIALECT: <dialect id> [- machine options])` heads every
