@@ -3,7 +3,9 @@
 
 #include <iostream>
 
+#include "analyzer/explain.hpp"
 #include "analyzer/output.hpp"
+#include "analyzer/registry.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 #include "project/workspace.hpp"
@@ -12,72 +14,28 @@ namespace kerf::cli {
 
 namespace {
 
-const char* availability_text(dialects::Availability a) {
-    switch (a) {
-        case dialects::Availability::standard: return "standard";
-        case dialects::Availability::optional: return "optional";
-        case dialects::Availability::not_fitted: return "not fitted";
-        case dialects::Availability::machine_specific: return "machine-specific";
-        case dialects::Availability::unlisted: return "not in the seed table";
-    }
-    return "?";
-}
-
-std::string join(const std::vector<std::string>& items, const char* sep) {
-    std::string out;
-    for (const std::string& s : items) out += (out.empty() ? "" : sep) + s;
-    return out;
-}
-
 struct ExplainOptions {
     std::string code;
-    std::string dialect = "fanuc-lathe-a";
+    std::string dialect;   // empty: every dialect that has the code
     std::string lang = "en";
     std::vector<std::string> dialect_files;
 };
 
+// analyzer::explain does the work (the server's hover renders the same data); this prints it.
 int run_explain(const ExplainOptions& o) {
-    if (const analyzer::Rule* rule = analyzer::builtin_rules().find(o.code)) {   // K1001 or its name
-        std::cout << analyzer::format_rule_docs(*rule);
-        return kExitClean;
-    }
     const project::DialectRegistry reg =
         project::load_dialects({o.dialect_files.begin(), o.dialect_files.end()}, project::DiskFileSystem());
     ProblemPrinter().print(reg.problems);
-    const dialects::Dialect* d = reg.registry.find(o.dialect);
-    if (!d) {
-        std::cerr << fmt::format("kerf: unknown dialect '{}'; `kerf dialects` lists them\n", o.dialect);
-        return kExitUsage;
+    const analyzer::Language lang = o.lang == "ru" ? analyzer::Language::ru : analyzer::Language::en;
+    const analyzer::Explanation e = analyzer::explain({o.code, o.dialect, lang}, reg.registry, analyzer::builtin_rules());
+    const std::string text = analyzer::format_explanation(e, lang);
+    switch (e.kind) {
+        case analyzer::Explanation::Kind::rule:
+        case analyzer::Explanation::Kind::code: std::cout << text; return kExitClean;
+        case analyzer::Explanation::Kind::unknown_dialect:
+        case analyzer::Explanation::Kind::not_understood: std::cerr << text; return kExitUsage;
+        default: std::cerr << text; return kExitFindings;
     }
-    if (o.lang != "en" && o.lang != "ru") {
-        std::cerr << "kerf: --lang must be en or ru\n";
-        return kExitUsage;
-    }
-    const dialects::CodeInfo* info = d->code(o.code);
-    if (!info) {
-        std::cerr << fmt::format("kerf: {} is not a code of {} (alarm 010 on the control)\n", o.code, d->id);
-        return kExitFindings;
-    }
-    const bool ru = o.lang == "ru";
-    std::cout << fmt::format("{} — {}\n", info->spelling, ru ? info->ru : info->en);
-    if (!info->aliases.empty()) std::cout << fmt::format("  {}: {}\n", ru ? "также" : "also written", join(info->aliases, ", "));
-    std::cout << fmt::format("  {}: {}\n", ru ? "диалект" : "dialect", d->id);
-    if (info->letter == 'G') {
-        std::cout << fmt::format("  {}: {}{}\n", ru ? "группа" : "group", info->group,
-                                 info->group == "00" ? (ru ? " (однократный)" : " (one-shot)")
-                                                     : (ru ? " (модальный)" : " (modal)"));
-        if (info->power_on_default) std::cout << (ru ? "  активен при включении и сбросе\n" : "  active at power-on and reset\n");
-    }
-    std::cout << fmt::format("  {}: {}\n", ru ? "функция" : "function", info->function);
-    if (!info->words.empty()) std::cout << fmt::format("  {}: {}\n", ru ? "адреса" : "words", join(info->words, " "));
-    if (!info->required.empty()) std::cout << fmt::format("  {}: {}\n", ru ? "обязательные" : "required", join(info->required, " "));
-    for (const auto& alternatives : info->required_one_of)
-        std::cout << fmt::format("  {}: {}\n", ru ? "одно из" : "one of", join(alternatives, " "));
-    std::cout << fmt::format("  {}: {}{}\n", ru ? "наличие" : "availability", availability_text(info->availability),
-                             info->availability_note.empty() ? "" : " — " + info->availability_note);
-    if (!info->notes.empty()) std::cout << fmt::format("  {}: {}\n", ru ? "примечания" : "notes", info->notes);
-    std::cout << fmt::format("  {}: {}\n", ru ? "источник" : "reference", info->reference);
-    return kExitClean;
 }
 
 }  // namespace
@@ -109,9 +67,9 @@ Command add_dialects_command(CLI::App& app) {
 
 Command add_explain_command(CLI::App& app) {
     auto o = std::make_shared<ExplainOptions>();
-    CLI::App* cmd = app.add_subcommand("explain", "describe a G or M code of a dialect, or a check rule (K1001)");
+    CLI::App* cmd = app.add_subcommand("explain", "describe a G or M code of a dialect, a check rule (K1001) or a diagnostic id (S0101)");
     cmd->add_option("code", o->code, "G71, M98, G12.1 ...")->required();
-    cmd->add_option("--dialect", o->dialect, "dialect id (default fanuc-lathe-a)");
+    cmd->add_option("--dialect", o->dialect, "dialect id (default: every dialect that has the code)");
     cmd->add_option("--lang", o->lang, "en or ru")->check(CLI::IsMember({"en", "ru"}));
     cmd->add_option("--dialect-file", o->dialect_files, "also load a dialect data file (TOML)");
     return [o] { return run_explain(*o); };

@@ -81,6 +81,27 @@ TEST_CASE("kerf explain") {
         CHECK(r.exit_code == 1);
         CHECK(contains(r.out, "G999"));
     }
+    SECTION("K9999 is not a rule (issue 12: it said 'not a code of fanuc-lathe-a')") {
+        const Run r = kerf_cli("explain K9999");
+        INFO(r.out);
+        CHECK(r.exit_code == 1);
+        CHECK(contains(r.out, "K9999 is not a rule of kerf check"));
+        CHECK_FALSE(contains(r.out, "fanuc-lathe-a"));
+    }
+    SECTION("G81 without --dialect shows the dialects that have it (the mills; no lathe system has G81)") {
+        const Run r = kerf_cli("explain G81");
+        INFO(r.out);
+        CHECK(r.exit_code == 0);
+        CHECK(contains(r.out, "fanuc-mill"));
+        CHECK_FALSE(contains(r.out, "fanuc-lathe-a"));
+    }
+    SECTION("a parser diagnostic id names its rule") {
+        const Run r = kerf_cli("explain S0103");
+        INFO(r.out);
+        CHECK(r.exit_code == 0);
+        CHECK(contains(r.out, "S0103 is reported by kerf check as K1003"));
+        CHECK(contains(r.out, "letter-o-for-zero"));
+    }
     SECTION("an unknown dialect exits 2") {
         const Run r = kerf_cli("explain G71 --dialect nope");
         INFO(r.out);
