@@ -115,6 +115,8 @@ std::string function_tables_markdown(const Registry& registry) {
     std::vector<std::pair<std::string, const Dialect*>> tables;
     for (const std::string& id : registry.ids())
         if (const Dialect* d = registry.find(id); d && d->overlays.empty()) tables.emplace_back(id, d);
+    // By id: derived dialects are registered after their bases, the tables list them in name order.
+    std::sort(tables.begin(), tables.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const DialectFile& overlay : registry.overlay_files()) tables.emplace_back(overlay.dialect.id, &overlay.dialect);
     std::string out;
     for (const char letter : {'G', 'M'}) {
