@@ -164,6 +164,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"live-tool-rigid-tapping", 'G', traits::cycle, "SPINNER G384: rigid tapping with a live tool (repeat G384 in every hole block)"},
     {"live-tool-rigid-tapping-cancel", 'G', traits::cycle, "SPINNER G380: cancel G384"},
     {"live-tool-stop", 'M', 0, "Live tool stop"},
+    {"local-subprogram-call", 'M', 0, "[Haas] M97 P: call a label of this program as a local subroutine (references/references.hpp)"},
     {"local-system-cancel", 'G', 0, "Cancel the local coordinate system (pcnc-mill G152)"},
     {"local-system-current-point", 'G', traits::not_in_plane_transform, "Local coordinate system placed so that the current tool point takes the programmed values"},
     {"local-system-shift", 'G', traits::not_in_plane_transform, "FANUC local coordinate system: origin shifted by the programmed vector"},
@@ -366,6 +367,8 @@ inline constexpr FunctionId macro_call = FunctionId::known("macro-call");
 inline constexpr FunctionId modal_macro_call = FunctionId::known("modal-macro-call");
 inline constexpr FunctionId subprogram_call = FunctionId::known("subprogram-call");
 inline constexpr FunctionId subprogram_return = FunctionId::known("subprogram-return");
+// [Haas] M97 P: no built-in dialect has it yet (issue 15's Haas dialects); the resolver knows it.
+inline constexpr FunctionId local_subprogram_call = FunctionId::known("local-subprogram-call");
 inline constexpr FunctionId circular_cw = FunctionId::known("circular-cw");
 inline constexpr FunctionId circular_ccw = FunctionId::known("circular-ccw");
 inline constexpr FunctionId thread_cutting = FunctionId::known("thread-cutting");

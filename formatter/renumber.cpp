@@ -9,12 +9,12 @@
 
 #include "ast/diagnostic_ids.hpp"
 #include "dialects/functions.hpp"
+#include "references/references.hpp"
 
 namespace kerf::formatter {
 
 namespace {
 
-namespace fn = dialects::functions;
 using ast::Diagnostic;
 using ast::Severity;
 
@@ -39,7 +39,7 @@ public:
 
     std::variant<Renumbering, std::vector<Diagnostic>> run() {
         if (!syntax_clean()) return problems_;
-        for (std::uint32_t p = 0; p < file_.programs().size(); ++p) collect_references(p);
+        collect_references();
         if (!problems_.empty()) return problems_;
         std::vector<std::set<std::int64_t>> referenced(file_.programs().size());
         for (const Reference& r : references_)
@@ -92,104 +92,46 @@ private:
         return true;
     }
 
-    std::optional<std::uint32_t> program_numbered(std::int64_t number) const {
-        const auto& programs = file_.programs();
-        for (std::uint32_t p = 0; p < programs.size(); ++p)
-            if (programs[p].number == number) return p;
-        return std::nullopt;
-    }
-
-    bool calls(std::uint32_t caller, std::int64_t number) const {
-        const ast::Program& p = file_.programs()[caller];
-        for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
-            const ast::BlockView view = file_.block(b);
-            if (const auto call = view.subprogram_call(); call && call->program == number) return true;
-            if (const auto call = view.macro_call(); call && call->program == number) return true;
-        }
-        return false;
-    }
-
-    // M99 P n returns to label n of the caller (dialects.md §3.6): the programs of this file that call
-    // this one, and this one itself when it is the file's first program (M99 in a main program).
-    std::vector<std::uint32_t> callers_of(std::uint32_t program) const {
-        std::vector<std::uint32_t> out;
-        const auto number = file_.programs()[program].number;
-        for (std::uint32_t p = 0; p < file_.programs().size(); ++p)
-            if ((p == 0 && program == 0) || (number && calls(p, *number))) out.push_back(p);
-        return out;
-    }
-
-    // A numeric word of the block as a reference; refuses an expression.
-    void word_reference(std::uint32_t block, std::uint32_t token, std::vector<std::uint32_t> programs,
-                        std::string_view what) {
-        const ast::Token& t = tree_.tokens[token];
-        const auto value = ast::integer_value(tree_, t);
-        if (!value) {
-            refuse(block, t.range(), fmt::format("{} '{}' is not a plain sequence number", what, tree_.spelling(t)),
-                   "write the sequence number as a plain integer, or keep the block numbers (block_numbers = \"keep\")");
-            return;
-        }
-        references_.push_back({block, token, std::nullopt, *value, std::move(programs)});
-    }
-
-    void collect_references(std::uint32_t program) {
-        const ast::Program& p = file_.programs()[program];
-        for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
-            const ast::BlockView view = file_.block(b);
-            for (const std::uint32_t s : view.statements()) statement_references(b, s, program);
-            cycle_references(view, program);
-            call_references(view, program);
-        }
-    }
-
-    void cycle_references(const ast::BlockView& view, std::uint32_t program) {
-        for (const ast::CodeRef& g : view.g_codes()) {
-            // Cycles whose P and Q name the first and last block of a profile (cycles.md §1–§4: G70–G73 in
-            // system A, G72–G75 in C): a trait of the function, never the number.
-            if (!g.info || !g.info->has(dialects::traits::profile_cycle))
+    // Every label reference of the file (references/references.hpp: GOTO n, G70–G73 P/Q, M98 Q,
+    // M99 P, M97 P) with the programs whose labels it may mean; a computed one is refused.
+    void collect_references() {
+        for (const references::Reference& r : references::file_references(file_)) {
+            if (!references::is_label(r.kind)) continue;
+            if (!r.value) {
+                refuse_computed(r);
                 continue;
-            for (const char letter : {'P', 'Q'})
-                if (const auto w = view.word(letter))
-                    word_reference(static_cast<std::uint32_t>(view.index()), *w, {program},
-                                   fmt::format("{} {}", g.info->spelling, letter));
-            return;
-        }
-    }
-
-    void call_references(const ast::BlockView& view, std::uint32_t program) {
-        const auto b = static_cast<std::uint32_t>(view.index());
-        if (view.has_code('M', fn::subprogram_call)) {
-            if (const auto q = view.word('Q')) {
-                // M98 Q: a label of the called program, or of this one without P.
-                const auto call = view.subprogram_call();
-                const auto target = call ? program_numbered(call->program) : std::optional<std::uint32_t>(program);
-                std::vector<std::uint32_t> programs;
-                if (target) programs.push_back(*target);   // a program in another file keeps its numbers
-                word_reference(b, *q, std::move(programs), "M98 Q");
             }
-        }
-        if (view.has_code('M', fn::subprogram_return))
-            if (const auto p = view.word('P')) word_reference(b, *p, callers_of(program), "M99 P");
-    }
-
-    void statement_references(std::uint32_t block, std::uint32_t token, std::uint32_t program) {
-        for (std::int32_t s = tree_.tokens[token].payload; s >= 0;) {
-            const ast::Statement& st = tree_.statements[static_cast<std::size_t>(s)];
-            if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) label_reference(block, token, st, program);
-            s = st.kind == ast::StatementKind::if_then ? st.then_statement : -1;
+            // A label of a program in another file (M98 P Q) keeps its value: that file keeps its numbers.
+            references::LabelScope scope = references::label_scope(file_, r);
+            const std::optional<ast::Range> label = r.kind == references::Kind::goto_label ? std::optional(r.range) : std::nullopt;
+            references_.push_back({r.block, r.token, label, *r.value, std::move(scope.programs)});
         }
     }
 
-    void label_reference(std::uint32_t block, std::uint32_t token, const ast::Statement& st, std::uint32_t program) {
-        const ast::Expr* e = st.label >= 0 ? &tree_.exprs[static_cast<std::size_t>(st.label)] : nullptr;
-        const double v = e && e->kind == ast::ExprKind::number ? tree_.number_value(*e) : NAN;
-        if (!std::isfinite(v) || v != std::floor(v) || v < 0 || v > 1e15) {
-            const ast::Range r = e ? e->range() : st.range;
-            refuse(block, r, fmt::format("GOTO '{}' is computed, so the block it jumps to is known only at run time", tree_.slice(r)),
+    // "G70 P", "M99 P": the code's spelling in the dialect table and the letter.
+    std::string what(const references::Reference& r) const {
+        std::vector<ast::CodeRef> g, m;
+        file_.block(r.block).collect_codes(g, m);
+        for (const auto* codes : {&g, &m})
+            for (const ast::CodeRef& c : *codes)
+                if (static_cast<std::int32_t>(c.token) == r.code_token && c.info) return fmt::format("{} {}", c.info->spelling, r.letter);
+        return fmt::format("{} {}", tree_.spelling(tree_.tokens[static_cast<std::size_t>(r.code_token)]), r.letter);
+    }
+
+    void refuse_computed(const references::Reference& r) {
+        if (r.kind == references::Kind::goto_label) {
+            refuse(r.block, r.range, fmt::format("GOTO '{}' is computed, so the block it jumps to is known only at run time", tree_.slice(r.range)),
                    "write the label as a number (GOTO 100), or keep the block numbers (block_numbers = \"keep\")");
             return;
         }
-        references_.push_back({block, token, e->range(), static_cast<std::int64_t>(v), {program}});
+        const ast::Token& t = tree_.tokens[r.token];
+        if (r.kind == references::Kind::call_label && ast::integer_value(tree_, t)) {
+            refuse(r.block, t.range(), fmt::format("M98 Q '{}' is a label of the program P names, and P is computed", tree_.spelling(t)),
+                   "write P as a plain program number, or keep the block numbers (block_numbers = \"keep\")");
+            return;
+        }
+        refuse(r.block, t.range(), fmt::format("{} '{}' is not a plain sequence number", what(r), tree_.spelling(t)),
+               "write the sequence number as a plain integer, or keep the block numbers (block_numbers = \"keep\")");
     }
 
     // --- numbering ---------------------------------------------------------------------------------

@@ -7,6 +7,7 @@
 #include "analyzer/rules/common.hpp"
 #include "ast/diagnostic_ids.hpp"
 #include "dialects/alarms.hpp"
+#include "references/references.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -15,26 +16,21 @@ namespace {
 using S = Severity;
 namespace fn = dialects::functions;
 
-
 struct Target {
     std::uint32_t token;
     std::int64_t label;
 };
 
-// Where a block jumps to in its own program: G70–G73 P/Q, GOTO n, M98 Q without P.
+// Where a block jumps to in its own program (references/references.hpp): G70–G73 P/Q, GOTO n,
+// M97 P, M98 Q without P. M99 P and M98 P Q name labels of other programs.
 std::vector<Target> local_targets(const BlockContext& b) {
     std::vector<Target> out;
-    for (const ast::CodeRef& c : b.g)
-        if (c.info && c.info->has(dialects::traits::profile_cycle))   // G70–G73 P/Q: the contour's first and last N (cycles.md §5)
-            for (const char letter : {'P', 'Q'})
-                if (const auto w = number_word(b, letter)) out.push_back({w->token, static_cast<std::int64_t>(w->value)});
-    if (b.has_function(fn::subprogram_call) && !number_word(b, 'P'))
-        if (const auto q = number_word(b, 'Q')) out.push_back({q->token, static_cast<std::int64_t>(q->value)});
-    for (const std::uint32_t s : b.view.statements()) {
-        const ast::Statement& st = b.tree().statements[static_cast<std::size_t>(b.token(s).payload)];
-        if (st.kind != ast::StatementKind::goto_ && st.kind != ast::StatementKind::if_goto) continue;
-        if (const auto label = constant_of(b.tree(), st.label))
-            out.push_back({s, static_cast<std::int64_t>(*label)});
+    const auto block = static_cast<std::uint32_t>(b.view.index());
+    for (const references::Reference& r : references::block_references(b.file.typed, static_cast<std::uint32_t>(b.program), block)) {
+        const bool local = r.kind == references::Kind::goto_label || r.kind == references::Kind::profile_label ||
+                           r.kind == references::Kind::local_call_label ||
+                           (r.kind == references::Kind::call_label && !r.label_program && !b.view.word('P'));
+        if (local && r.value) out.push_back({r.token, *r.value});
     }
     return out;
 }
@@ -81,13 +77,13 @@ struct CalledProgram {
     std::uint32_t token = 0;   // the P word
 };
 
-// The program an M98 P, G65 P or G66 P block calls (a constant P), or nullopt.
-std::optional<CalledProgram> called_program(const BlockContext& b) {
-    if (b.has_function(fn::subprogram_call))
-        if (const auto call = b.view.subprogram_call(); call && number_word(b, 'P')) return CalledProgram{call->program, call->p_token};
-    if (b.has_function(fn::macro_call) || b.has_function(fn::modal_macro_call))
-        if (const auto p = number_word(b, 'P')) return CalledProgram{static_cast<std::int64_t>(p->value), p->token};
-    return std::nullopt;
+// The programs a block calls by a constant number (M98 P, G65 P, G66 P: references/references.hpp).
+std::vector<CalledProgram> called_programs(const BlockContext& b) {
+    std::vector<CalledProgram> out;
+    const auto block = static_cast<std::uint32_t>(b.view.index());
+    for (const references::Reference& r : references::block_references(b.file.typed, static_cast<std::uint32_t>(b.program), block))
+        if (!references::is_label(r.kind) && r.value) out.push_back({*r.value, r.token});
+    return out;
 }
 
 bool in_this_file(const BlockContext& b, std::int64_t number) {
@@ -100,12 +96,13 @@ bool in_this_file(const BlockContext& b, std::int64_t number) {
 class ProgramNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
-        const std::optional<CalledProgram> call = called_program(b);
-        if (!call || b.file.program_exists(call->number)) return;
-        out.report(b.token(call->token).range(),
-                   fmt::format("program O{:04} is not in this file, the files of its folder or the library folders (alarm 078)", call->number),
-                   fmt::format("put O{:04} into this file or a file of its folder, or name the folder that holds it in "
-                               ".kerf.toml [programs] library", call->number));
+        for (const CalledProgram& call : called_programs(b)) {
+            if (b.file.program_exists(call.number)) continue;
+            out.report(b.token(call.token).range(),
+                       fmt::format("program O{:04} is not in this file, the files of its folder or the library folders (alarm 078)", call.number),
+                       fmt::format("put O{:04} into this file or a file of its folder, or name the folder that holds it in "
+                                   ".kerf.toml [programs] library", call.number));
+        }
     }
 };
 
@@ -114,16 +111,18 @@ public:
 class ProgramInSeveralFiles : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
-        const std::optional<CalledProgram> call = called_program(b);
-        if (!call || !b.file.program_files || in_this_file(b, call->number)) return;
-        const std::vector<std::string> files = b.file.program_files(call->number);
-        if (files.size() < 2) return;
-        std::string others;
-        for (std::size_t i = 1; i < files.size(); ++i) others += (i > 1 ? ", " : "") + files[i];
-        out.report(b.token(call->token).range(),
-                   fmt::format("program O{:04} is in {} files: the dry run takes {}, also in {}", call->number, files.size(),
-                               files.front(), others),
-                   "keep one copy of the program, or give the copies their own numbers");
+        if (!b.file.program_files) return;
+        for (const CalledProgram& call : called_programs(b)) {
+            if (in_this_file(b, call.number)) continue;
+            const std::vector<std::string> files = b.file.program_files(call.number);
+            if (files.size() < 2) continue;
+            std::string others;
+            for (std::size_t i = 1; i < files.size(); ++i) others += (i > 1 ? ", " : "") + files[i];
+            out.report(b.token(call.token).range(),
+                       fmt::format("program O{:04} is in {} files: the dry run takes {}, also in {}", call.number, files.size(),
+                                   files.front(), others),
+                       "keep one copy of the program, or give the copies their own numbers");
+        }
     }
 };
 
