@@ -50,7 +50,8 @@ private:
 };
 
 // Every static check sees every code block once, in text order, with the codes computed once.
-void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& tallies, std::vector<Finding>& out) {
+void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& tallies, std::vector<Finding>& out,
+                const std::atomic<bool>* cancel = nullptr) {
     std::vector<StaticRun> checks;
     for (const Rule* r : rules)
         if (r->make_static) checks.push_back({r->make_static(), Reporter(*r, out, tallies.of(*r))});
@@ -61,6 +62,7 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
         ModalState modal(ctx.dialect);
         for (StaticRun& c : checks) c.check->begin_program(ctx, p, c.out);
         for (std::uint32_t b = programs[p].first_block; b < programs[p].end_block; ++b) {
+            if (cancel && (b & 4095) == 0 && cancel->load(std::memory_order_relaxed)) return;
             const ast::BlockView view = ctx.typed.block(b);
             const ast::BlockKind kind = view.block().kind;
             if (kind != ast::BlockKind::code && kind != ast::BlockKind::program_start) continue;
@@ -87,18 +89,25 @@ void map_diagnostics(const ast::SyntaxTree& tree, const std::vector<ast::Diagnos
     }
 }
 
+// Thrown out of the run by the sink when the caller cancels it (the interpreter has no
+// cancellation of its own yet: NOTICES.md asks `flow` for RunOptions::cancel).
+struct RunCancelled {};
+
 // The sink of the dry run: each event to every dynamic check, alarms to the rule that owns their
 // number. Findings about other files (a subprogram loaded from the folder) are dropped: that file
-// is checked on its own.
+// is checked on its own. State events (asked for by an observer) go to the observer only.
 class FanOut : public interpreter::EventSink {
 public:
     FanOut(const RunContext& run, const Registry& registry, const ActiveRules& rules, Tallies& tallies,
-           std::vector<Finding>& out)
-        : run_(run), registry_(registry), rules_(rules), tallies_(tallies), out_(out) {
+           std::vector<Finding>& out, const DryRunHooks& hooks)
+        : run_(run), registry_(registry), rules_(rules), tallies_(tallies), out_(out), hooks_(hooks) {
         for (const Rule* r : rules)
             if (r->make_dynamic) checks_.push_back({r->make_dynamic(), Reporter(*r, out, tallies.of(*r))});
     }
     void on_event(const interpreter::Event& e) override {
+        if (hooks_.cancel && hooks_.cancel->load(std::memory_order_relaxed)) throw RunCancelled{};
+        if (hooks_.observer) hooks_.observer->on_event(e);
+        if (e.kind == interpreter::EventKind::state) return;
         const std::size_t before = out_.size();
         for (DynamicRun& c : checks_) c.check->event(run_, e, c.out);
         if (e.kind == interpreter::EventKind::alarm) report_alarm(e);
@@ -126,6 +135,7 @@ private:
     const ActiveRules& rules_;
     Tallies& tallies_;
     std::vector<Finding>& out_;
+    const DryRunHooks& hooks_;
     std::vector<DynamicRun> checks_;
 };
 
@@ -133,18 +143,25 @@ bool needs_run(const ActiveRules& rules) {
     return std::any_of(rules.begin(), rules.end(), [](const Rule* r) { return r->make_dynamic || !r->alarms.empty(); });
 }
 
-void run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
+// False when cancelled.
+bool run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                  const interpreter::Setup& setup, const Registry& registry, const ActiveRules& rules,
-                 const CheckOptions& check, Tallies& tallies, std::vector<Finding>& out) {
+                 const CheckOptions& check, Tallies& tallies, std::vector<Finding>& out, const DryRunHooks& hooks = {}) {
     const std::optional<interpreter::ProgramRef> main = programs.first_program(file);
-    if (!main || !needs_run(rules)) return;
+    if (!main || (!needs_run(rules) && !hooks.observer)) return true;
     const RunContext run{programs, file, dialect, setup};
-    FanOut sink(run, registry, rules, tallies, out);
+    FanOut sink(run, registry, rules, tallies, out, hooks);
     interpreter::RunOptions options;
     options.lenient = true;   // syntax defects are the syntax rules' findings; go on and check the rest
     options.time_limit = check.time_limit;
-    interpreter::run(programs, *main, dialect, setup, sink, options);
+    options.emit_state = hooks.emit_state;
+    try {
+        interpreter::run(programs, *main, dialect, setup, sink, options);
+    } catch (const RunCancelled&) {
+        return false;
+    }
     sink.finish();
+    return true;
 }
 
 // At most `limit` findings of a rule in the file (the first ones in text order); the others,
@@ -178,6 +195,16 @@ void cap_per_rule(std::vector<Finding>& findings, std::size_t limit, const std::
         findings.push_back(std::move(f));
     }
 }
+
+
+ActiveRules active_rules(const Registry& registry, const CheckConfig& config) {
+    ActiveRules rules;
+    for (const Rule& r : registry.rules())
+        if (config.enabled(r)) rules.push_back(&r);
+    return rules;
+}
+
+const Registry& registry_of(const CheckOptions& options) { return options.registry ? *options.registry : builtin_rules(); }
 
 // Suppressed findings out, configured severities in, one finding per rule and line (a static rule
 // and the dry run may both see the same defect), sorted by position.
@@ -228,12 +255,57 @@ ast::Range trim_range(const ast::SyntaxTree& tree, ast::Range range) {
     return range;
 }
 
+std::vector<Finding> check_static(const interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
+                                  const interpreter::Setup& setup, const CheckOptions& options,
+                                  std::function<bool(std::int64_t)> program_exists, const std::atomic<bool>* cancel) {
+    const Registry& registry = registry_of(options);
+    const ActiveRules rules = active_rules(registry, options.config);
+    const interpreter::LoadedFile& loaded = programs.file(file);
+    const ast::SyntaxTree& tree = *loaded.whole_tree();
+    const ast::TypedFile& typed = *loaded.whole_typed();
+    if (!program_exists) {
+        const interpreter::ProgramSet::Loader loader = programs.loader();
+        program_exists = [&loaded, loader](std::int64_t n) { return loaded.find_program(n).has_value() || (loader && loader(n).has_value()); };
+    }
+    std::vector<Finding> out;
+    // Uncapped here: finish_findings caps the phases' findings together (as check_file does).
+    const std::vector<Suppression> suppressions = find_suppressions(tree);
+    Tallies tallies(0, suppressions);
+    const FileContext ctx{typed, dialect, setup, std::move(program_exists), options.program_files};
+    run_static(ctx, rules, tallies, out, cancel);
+    map_diagnostics(tree, tree.diagnostics, registry, rules, tallies, out);
+    map_diagnostics(tree, typed.diagnostics(), registry, rules, tallies, out);
+    return out;
+}
+
+std::optional<std::vector<Finding>> check_dry_run(interpreter::ProgramSet& programs, std::uint32_t file,
+                                                  const dialects::Dialect& dialect, const interpreter::Setup& setup,
+                                                  const CheckOptions& options, const DryRunHooks& hooks) {
+    const Registry& registry = registry_of(options);
+    const std::vector<Suppression> suppressions = find_suppressions(*programs.file(file).whole_tree());
+    Tallies tallies(0, suppressions);
+    std::vector<Finding> out;
+    if (!run_dynamic(programs, file, dialect, setup, registry, active_rules(registry, options.config), options, tallies, out, hooks))
+        return std::nullopt;
+    return out;
+}
+
+void finish_findings(std::vector<Finding>& findings, const ast::SyntaxTree& tree, const ast::LineIndex& lines,
+                     const CheckOptions& options) {
+    const Registry& registry = registry_of(options);
+    const std::vector<Suppression> suppressions = find_suppressions(tree);
+    finalize(findings, suppressions, lines, registry, options.config);
+    // The rules of the findings, so that a cap says "and N more" for each (nothing was dropped earlier).
+    Tallies seen(0, suppressions);
+    for (const Finding& f : findings)
+        if (const Rule* r = registry.find(f.rule)) seen.of(*r);
+    cap_per_rule(findings, options.max_findings_per_rule, {&seen});
+}
+
 std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                                 const interpreter::Setup& setup, const CheckOptions& options) {
-    const Registry& registry = options.registry ? *options.registry : builtin_rules();
-    ActiveRules rules;
-    for (const Rule& r : registry.rules())
-        if (options.config.enabled(r)) rules.push_back(&r);
+    const Registry& registry = registry_of(options);
+    const ActiveRules rules = active_rules(registry, options.config);
     std::vector<Finding> out;
     // The analyzer reads files given whole (ProgramSet::add): the static rules walk every block.
     const interpreter::LoadedFile& loaded = programs.file(file);

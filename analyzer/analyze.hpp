@@ -5,7 +5,10 @@
 // per rule and line, sorted by position, at most CheckOptions::max_findings_per_rule per rule. Pure: no I/O (the program set's loader is the caller's).
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "analyzer/config.hpp"
@@ -13,6 +16,7 @@
 #include "analyzer/registry.hpp"
 #include "interpreter/program_set.hpp"
 #include "interpreter/setup.hpp"
+#include "interpreter/sink.hpp"
 
 namespace kerf::analyzer {
 
@@ -34,6 +38,32 @@ struct CheckOptions {
 // Checks file `file` of `programs` (its first program is run as the main program).
 std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                                 const interpreter::Setup& setup, const CheckOptions& options = {});
+
+// The phases of check_file, apart for the language server, which publishes the static findings at
+// once and the dry run's when it has finished (issue 14). Raw findings: finish_findings makes them
+// what check_file returns.
+
+// The static rules and the parser's and binder's diagnostics. `program_exists` answers K3003
+// (does a called program exist); empty: this file, then the program set's loader.
+// `cancel`, once set, stops the walk at the next program or 4096 blocks (the result is then partial).
+std::vector<Finding> check_static(const interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
+                                  const interpreter::Setup& setup, const CheckOptions& options,
+                                  std::function<bool(std::int64_t)> program_exists = {},
+                                  const std::atomic<bool>* cancel = nullptr);
+
+struct DryRunHooks {
+    interpreter::EventSink* observer = nullptr;   // also sees every event of the run (with state events)
+    bool emit_state = false;                       // RunOptions::emit_state, for the observer only
+    const std::atomic<bool>* cancel = nullptr;     // once set, the run stops at its next event
+};
+// The dry run's findings (dynamic rules and alarms); nullopt when `hooks.cancel` stopped it.
+std::optional<std::vector<Finding>> check_dry_run(interpreter::ProgramSet& programs, std::uint32_t file,
+                                                  const dialects::Dialect& dialect, const interpreter::Setup& setup,
+                                                  const CheckOptions& options, const DryRunHooks& hooks = {});
+
+// Inline suppressions, configured severities, one finding per rule and line, sorted by position.
+void finish_findings(std::vector<Finding>& findings, const ast::SyntaxTree& tree, const ast::LineIndex& lines,
+                     const CheckOptions& options);
 
 // Convenience for tests and the language server: `text` alone (no other files).
 std::vector<Finding> check_text(std::string name, std::string text, const dialects::Dialect& dialect,

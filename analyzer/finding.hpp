@@ -25,6 +25,13 @@ struct Fix {
     std::vector<TextEdit> edits;
 };
 
+// Another place of the same file that the finding is about (the first of two duplicated words, the
+// blocks a label is on): the language server's relatedInformation.
+struct Related {
+    ast::Range range;
+    std::string message;
+};
+
 struct Finding {
     ast::Range range;
     Severity severity = Severity::warning;
@@ -34,6 +41,7 @@ struct Finding {
     std::string hint;           // how to fix it
     std::vector<std::string> notes;   // why it matters, where a value came from
     std::optional<Fix> fix;
+    std::vector<Related> related;
 };
 
 // 1-based line and column (UTF-8 bytes) of a finding's range.

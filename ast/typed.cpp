@@ -183,6 +183,37 @@ void ProgramSplitter::feed(const SyntaxTree& tree, std::uint32_t local, std::uin
     }
 }
 
+namespace {
+Diagnostic second_n_diagnostic(const SyntaxTree& tree, std::uint32_t token) {
+    const Token& n = tree.tokens[token];
+    return {n.range(), Severity::error, ast::diagnostic_id::second_sequence_number, fmt::format("second sequence number '{}' in one block", tree.spelling(n)),
+            "a block has one N word, at its start; remove this one or split the block"};
+}
+}  // namespace
+
+void TypedFile::split_programs() {
+    ProgramSplitter splitter;
+    for (std::uint32_t i = 0; i < tree_->block_count(); ++i) splitter.feed(*tree_, i, i);
+    splitter.finish(static_cast<std::uint32_t>(tree_->block_count()));
+    programs_ = std::move(splitter.programs());
+}
+
+// Call forms that contradict each other (dialects.md §3.6).
+void TypedFile::check_call_forms(const std::vector<std::size_t>& call_blocks) {
+    for (const std::size_t i : call_blocks) {
+        const BlockView view = block(i);
+        const auto call = view.subprogram_call();
+        const auto l = view.word('L');
+        if (call && call->packed && l) {
+            const Token& p = tree_->tokens[call->p_token];
+            diagnostics_.push_back(
+                {p.range(), Severity::error, ast::diagnostic_id::packed_p_with_l,
+                 fmt::format("M98 '{}' packs the repeat count into P and also has L", tree_->spelling(p)),
+                 "use one form: M98 P<repeats><4-digit program> or M98 P<program> L<repeats>"});
+        }
+    }
+}
+
 TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start) {
     TypedFile file(tree, dialect);
     BindContext context(dialect.lexical);
@@ -191,32 +222,36 @@ TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bo
     for (std::size_t i = 0; i < tree.block_count(); ++i) {
         const BlockFacts facts = bind_block(tree, dialect, i, context);
         if (facts.calls) call_blocks.push_back(i);
-        if (facts.second_n) {
-            const Token& n = tree.tokens[facts.second_n];
-            file.diagnostics_.push_back(
-                {n.range(), Severity::error, ast::diagnostic_id::second_sequence_number,
-                 fmt::format("second sequence number '{}' in one block", tree.spelling(n)),
-                 "a block has one N word, at its start; remove this one or split the block"});
-        }
+        if (facts.second_n) file.diagnostics_.push_back(second_n_diagnostic(tree, facts.second_n));
     }
     file.linear_at_end_ = context.linear;
-    ProgramSplitter splitter;
-    for (std::uint32_t i = 0; i < tree.block_count(); ++i) splitter.feed(tree, i, i);
-    splitter.finish(static_cast<std::uint32_t>(tree.block_count()));
-    file.programs_ = std::move(splitter.programs());
-    // Call forms that contradict each other (dialects.md §3.6).
-    for (const std::size_t i : call_blocks) {
-        const BlockView view = file.block(i);
-        const auto call = view.subprogram_call();
-        const auto l = view.word('L');
-        if (call && call->packed && l) {
-            const Token& p = tree.tokens[call->p_token];
-            file.diagnostics_.push_back(
-                {p.range(), Severity::error, ast::diagnostic_id::packed_p_with_l,
-                 fmt::format("M98 '{}' packs the repeat count into P and also has L", tree.spelling(p)),
-                 "use one form: M98 P<repeats><4-digit program> or M98 P<program> L<repeats>"});
-        }
+    file.split_programs();
+    file.check_call_forms(call_blocks);
+    return file;
+}
+
+TypedFile TypedFile::bind_edited(SyntaxTree& tree, const TypedFile& before, const BlockSplice& splice) {
+    const dialects::Dialect& dialect = *before.dialect_;
+    if (dialect.lexical.plain_direct_drawing) return bind(tree, dialect);
+    TypedFile file(tree, dialect);
+    for (const Diagnostic& d : before.diagnostics_)
+        if (d.range.begin < splice.old_begin) file.diagnostics_.push_back(d);
+    BindContext context(dialect.lexical);   // `linear` matters only for plain direct drawing
+    std::vector<std::size_t> call_blocks;
+    for (std::size_t i = splice.first; i < splice.first + splice.added; ++i) {
+        const BlockFacts facts = bind_block(tree, dialect, i, context);
+        if (facts.calls) call_blocks.push_back(i);
+        if (facts.second_n) file.diagnostics_.push_back(second_n_diagnostic(tree, facts.second_n));
     }
+    file.check_call_forms(call_blocks);
+    for (Diagnostic d : before.diagnostics_) {
+        if (d.range.begin < splice.old_end) continue;
+        d.range.begin = static_cast<std::uint32_t>(d.range.begin + splice.shift);
+        d.range.end = static_cast<std::uint32_t>(d.range.end + splice.shift);
+        file.diagnostics_.push_back(std::move(d));
+    }
+    file.linear_at_end_ = before.linear_at_end_;
+    file.split_programs();
     return file;
 }
 

@@ -47,6 +47,18 @@ struct MacroCall {               // G65 / G66 P_ L_ arguments
 
 class TypedFile;
 
+// What an edit did to a tree's blocks (the language server's incremental re-parse): the old blocks
+// [first, first + removed) became the new blocks [first, first + added); the bytes from old_end on
+// moved by `shift`.
+struct BlockSplice {
+    std::uint32_t first = 0;
+    std::uint32_t removed = 0;
+    std::uint32_t added = 0;
+    std::uint32_t old_begin = 0;   // the old blocks' bytes [old_begin, old_end)
+    std::uint32_t old_end = 0;
+    std::int64_t shift = 0;
+};
+
 class BlockView {
 public:
     BlockView(const TypedFile& file, std::size_t index) : file_(&file), index_(index) {}
@@ -114,12 +126,19 @@ public:
     std::size_t block_count() const { return tree_->block_count(); }
     BlockView block(std::size_t i) const { return BlockView(*this, i); }
 
+    // Binds `tree`, a copy of `before`'s tree edited as `splice` says, binding only the new blocks:
+    // the copied tokens kept their roles. A dialect where plain A/R read as direct drawing after
+    // G01 (the only role that depends on the blocks before) is bound whole.
+    static TypedFile bind_edited(SyntaxTree& tree, const TypedFile& before, const BlockSplice& splice);
+
     // Re-binds one block after an edit that kept its token range (LSP); modal context is taken from
     // the blocks before it.
     void rebind_block(SyntaxTree& tree, std::size_t index);
 
 private:
     TypedFile(const SyntaxTree& tree, const dialects::Dialect& dialect) : tree_(&tree), dialect_(&dialect) {}
+    void split_programs();
+    void check_call_forms(const std::vector<std::size_t>& call_blocks);
     const SyntaxTree* tree_;
     const dialects::Dialect* dialect_;
     std::vector<Program> programs_;

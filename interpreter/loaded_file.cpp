@@ -16,6 +16,14 @@ struct LoadedFile::Held {
     std::unique_ptr<ast::TypedFile> typed;
     std::unique_ptr<ast::LineIndex> lines;
     std::uint64_t last_use = 0;
+    // A file parsed by its owner (the language server's document): read there, not copied.
+    std::shared_ptr<const void> owner;
+    const ast::SyntaxTree* shared_tree = nullptr;
+    const ast::TypedFile* shared_typed = nullptr;
+    const ast::LineIndex* shared_lines = nullptr;
+    const ast::SyntaxTree& the_tree() const { return shared_tree ? *shared_tree : tree; }
+    const ast::TypedFile& the_typed() const { return shared_typed ? *shared_typed : *typed; }
+    const ast::LineIndex& the_lines() const { return shared_lines ? *shared_lines : *lines; }
 };
 
 LoadedFile::LoadedFile(std::string name, std::string text, const dialects::Dialect& dialect)
@@ -36,6 +44,26 @@ LoadedFile::LoadedFile(std::string name, std::string text, const dialects::Diale
     owned_whole_ = true;
 }
 
+LoadedFile::LoadedFile(std::string name, std::shared_ptr<const void> owner, const ast::TypedFile& typed,
+                       const ast::LineIndex& lines)
+    : name_(std::move(name)), dialect_(typed.dialect()) {
+    auto held = std::make_unique<Held>();
+    held->owner = std::move(owner);
+    held->shared_tree = &typed.tree();
+    held->shared_typed = &typed;
+    held->shared_lines = &lines;
+    text_ = typed.tree().text;
+    Piece piece;
+    piece.end_block = static_cast<std::uint32_t>(typed.block_count());
+    piece.text_end = text_.size();
+    piece.last = true;
+    pieces_.push_back(piece);
+    programs_ = typed.programs();
+    held_.push_back(std::move(held));
+    complete_ = true;
+    owned_whole_ = true;
+}
+
 LoadedFile::LoadedFile(std::string name, std::string_view text, const dialects::Dialect& dialect,
                        StreamOptions options)
     : name_(std::move(name)), text_(text), dialect_(dialect), options_(std::move(options)) {
@@ -45,10 +73,10 @@ LoadedFile::LoadedFile(std::string name, std::string_view text, const dialects::
 LoadedFile::~LoadedFile() { read_ahead_.reset(); }   // the thread stops before the slots go
 
 const ast::SyntaxTree* LoadedFile::whole_tree() const {
-    return owned_whole_ ? &held_.front()->tree : nullptr;
+    return owned_whole_ ? &held_.front()->the_tree() : nullptr;
 }
-const ast::TypedFile* LoadedFile::whole_typed() const { return owned_whole_ ? held_.front()->typed.get() : nullptr; }
-const ast::LineIndex* LoadedFile::whole_lines() const { return owned_whole_ ? held_.front()->lines.get() : nullptr; }
+const ast::TypedFile* LoadedFile::whole_typed() const { return owned_whole_ ? &held_.front()->the_typed() : nullptr; }
+const ast::LineIndex* LoadedFile::whole_lines() const { return owned_whole_ ? &held_.front()->the_lines() : nullptr; }
 
 // The next piece ends at the last line end within `piece_bytes`, or at the first line end after
 // it when a single line is longer: blocks never span lines (grammar/parse.cpp).
@@ -242,13 +270,13 @@ const LoadedFile::Held& LoadedFile::held_for(std::uint32_t block) const {
 }
 
 ast::BlockView LoadedFile::block(std::uint32_t index) const {
-    if (last_held_ && index >= last_first_ && index < last_end_) return last_held_->typed->block(index - last_first_);
+    if (last_held_ && index >= last_first_ && index < last_end_) return last_held_->the_typed().block(index - last_first_);
     const Held& held = held_for(index);
     const Piece& piece = pieces_[held.piece];
     last_held_ = &held;
     last_first_ = piece.first_block();
     last_end_ = piece.end_block;
-    return held.typed->block(index - piece.first_block());
+    return held.the_typed().block(index - piece.first_block());
 }
 
 bool LoadedFile::has_block(std::uint32_t index) const {
@@ -288,9 +316,9 @@ std::optional<std::uint32_t> LoadedFile::first_program() const {
 }
 
 const LoadedFile::Held* LoadedFile::owner(const ast::BlockView& view) const {
-    if (last_held_ && &last_held_->tree == &view.tree()) return last_held_;
+    if (last_held_ && &last_held_->the_tree() == &view.tree()) return last_held_;
     for (const auto& h : held_)
-        if (&h->tree == &view.tree()) return h.get();
+        if (&h->the_tree() == &view.tree()) return h.get();
     return nullptr;
 }
 
@@ -306,7 +334,7 @@ std::uint32_t LoadedFile::line_of(const ast::BlockView& view, std::uint32_t hint
     if (!held) return 0;
     const std::uint32_t first_line = pieces_[held->piece].start.first_line;
     const std::uint32_t local_hint = hint >= first_line ? hint - first_line : 0;
-    return first_line + held->lines->line_near(view.range().begin, local_hint);
+    return first_line + held->the_lines().line_near(view.range().begin, local_hint);
 }
 
 }  // namespace kerf::interpreter

@@ -41,6 +41,9 @@ class LoadedFile {
 public:
     // The whole text, parsed and bound at once.
     LoadedFile(std::string name, std::string text, const dialects::Dialect& dialect);
+    // A file parsed and bound by its owner (the language server's open document), used in place:
+    // `owner` keeps `typed`, its tree and `lines` alive as long as this object.
+    LoadedFile(std::string name, std::shared_ptr<const void> owner, const ast::TypedFile& typed, const ast::LineIndex& lines);
     // A stream over `text`, which must outlive this object.
     LoadedFile(std::string name, std::string_view text, const dialects::Dialect& dialect, StreamOptions options);
     ~LoadedFile();

@@ -8,6 +8,12 @@ std::uint32_t ProgramSet::add(std::string name, std::string text, const dialects
     return static_cast<std::uint32_t>(files_.size() - 1);
 }
 
+std::uint32_t ProgramSet::add_parsed(std::string name, std::shared_ptr<const void> owner, const ast::TypedFile& typed,
+                                     const ast::LineIndex& lines) {
+    files_.push_back(std::make_unique<LoadedFile>(std::move(name), std::move(owner), typed, lines));
+    return static_cast<std::uint32_t>(files_.size() - 1);
+}
+
 std::uint32_t ProgramSet::add_stream(std::string name, std::string_view text, const dialects::Dialect& dialect,
                                      StreamOptions options) {
     files_.push_back(std::make_unique<LoadedFile>(std::move(name), text, dialect, std::move(options)));

@@ -36,6 +36,9 @@ public:
 
     // Parses and binds `text` with the dialect; returns the file index.
     std::uint32_t add(std::string name, std::string text, const dialects::Dialect& dialect);
+    // A file parsed and bound by its owner, used in place (loaded_file.hpp).
+    std::uint32_t add_parsed(std::string name, std::shared_ptr<const void> owner, const ast::TypedFile& typed,
+                             const ast::LineIndex& lines);
     // A file read in pieces as the run reaches them (loaded_file.hpp); `text` must outlive the set.
     std::uint32_t add_stream(std::string name, std::string_view text, const dialects::Dialect& dialect,
                              StreamOptions options);

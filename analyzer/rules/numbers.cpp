@@ -72,6 +72,7 @@ private:
                                 fmt::format("'{}' repeats address {} of '{}' in the same block", b.tree().spelling(t), t.letter,
                                             b.tree().spelling(a)),
                                 "keep one of the two words");
+        f.related.push_back({a.range(), fmt::format("the first {} word", t.letter)});
         if (!a.is_number() || !t.is_number() || b.tree().number_value(a) != b.tree().number_value(t)) return;
         // Same value twice: dropping the second word (and the blanks before it) changes nothing.
         std::uint32_t begin = t.begin;

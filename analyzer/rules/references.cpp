@@ -35,6 +35,13 @@ std::vector<Target> local_targets(const BlockContext& b) {
     return out;
 }
 
+// A block's words without its line break.
+ast::Range block_range(const FileContext& file, std::uint32_t block) {
+    const auto tokens = file.tree().block_tokens(block);
+    if (tokens.empty()) return file.tree().block_range(block);
+    return {tokens.front().begin, tokens.back().begin + tokens.back().length};
+}
+
 class LabelCheck : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
@@ -65,10 +72,17 @@ class AmbiguousLabel : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (const int n = labels().count(t.label); n > 1)
-                out.report(b.token(t.token).range(),
-                           fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
-                           "give each target block a number of its own");
+            if (const int n = labels().count(t.label); n > 1) {
+                Finding& f = out.report(b.token(t.token).range(),
+                                        fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
+                                        "give each target block a number of its own");
+                bool first = true;
+                for (const std::uint32_t block : references::label_blocks(b.file.typed, static_cast<std::uint32_t>(b.program), t.label)) {
+                    f.related.push_back({block_range(b.file, block), first ? fmt::format("N{}: the block the control jumps to", t.label)
+                                                                          : fmt::format("N{} again", t.label)});
+                    first = false;
+                }
+            }
     }
 };
 
@@ -293,8 +307,10 @@ public:
         const ast::Range at = file.tree().tokens[static_cast<std::size_t>(p.o_token)].range();
         for (std::size_t i = 0; i < program; ++i)
             if (file.typed.programs()[i].number == p.number) {
-                out.report(at, fmt::format("program O{:04} is defined twice in this file: calls reach the first one", *p.number),
-                           "renumber one of them");
+                Finding& f = out.report(at, fmt::format("program O{:04} is defined twice in this file: calls reach the first one", *p.number),
+                                        "renumber one of them");
+                const std::int32_t first = file.typed.programs()[i].o_token;
+                if (first >= 0) f.related.push_back({file.tree().tokens[static_cast<std::size_t>(first)].range(), fmt::format("the first O{:04}", *p.number)});
                 return;
             }
     }

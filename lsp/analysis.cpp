@@ -1,0 +1,220 @@
+#include "lsp/analysis.hpp"
+
+#include <charconv>
+#include <unordered_map>
+
+#include "analyzer/analyze.hpp"
+#include "references/references.hpp"
+
+namespace kerf::lsp {
+
+namespace {
+
+using interpreter::Event;
+using interpreter::EventKind;
+
+bool is_move(EventKind k) {
+    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw ||
+           k == EventKind::thread;
+}
+
+double number_after(std::string_view text, std::string_view key) {
+    const std::size_t at = text.rfind(key);
+    if (at == std::string_view::npos) return 0;
+    double v = 0;
+    const char* b = text.data() + at + key.size();
+    std::from_chars(b, text.data() + text.size(), v);
+    return v;
+}
+
+// What the dry run does, block by block, for the checked file (events of other files are
+// subprograms loaded from the folder: they are checked when they are opened).
+class Collector : public interpreter::EventSink {
+public:
+    Collector(const Document& doc, DryRun& run) : doc_(doc), run_(run) {
+        run_.state_of_block.assign(doc.tree().block_count(), -1);
+    }
+
+    void on_event(const Event& e) override {
+        const bool here = e.source.file == 0;
+        const std::uint32_t block = here ? doc_.block_at(e.source.range.begin) : 0;
+        if (e.kind == EventKind::state) {
+            if (here) state(block, e);
+            return;
+        }
+        if (e.kind == EventKind::alarm && here) run_.alarms.emplace_back(block, e.text);
+        if (e.kind == EventKind::end) run_.completed = true;
+        if (!is_move(e.kind) && e.kind != EventKind::dwell) return;
+        add(run_.total, e);
+        if (!here) return;
+        if (const auto program = references::program_of_block(doc_.typed(), block)) add(run_.programs[*program], e);
+        BlockMotion& m = motion_[block];
+        if (e.kind == EventKind::rapid) ++m.rapids;
+        else if (e.kind != EventKind::dwell) ++m.feeds;
+        m.time_s += e.time_s;
+        m.length_mm += e.length_mm;
+    }
+
+    void finish() {
+        for (auto& [block, m] : motion_)
+            if (m.rapids + m.feeds > 1) run_.motion.emplace(block, m);
+    }
+
+private:
+    static void add(ProgramRun& p, const Event& e) {
+        p.time_s += e.time_s;
+        if (e.kind == EventKind::rapid) p.rapid_mm += e.length_mm;
+        else p.feed_mm += e.length_mm;
+        p.time_per_tool[e.tool] += e.time_s;
+        p.length_per_tool[e.tool] += e.length_mm;
+    }
+
+    // The state event's text is "G00 G18 ... F<feed> S<speed> T<tool>" (interpreter/executor.cpp
+    // emit_state); flow's structured state event replaces this parsing (NOTICES.md).
+    void state(std::uint32_t block, const Event& e) {
+        std::int32_t& slot = run_.state_of_block[block];
+        if (slot >= 0) {
+            ++run_.states[static_cast<std::size_t>(slot)].runs;
+            return;
+        }
+        const std::string_view text = e.text;
+        const std::size_t f = text.rfind(" F");
+        const std::string modal(text.substr(0, f == std::string_view::npos ? text.size() : f));
+        auto [it, added] = modal_ids_.emplace(modal, static_cast<std::uint32_t>(run_.modal_texts.size()));
+        if (added) run_.modal_texts.push_back(modal);
+        BlockState s;
+        s.position = e.end;
+        s.feed = e.feed;
+        s.spindle = number_after(text, " S");
+        s.tool = static_cast<std::int32_t>(number_after(text, " T"));
+        s.modal = it->second;
+        s.runs = 1;
+        slot = static_cast<std::int32_t>(run_.states.size());
+        run_.states.push_back(s);
+    }
+
+    const Document& doc_;
+    DryRun& run_;
+    std::unordered_map<std::string, std::uint32_t> modal_ids_;
+    std::unordered_map<std::uint32_t, BlockMotion> motion_;
+};
+
+}  // namespace
+
+AnalysisWorker::AnalysisWorker(ProjectSeam& project, Publish publish)
+    : project_(project), publish_(std::move(publish)), thread_([this] { work(); }) {}
+
+AnalysisWorker::~AnalysisWorker() {
+    {
+        const std::lock_guard lock(mutex_);
+        stop_ = true;
+        cancel_ = true;
+    }
+    changed_.notify_all();
+    thread_.join();
+}
+
+void AnalysisWorker::schedule(std::shared_ptr<const Document> document) {
+    const std::string uri = document->uri();
+    {
+        const std::lock_guard lock(mutex_);
+        if (!pending_.count(uri)) order_.push_back(uri);
+        pending_[uri] = std::move(document);
+        if (running_ == uri) cancel_ = true;
+    }
+    changed_.notify_all();
+}
+
+void AnalysisWorker::forget(const std::string& uri) {
+    const std::lock_guard lock(mutex_);
+    pending_.erase(uri);
+    std::erase(order_, uri);
+    results_.erase(uri);
+    if (running_ == uri) cancel_ = true;
+}
+
+std::shared_ptr<const Analysis> AnalysisWorker::latest(const std::string& uri) const {
+    const std::lock_guard lock(mutex_);
+    const auto it = results_.find(uri);
+    return it == results_.end() ? nullptr : it->second;
+}
+
+void AnalysisWorker::wait_idle() {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return stop_ || (order_.empty() && !busy_); });
+}
+
+void AnalysisWorker::work() {
+    while (true) {
+        std::shared_ptr<const Document> doc;
+        {
+            std::unique_lock lock(mutex_);
+            changed_.wait(lock, [&] { return stop_ || !order_.empty(); });
+            if (stop_) return;
+            const std::string uri = order_.front();
+            order_.pop_front();
+            doc = std::move(pending_[uri]);
+            pending_.erase(uri);
+            running_ = uri;
+            cancel_ = false;
+            busy_ = true;
+        }
+        analyse(doc);
+        {
+            const std::lock_guard lock(mutex_);
+            running_.clear();
+            busy_ = false;
+        }
+        changed_.notify_all();
+    }
+}
+
+bool AnalysisWorker::superseded(const Document&) const { return cancel_.load(); }
+
+void AnalysisWorker::analyse(const std::shared_ptr<const Document>& doc) {
+    auto analysis = std::make_shared<Analysis>();
+    analysis->version = doc->version();
+    if (!doc->refused().empty() || !doc->settings().dialect) {
+        publish_(*doc, *analysis, true);
+        return;
+    }
+    const FileSettings& s = doc->settings();
+    interpreter::ProgramSet programs;
+    const std::uint32_t file = programs.add_parsed(doc->path().string(), doc, doc->typed(), doc->lines());
+    programs.set_loader(project_.loader_for(doc->path()), s.dialect);
+    analyzer::CheckOptions options;
+    options.config = s.check;
+    const auto exists = [&](std::int64_t n) {
+        return references::program_numbered(doc->typed(), n).has_value() || project_.find_program(n, doc->path()).has_value();
+    };
+    std::vector<analyzer::Finding> raw = analyzer::check_static(programs, file, *s.dialect, s.setup, options, exists, &cancel_);
+    if (superseded(*doc)) return;
+    {
+        Analysis first;
+        first.version = doc->version();
+        first.findings = raw;
+        analyzer::finish_findings(first.findings, doc->tree(), doc->lines(), options);
+        publish_(*doc, first, false);
+    }
+    auto run = std::make_shared<DryRun>();
+    Collector collector(*doc, *run);
+    analyzer::DryRunHooks hooks;
+    hooks.observer = &collector;
+    hooks.emit_state = true;
+    hooks.cancel = &cancel_;
+    std::optional<std::vector<analyzer::Finding>> dynamic = analyzer::check_dry_run(programs, file, *s.dialect, s.setup, options, hooks);
+    if (!dynamic || superseded(*doc)) return;
+    collector.finish();
+    raw.insert(raw.end(), std::make_move_iterator(dynamic->begin()), std::make_move_iterator(dynamic->end()));
+    analyzer::finish_findings(raw, doc->tree(), doc->lines(), options);
+    analysis->findings = std::move(raw);
+    analysis->run = std::move(run);
+    {
+        const std::lock_guard lock(mutex_);
+        if (cancel_) return;
+        results_[doc->uri()] = analysis;
+    }
+    publish_(*doc, *analysis, true);
+}
+
+}  // namespace kerf::lsp

@@ -1,0 +1,82 @@
+// Inlay hints from the dry run of the same document version, at the end of a block's words:
+//
+//   - the absolute end point of a block that moves incrementally (U/W in system A, or any axis word
+//     under the incremental-programming code, G91): "→ X40 Z-12.5";
+//   - a block that expands into several moves (a canned cycle, a direct-drawing corner): its
+//     feed moves, rapids and time: "⟳ 14 feed · 9 rapid · 0:42 min".
+//
+// Values of macro expressions at a block need the interpreter's structured state event (NOTICES.md,
+// `flow`); until then there are none.
+#include <fmt/format.h>
+
+#include "dialects/functions.hpp"
+#include "lsp/features/common.hpp"
+
+namespace kerf::lsp {
+
+namespace {
+
+json::object hint(const Document& doc, std::uint32_t offset, std::string label, std::string tooltip) {
+    return {{"position", to_json(doc.position(offset))},
+            {"label", std::move(label)},
+            {"paddingLeft", true},
+            {"tooltip", std::move(tooltip)}};
+}
+
+// The block moves incrementally: an incremental letter, or an axis word while the incremental
+// code is in force (the dry run's modal text names the active codes).
+bool incremental(const Document& doc, const ast::BlockView& view, const DryRun& run, const BlockState& st) {
+    bool axis = false;
+    for (const ast::AxisWord& a : view.axis_words()) {
+        if (a.incremental) return true;
+        axis = true;
+    }
+    if (!axis) return false;
+    for (const dialects::CodeInfo* c : doc.dialect().codes_with_function(dialects::functions::incremental_programming)) {
+        const std::string& modal = run.modal_texts[st.modal];
+        const std::size_t at = modal.find(c->spelling);
+        if (at != std::string::npos && (at + c->spelling.size() == modal.size() || modal[at + c->spelling.size()] == ' ')) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+json::value inlay_hints(const Snapshot& s, std::pair<ast::Position, ast::Position> range) {
+    const Document& doc = s.document();
+    json::array out;
+    const DryRun* run = s.run();
+    if (!run || !doc.refused().empty()) return out;
+    const bool ru = doc.settings().language == "ru";
+    const std::uint32_t first = doc.block_at(doc.offset(range.first));
+    const std::uint32_t last = std::min<std::uint32_t>(static_cast<std::uint32_t>(doc.tree().block_count()), doc.block_at(doc.offset(range.second)) + 1);
+    const dialects::LexicalRules& lex = doc.dialect().lexical;
+    for (std::uint32_t b = first; b < last; ++b) {
+        const BlockState* st = run->state(b);
+        if (!st) continue;
+        const ast::BlockView view = doc.typed().block(b);
+        const std::uint32_t end = words_range(doc.tree(), b).end;
+        if (incremental(doc, view, *run, *st)) {
+            std::string label = "→";
+            for (const ast::AxisWord& a : view.axis_words()) {
+                if (label.find(a.axis) != std::string::npos) continue;
+                const auto axis = interpreter::axis_of_letter(a.axis);
+                if (!axis) continue;
+                label += fmt::format(" {}{}", a.axis, number_text(st->position[static_cast<std::size_t>(*axis)]));
+            }
+            out.push_back(hint(doc, end, label,
+                               ru ? fmt::format("конечная точка в абсолютных координатах заготовки{}", lex.is_diameter('X') ? " (X на диаметр)" : "")
+                                  : fmt::format("end point in absolute work coordinates{}", lex.is_diameter('X') ? " (X as diameter)" : "")));
+        }
+        if (const auto m = run->motion.find(b); m != run->motion.end()) {
+            const BlockMotion& mm = m->second;
+            out.push_back(hint(doc, end,
+                               fmt::format(fmt::runtime(ru ? "⟳ {} рабочих · {} ускоренных · {}" : "⟳ {} feed · {} rapid · {}"), mm.feeds, mm.rapids, duration(mm.time_s)),
+                               fmt::format(fmt::runtime(ru ? "ход инструмента {} мм за {}; по пробному прогону" : "{} mm of tool path in {}, from the dry run"),
+                                           number_text(mm.length_mm), duration(mm.time_s))));
+        }
+    }
+    return out;
+}
+
+}  // namespace kerf::lsp

@@ -1,0 +1,132 @@
+#include "lsp/jsonrpc.hpp"
+
+#include <fmt/format.h>
+
+namespace kerf::lsp {
+
+namespace {
+
+bool valid_id(const json::value& id) { return id.is_int64() || id.is_uint64() || id.is_string(); }
+
+BadMessage bad(int code, std::string message, json::value id = nullptr) { return {code, std::move(message), std::move(id)}; }
+
+}  // namespace
+
+Parsed parse_message(std::string_view body) {
+    json::parse_options options;
+    options.max_depth = 128;
+    json::error_code ec;
+    json::value v = json::parse(json::string_view(body.data(), body.size()), ec, {}, options);
+    if (ec) return {std::nullopt, bad(error_code::parse_error, fmt::format("the message is not JSON: {}", ec.message()))};
+    if (!v.is_object())
+        return {std::nullopt, bad(error_code::invalid_request, "a JSON-RPC message is an object (batches are not used by LSP)")};
+    json::object& o = v.as_object();
+    json::value id = nullptr;
+    if (const auto* i = o.if_contains("id")) {
+        if (valid_id(*i)) id = *i;
+        else if (!i->is_null()) return {std::nullopt, bad(error_code::invalid_request, "\"id\" must be a number or a string")};
+    }
+    const auto* version = o.if_contains("jsonrpc");
+    if (!version || !version->is_string() || version->as_string() != "2.0")
+        return {std::nullopt, bad(error_code::invalid_request, "\"jsonrpc\" must be \"2.0\"", id)};
+    Message m;
+    m.id = id;
+    if (const auto* method = o.if_contains("method")) {
+        if (!method->is_string()) return {std::nullopt, bad(error_code::invalid_request, "\"method\" must be a string", id)};
+        m.method = std::string(method->as_string());
+        m.kind = o.contains("id") ? MessageKind::request : MessageKind::notification;
+        if (m.kind == MessageKind::request && id.is_null())
+            return {std::nullopt, bad(error_code::invalid_request, "a request's \"id\" must be a number or a string")};
+        if (const auto* params = o.if_contains("params"); params && !params->is_null()) {   // null: as if absent (some clients send it for shutdown)
+            if (!params->is_object() && !params->is_array())
+                return {std::nullopt, bad(error_code::invalid_request, "\"params\" must be an object or an array", id)};
+            m.params = *params;
+        }
+        return {std::move(m), std::nullopt};
+    }
+    if (o.contains("result") || o.contains("error")) {
+        m.kind = MessageKind::response;
+        if (const auto* r = o.if_contains("result")) m.result = *r;
+        if (const auto* e = o.if_contains("error"); e && e->is_object()) m.error = e->as_object();
+        return {std::move(m), std::nullopt};
+    }
+    return {std::nullopt, bad(error_code::invalid_request, "a message needs \"method\" (request, notification) or \"result\"/\"error\" (response)", id)};
+}
+
+std::string id_key(const json::value& id) {
+    if (id.is_string()) return "s:" + std::string(id.as_string());
+    if (id.is_int64()) return "n:" + std::to_string(id.as_int64());
+    if (id.is_uint64()) return "n:" + std::to_string(id.as_uint64());
+    return "null";
+}
+
+namespace {
+// The length of the UTF-8 sequence at `p` (1 to 4), or 0 when it is not one.
+std::size_t utf8_sequence(const unsigned char* p, std::size_t left) {
+    const unsigned char c = p[0];
+    if (c < 0x80) return 1;
+    std::size_t n = 0;
+    std::uint32_t min = 0;
+    if ((c & 0xE0) == 0xC0) n = 2, min = 0x80;
+    else if ((c & 0xF0) == 0xE0) n = 3, min = 0x800;
+    else if ((c & 0xF8) == 0xF0) n = 4, min = 0x10000;
+    else return 0;
+    if (n > left) return 0;
+    std::uint32_t cp = c & (0x7F >> n);
+    for (std::size_t i = 1; i < n; ++i) {
+        if ((p[i] & 0xC0) != 0x80) return 0;
+        cp = (cp << 6) | (p[i] & 0x3F);
+    }
+    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
+    return n;
+}
+}  // namespace
+
+std::string valid_utf8(std::string text) {
+    const auto* p = reinterpret_cast<const unsigned char*>(text.data());
+    std::size_t i = 0;
+    while (i < text.size()) {   // the common case: nothing to replace, no copy
+        const std::size_t n = utf8_sequence(p + i, text.size() - i);
+        if (n == 0) break;
+        i += n;
+    }
+    if (i == text.size()) return text;
+    std::string out = text.substr(0, i);
+    while (i < text.size()) {
+        const std::size_t n = utf8_sequence(p + i, text.size() - i);
+        if (n == 0) {
+            out += "\xEF\xBF\xBD";
+            ++i;
+        } else {
+            out.append(text, i, n);
+            i += n;
+        }
+    }
+    return out;
+}
+
+std::string_view clip(std::string_view text, std::size_t bytes) {
+    if (text.size() <= bytes) return text;
+    std::size_t cut = bytes;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+    return text.substr(0, cut);
+}
+
+std::string response(const json::value& id, json::value result) {
+    return json::serialize(json::object{{"jsonrpc", "2.0"}, {"id", id}, {"result", std::move(result)}});
+}
+
+std::string error_response(const json::value& id, int code, std::string_view message) {
+    return json::serialize(json::object{
+        {"jsonrpc", "2.0"}, {"id", id}, {"error", json::object{{"code", code}, {"message", message}}}});
+}
+
+std::string notification(std::string_view method, json::value params) {
+    return json::serialize(json::object{{"jsonrpc", "2.0"}, {"method", method}, {"params", std::move(params)}});
+}
+
+std::string request(const json::value& id, std::string_view method, json::value params) {
+    return json::serialize(json::object{{"jsonrpc", "2.0"}, {"id", id}, {"method", method}, {"params", std::move(params)}});
+}
+
+}  // namespace kerf::lsp

@@ -1,0 +1,42 @@
+// What analysing, formatting and running one document needs, resolved once per document from the
+// client's settings and the .kerf.toml over it (lsp/project_seam.hpp). Immutable: documents and
+// the analysis worker share one through a shared pointer.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analyzer/config.hpp"
+#include "dialects/dialect.hpp"
+#include "formatter/format.hpp"
+#include "formatter/style.hpp"
+#include "interpreter/setup.hpp"
+
+namespace kerf::lsp {
+
+// The client's settings (`kerf.*`, workspace/configuration or didChangeConfiguration).
+struct ClientSettings {
+    std::string dialect;    // "" or "auto": the .kerf.toml, the header, detection
+    std::string machine;    // a machine file; "": the .kerf.toml's, else the dialect's built-in
+    std::string language = "en";   // hover texts: "en" or "ru" (else the client's locale at initialize)
+    friend bool operator==(const ClientSettings&, const ClientSettings&) = default;
+};
+
+struct FileSettings {
+    std::shared_ptr<const dialects::Registry> registry;   // keeps `dialect` alive
+    const dialects::Dialect* dialect = nullptr;
+    std::string dialect_why;                // "fanuc-mill from the client setting kerf.dialect"
+    std::vector<std::string> detection;     // detection's reasons when it decided
+    interpreter::Setup setup;
+    std::string machine_why;
+    formatter::Style style;                 // .kerf.toml [format]
+    formatter::FormatContext format_context;
+    analyzer::CheckConfig check;            // .kerf.toml [check]
+    std::filesystem::path config_file;      // the .kerf.toml, empty when none
+    std::vector<std::string> problems;      // what could not be read, said to the user
+    std::string language = "en";
+};
+
+}  // namespace kerf::lsp
