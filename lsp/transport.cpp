@@ -103,7 +103,7 @@ std::optional<std::string> Transport::header_line(Frame& frame) {
         }
         if (buffer_.size() - pos_ > 8192) {   // no header is that long: this is not a header
             frame.problem = fmt::format("skipped bytes that are not a message header: '{}'", shown(std::string_view(buffer_).substr(pos_)));
-            resync(frame);
+            resync_pending_ = true;
             return std::nullopt;
         }
         if (!fill()) {
@@ -134,6 +134,12 @@ void Transport::resync(Frame&) {
 
 std::optional<Frame> Transport::read() {
     Frame frame;
+    // After a problem the bytes up to the next header are skipped now, not before the problem was
+    // reported (the next message may be long in coming).
+    if (resync_pending_) {
+        resync_pending_ = false;
+        resync(frame);
+    }
     std::optional<std::size_t> length;
     bool any_header = false;
     while (true) {
@@ -147,9 +153,16 @@ std::optional<Frame> Transport::read() {
             break;
         }
         const std::size_t colon = line->find(':');
-        if (colon == std::string::npos) {
-            frame.problem = fmt::format("skipped bytes that are not a message header: '{}'", shown(*line));
-            resync(frame);
+        const bool header_name = colon != std::string::npos && colon > 0 &&
+                                 std::all_of(line->begin(), line->begin() + static_cast<std::ptrdiff_t>(colon),
+                                             [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '-'; });
+        if (!header_name) {
+            // Bytes that are not a header (the rest of a body cut short): skip them, up to a
+            // header that may follow on the same line.
+            const std::size_t next = line->find(kLengthHeader);
+            frame.problem = fmt::format("skipped bytes that are not a message header: '{}'", shown(line->substr(0, next)));
+            if (next != std::string::npos) unread(line->substr(next) + "\r\n");
+            else resync_pending_ = true;
             return frame;
         }
         any_header = true;
@@ -160,19 +173,19 @@ std::optional<Frame> Transport::read() {
         const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), n);
         if (ec != std::errc() || end != value.data() + value.size()) {
             frame.problem = fmt::format("Content-Length '{}' is not a number; the message is skipped", shown(value));
-            resync(frame);
+            resync_pending_ = true;
             return frame;
         }
         length = n;
     }
     if (!length) {
         frame.problem = "a message header without Content-Length; the message is skipped";
-        resync(frame);
+        resync_pending_ = true;
         return frame;
     }
     if (*length > kMaxBody) {
         frame.problem = fmt::format("Content-Length {} is over the limit of {} bytes; the message is skipped", *length, kMaxBody);
-        resync(frame);
+        resync_pending_ = true;
         return frame;
     }
     while (buffer_.size() - pos_ < *length) {

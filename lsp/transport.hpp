@@ -51,6 +51,7 @@ private:
     std::string buffer_;
     std::size_t pos_ = 0;
     bool eof_ = false;
+    bool resync_pending_ = false;   // skip to the next header before reading
     std::mutex write_mutex_;
     bool broken_ = false;
 };
