@@ -100,6 +100,17 @@ std::pair<ast::Position, ast::Position> range_param(const json::object& o, std::
 
 std::string document_uri(const json::value& params) { return string_param(object_param(params, "textDocument"), "uri"); }
 
+const json::value* find_path(const json::object& o, std::initializer_list<std::string_view> path) {
+    if (path.size() == 0) return nullptr;
+    const std::string_view first = *path.begin();
+    const json::value* at = o.if_contains(json::string_view(first.data(), first.size()));
+    for (auto it = path.begin() + 1; at && it != path.end(); ++it) {
+        if (!at->is_object()) return nullptr;
+        at = at->as_object().if_contains(json::string_view(it->data(), it->size()));
+    }
+    return at;
+}
+
 const json::value* find_path(const json::value& v, std::initializer_list<std::string_view> path) {
     const json::value* at = &v;
     for (const std::string_view key : path) {

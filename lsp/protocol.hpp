@@ -35,6 +35,7 @@ const json::object& params_object(const json::value& params);
 
 // Optional lookups: nullptr when absent or of another type.
 const json::value* find_path(const json::value& v, std::initializer_list<std::string_view> path);
+const json::value* find_path(const json::object& o, std::initializer_list<std::string_view> path);   // no copy of `o`
 
 namespace symbol_kind {
 inline constexpr int file = 1, module = 2, namespace_ = 3, function = 12, variable = 13, constant = 14, event = 24, operator_ = 25, key = 20, number = 16;

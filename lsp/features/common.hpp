@@ -73,8 +73,9 @@ std::vector<CallSite> call_sites(const Snapshot& s, const ProgramTarget& target)
 // Every label reference that lands on `target` (this document, and M98 P Q from other files).
 std::vector<CallSite> label_references(const Snapshot& s, const LabelTarget& target);
 
-// The edits that turn the document's text into `text`: one TextEdit over the lines that differ
-// (none when they are equal), so the client keeps the cursor and folds elsewhere.
+// The edits that turn the document's text into `text`: one TextEdit over the bytes that differ,
+// from the start of the first changed line (none when they are equal), so the client keeps the
+// cursor and folds elsewhere.
 json::array edits_to(const Document& doc, const std::string& text);
 
 // "1:02.5" / "12.3 s" for a duration.

@@ -37,9 +37,10 @@ Typing typing_at(const Document& doc, std::uint32_t offset) {
     std::uint32_t b = offset;
     while (b > 0) {
         const char c = text[b - 1];
-        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '#' || c == '-')) break;
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-')) break;
         --b;
     }
+    if (b > 0 && text[b - 1] == '#') --b;   // "X#1": the variable is typed, not the X word
     Typing t{b, std::string(text.substr(b, offset - b))};
     for (char& c : t.text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
     return t;
