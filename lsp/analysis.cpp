@@ -4,6 +4,7 @@
 #include <unordered_map>
 
 #include "analyzer/analyze.hpp"
+#include "analyzer/baseline.hpp"
 #include "references/references.hpp"
 
 namespace kerf::lsp {
@@ -98,6 +99,16 @@ private:
     std::unordered_map<std::string, std::uint32_t> modal_ids_;
     std::unordered_map<std::uint32_t, BlockMotion> motion_;
 };
+
+// The findings a baseline accepts are not shown (kerf check --baseline): matched by rule and the
+// text of their block, each entry once.
+void apply_baseline(std::vector<analyzer::Finding>& findings, const Document& doc) {
+    if (doc.settings().baseline.empty()) return;
+    analyzer::BaselineFilter filter(doc.settings().baseline);
+    std::erase_if(findings, [&](const analyzer::Finding& f) {
+        return filter.accepts({doc.settings().baseline.front().file, f.rule, analyzer::block_text(doc.tree(), f.range.begin)});
+    });
+}
 
 }  // namespace
 
@@ -194,6 +205,7 @@ void AnalysisWorker::analyse(const std::shared_ptr<const Document>& doc) {
         first.version = doc->version();
         first.findings = raw;
         analyzer::finish_findings(first.findings, doc->tree(), doc->lines(), options);
+        apply_baseline(first.findings, *doc);
         publish_(*doc, first, false);
     }
     auto run = std::make_shared<DryRun>();
@@ -207,6 +219,7 @@ void AnalysisWorker::analyse(const std::shared_ptr<const Document>& doc) {
     collector.finish();
     raw.insert(raw.end(), std::make_move_iterator(dynamic->begin()), std::make_move_iterator(dynamic->end()));
     analyzer::finish_findings(raw, doc->tree(), doc->lines(), options);
+    apply_baseline(raw, *doc);
     analysis->findings = std::move(raw);
     analysis->run = std::move(run);
     {

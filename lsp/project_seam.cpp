@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
 
 #include "ast/typed.hpp"
 #include "grammar/detect.hpp"
@@ -169,6 +170,32 @@ std::shared_ptr<const ProjectSeam::Config> ProjectSeam::config_for(const std::op
     return configs_.emplace(key, std::move(c)).first->second;
 }
 
+namespace {
+
+// The entries of a baseline that name `file`: the path as `kerf check` wrote it, absolute or
+// relative to the baseline's folder (the usual: run from the repository root).
+void load_baseline(const fs::path& baseline, const fs::path& file, FileSettings& s) {
+    std::ifstream in(baseline, std::ios::binary);
+    if (!in) {
+        s.problems.push_back(fmt::format("{}: cannot read the baseline (kerf.baseline)", baseline.string()));
+        return;
+    }
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string error;
+    const auto entries = analyzer::read_baseline(text, error);
+    if (!entries) {
+        s.problems.push_back(fmt::format("{}: {}", baseline.string(), error));
+        return;
+    }
+    for (const analyzer::BaselineEntry& e : *entries) {
+        const fs::path named(e.file);
+        const fs::path absolute = named.is_absolute() ? named : (baseline.parent_path() / named);
+        if (absolute.lexically_normal() == file.lexically_normal()) s.baseline.push_back(e);
+    }
+}
+
+}  // namespace
+
 std::shared_ptr<const FileSettings> ProjectSeam::resolve(const fs::path& file, std::string_view text) {
     const std::shared_ptr<const Config> config = config_for(config_of(file));
     const ClientSettings client = this->client();
@@ -220,6 +247,7 @@ std::shared_ptr<const FileSettings> ProjectSeam::resolve(const fs::path& file, s
         }
     }
     s->format_context.calculator_decimal = s->setup.calculator_decimal;
+    if (!client.baseline.empty()) load_baseline(fs::path(client.baseline), file, *s);
     return s;
 }
 

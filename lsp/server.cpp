@@ -437,6 +437,7 @@ struct Server::Impl {
         text("dialect", s.dialect);
         text("machine", s.machine);
         text("language", s.language);
+        text("baseline", s.baseline);
         if (s.language != "ru") s.language = "en";
         if (s == project.client()) return;
         project.set_client(s);

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "analyzer/baseline.hpp"
 #include "analyzer/config.hpp"
 #include "dialects/dialect.hpp"
 #include "formatter/format.hpp"
@@ -21,6 +22,7 @@ struct ClientSettings {
     std::string dialect;    // "" or "auto": the .kerf.toml, the header, detection
     std::string machine;    // a machine file; "": the .kerf.toml's, else the dialect's built-in
     std::string language = "en";   // hover texts: "en" or "ru" (else the client's locale at initialize)
+    std::string baseline;   // a baseline file of `kerf check --write-baseline`: its findings are not shown
     friend bool operator==(const ClientSettings&, const ClientSettings&) = default;
 };
 
@@ -34,6 +36,8 @@ struct FileSettings {
     formatter::Style style;                 // .kerf.toml [format]
     formatter::FormatContext format_context;
     analyzer::CheckConfig check;            // .kerf.toml [check]
+    // The accepted findings of the client's kerf.baseline file that name this file (analyzer/baseline.hpp).
+    std::vector<analyzer::BaselineEntry> baseline;
     std::filesystem::path config_file;      // the .kerf.toml, empty when none
     std::vector<std::string> problems;      // what could not be read, said to the user
     std::string language = "en";

@@ -66,8 +66,20 @@ json::object diagnostic_json(const Document& doc, const analyzer::Finding& f) {
 }
 
 json::object publish_diagnostics(const Document& doc, const Analysis& analysis, bool final) {
+    // A client shows a few thousand diagnostics usefully; a damaged 50 MB file may have millions.
+    constexpr std::size_t kMaxDiagnostics = 2000;
     json::array list;
-    for (const analyzer::Finding& f : analysis.findings) list.push_back(diagnostic_json(doc, f));
+    for (const analyzer::Finding& f : analysis.findings) {
+        if (list.size() == kMaxDiagnostics) {
+            list.push_back(json::object{{"range", range_json(doc, {0, 0})},
+                                        {"severity", diagnostic_severity::information},
+                                        {"source", "kerf"},
+                                        {"message", fmt::format("{} more findings are not shown here; `kerf check` lists them all",
+                                                                analysis.findings.size() - kMaxDiagnostics)}});
+            break;
+        }
+        list.push_back(diagnostic_json(doc, f));
+    }
     return {{"uri", doc.uri()},
             {"version", doc.version()},
             {"diagnostics", std::move(list)},

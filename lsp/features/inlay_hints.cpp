@@ -2,8 +2,8 @@
 //
 //   - the absolute end point of a block that moves incrementally (U/W in system A, or any axis word
 //     under the incremental-programming code, G91): "→ X40 Z-12.5";
-//   - a block that expands into several moves (a canned cycle, a direct-drawing corner): its
-//     feed moves, rapids and time: "⟳ 14 feed · 9 rapid · 0:42 min".
+//   - a block that cuts in several moves (a canned cycle, a direct-drawing corner; not a dog-leg
+//     rapid): its feed moves, rapids and time: "⟳ 14 feed · 9 rapid · 0:42 min".
 //
 // Values of macro expressions at a block need the interpreter's structured state event (NOTICES.md,
 // `flow`); until then there are none.
@@ -68,7 +68,8 @@ json::value inlay_hints(const Snapshot& s, std::pair<ast::Position, ast::Positio
                                ru ? fmt::format("конечная точка в абсолютных координатах заготовки{}", lex.is_diameter('X') ? " (X на диаметр)" : "")
                                   : fmt::format("end point in absolute work coordinates{}", lex.is_diameter('X') ? " (X as diameter)" : "")));
         }
-        if (const auto m = run->motion.find(b); m != run->motion.end()) {
+        // A block that cuts in several moves (a cycle, a corner): not a dog-leg rapid or a G28.
+        if (const auto m = run->motion.find(b); m != run->motion.end() && (m->second.feeds >= 2 || (m->second.feeds >= 1 && m->second.rapids >= 2))) {
             const BlockMotion& mm = m->second;
             out.push_back(hint(doc, end,
                                fmt::format(fmt::runtime(ru ? "⟳ {} рабочих · {} ускоренных · {}" : "⟳ {} feed · {} rapid · {}"), mm.feeds, mm.rapids, duration(mm.time_s)),

@@ -163,6 +163,11 @@ public:
             if (match(m)) return false;
         return true;
     }
+    // Every message received so far, in order (taken or not).
+    std::vector<json::object> history() {
+        std::lock_guard lock(mutex_);
+        return history_;
+    }
     bool ended() {
         std::lock_guard lock(mutex_);
         return ended_;
@@ -218,7 +223,10 @@ private:
             if (!frame->problem.empty()) continue;
             json::error_code ec;
             json::value v = json::parse(frame->body, ec);
-            if (!ec && v.is_object()) inbox_.push_back(std::move(v.as_object()));
+            if (!ec && v.is_object()) {
+                history_.push_back(v.as_object());
+                inbox_.push_back(std::move(v.as_object()));
+            }
             changed_.notify_all();
         }
     }
@@ -232,6 +240,7 @@ private:
     std::mutex mutex_;
     std::condition_variable changed_;
     std::deque<json::object> inbox_;
+    std::vector<json::object> history_;
     bool ended_ = false;
 };
 
