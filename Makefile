@@ -15,12 +15,15 @@ PACKAGES := g++ make cmake libboost1.81-dev libboost-json1.81-dev libfmt-dev cat
             libcli11-dev libtomlplusplus-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test build deps clean bench fuzz test-sanitize
+.PHONY: run test build deps editor-deps vsix clean bench fuzz test-sanitize
 
 run: build
 	@./scripts/run-examples.sh $(BUILD_DIR)/kerf
 
-test: build
+# The real-client tests of the language server need Neovim and Node (editor-deps below).
+test: deps editor-deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) -DKERF_EDITOR_TESTS=ON $(CMAKE_FLAGS)
+	cmake --build $(BUILD_DIR) -j $(JOBS)
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 build: deps
@@ -49,6 +52,30 @@ endef
 
 deps:
 	$(call install_missing,$(PACKAGES))
+
+# What the editor tests need: Neovim (Debian) and Node with npm (Debian's nodejs and npm unless a
+# node and npm are already on the PATH, e.g. from NodeSource), then the npm packages of
+# editors/vscode exactly as its package-lock.json pins them. --ignore-scripts: no package runs
+# code at install time (keytar, an optional dependency of vsce for publishing, is not built).
+editor-deps:
+	@missing=""; \
+	dpkg-query -W -f='$${Status}' neovim 2>/dev/null | grep -q "install ok installed" || missing="$$missing neovim"; \
+	command -v node >/dev/null 2>&1 || missing="$$missing nodejs"; \
+	command -v npm >/dev/null 2>&1 || missing="$$missing npm"; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	  $(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+	@if [ ! -f editors/vscode/node_modules/.package-lock.json ] || \
+	    [ editors/vscode/package-lock.json -nt editors/vscode/node_modules/.package-lock.json ]; then \
+	  cd editors/vscode && npm ci --ignore-scripts --no-audit --no-fund; \
+	fi
+
+# The VS Code extension as build/kerf.vsix (install: code --install-extension build/kerf.vsix).
+vsix: editor-deps
+	cd editors/vscode && node node_modules/typescript/bin/tsc -p . && \
+	  node node_modules/@vscode/vsce/vsce package --allow-missing-repository --skip-license --out ../../$(BUILD_DIR)/kerf.vsix
 
 # The parse benchmark (bench/run.sh), then the dry run against LinuxCNC's rs274
 # (bench/dryrun_vs_rs274.sh; rs274 comes from linuxcnc-uspace, /usr/bin/time from time).
