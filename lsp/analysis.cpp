@@ -144,6 +144,14 @@ void AnalysisWorker::forget(const std::string& uri) {
     if (running_ == uri) cancel_ = true;
 }
 
+void AnalysisWorker::release(const std::string& uri) {
+    std::unique_lock lock(mutex_);
+    pending_.erase(uri);
+    std::erase(order_, uri);
+    if (running_ == uri) cancel_ = true;
+    changed_.wait(lock, [&] { return running_ != uri; });
+}
+
 std::shared_ptr<const Analysis> AnalysisWorker::latest(const std::string& uri) const {
     const std::lock_guard lock(mutex_);
     const auto it = results_.find(uri);
@@ -171,6 +179,7 @@ void AnalysisWorker::work() {
             busy_ = true;
         }
         analyse(doc);
+        doc.reset();   // before the uri is free: release() then finds the version unshared
         {
             const std::lock_guard lock(mutex_);
             running_.clear();

@@ -80,6 +80,9 @@ public:
 
     void schedule(std::shared_ptr<const Document> document);
     void forget(const std::string& uri);
+    // Drops the queued version of `uri` and stops the one being analysed, and returns once the
+    // worker holds none of its versions (the store may then edit the document in place).
+    void release(const std::string& uri);
     // The last finished analysis of `uri` (any version), or null.
     std::shared_ptr<const Analysis> latest(const std::string& uri) const;
     // Blocks until nothing is queued or running (tests, shutdown).

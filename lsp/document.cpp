@@ -117,6 +117,38 @@ std::shared_ptr<const Document> Document::edit(std::int64_t version, const std::
     return step;
 }
 
+bool Document::change_in_place(const ContentChange& c, std::size_t index, std::vector<std::string>& problems) {
+    const std::string_view text = this->text();
+    const auto begin = offset_in(*lines_, text, c.range->first);
+    const auto end = offset_in(*lines_, text, c.range->second);
+    if (!begin || !end || *begin > *end) {
+        problems.push_back(fmt::format("change {} of version {}: range {}:{}-{}:{} is outside the document ({} lines); skipped",
+                                       index + 1, version_, c.range->first.line, c.range->first.column, c.range->second.line,
+                                       c.range->second.column, lines_->line_count()));
+        return false;
+    }
+    ast::BlockSplice splice;
+    reparse_in_place(tree_, {*begin, *end, c.text}, dialect().lexical, splice);
+    auto typed = std::make_unique<ast::TypedFile>(splice.old_end == 0xFFFFFFFFu ? ast::TypedFile::bind(tree_, dialect())
+                                                                                 : ast::TypedFile::bind_edited(tree_, *typed_, splice));
+    typed_ = std::move(typed);
+    lines_ = std::make_unique<ast::LineIndex>(tree_.text);
+    reparsed_blocks_ = splice.added;
+    return true;
+}
+
+std::shared_ptr<const Document> Document::edit(std::shared_ptr<const Document> doc, std::int64_t version,
+                                               const std::vector<ContentChange>& changes, std::vector<std::string>& problems) {
+    bool in_place = doc.use_count() == 1 && doc->refused_.empty();
+    for (const ContentChange& c : changes) in_place = in_place && c.range && refusal(c.text).empty();
+    if (!in_place) return doc->edit(version, changes, problems);
+    // Sole owner: the object was created non-const (open()), and nobody else can see it change.
+    auto* self = const_cast<Document*>(doc.get());
+    self->version_ = version;
+    for (std::size_t i = 0; i < changes.size(); ++i) self->change_in_place(changes[i], i, problems);
+    return doc;
+}
+
 std::uint32_t Document::block_at(std::uint32_t offset) const {
     const auto& blocks = tree_.blocks;
     const auto it = std::upper_bound(blocks.begin(), blocks.end(), offset,

@@ -34,6 +34,10 @@ public:
     // skipped and said in `problems`.
     std::shared_ptr<const Document> edit(std::int64_t version, const std::vector<ContentChange>& changes,
                                          std::vector<std::string>& problems) const;
+    // The same as edit(), but when `doc` is the only reference to its version the version itself is
+    // edited (no copy of a million-line tree per keystroke); otherwise a copy is made as by edit().
+    static std::shared_ptr<const Document> edit(std::shared_ptr<const Document> doc, std::int64_t version,
+                                                const std::vector<ContentChange>& changes, std::vector<std::string>& problems);
     // The same text under other settings (a new dialect: parsed again whole).
     std::shared_ptr<const Document> with_settings(std::shared_ptr<const FileSettings> settings) const;
 
@@ -65,6 +69,8 @@ public:
 private:
     Document() = default;
     void parse_whole();
+    // Applies one ranged change to this version in place; false when it is outside the text.
+    bool change_in_place(const ContentChange& change, std::size_t index, std::vector<std::string>& problems);
     std::string uri_;
     std::filesystem::path path_;
     std::int64_t version_ = 0;

@@ -95,133 +95,224 @@ void append(V& out, const V& in, std::size_t first, std::size_t last, F f) {
     for (std::size_t i = first; i < last; ++i) out.push_back(f(in[i]));
 }
 
-ast::SyntaxTree full_parse(std::string text, const dialects::LexicalRules& rules, std::size_t old_blocks, ast::BlockSplice& splice) {
-    ast::SyntaxTree tree = grammar::parse(std::move(text), rules);
-    splice = {0, static_cast<std::uint32_t>(old_blocks), static_cast<std::uint32_t>(tree.block_count()), 0,
-              0xFFFFFFFFu, 0};
-    return tree;
+// The text of the edited document between two of its offsets, without building it whole.
+std::string edited_slice(const std::string& old, const ByteEdit& edit, std::size_t from, std::size_t to) {
+    // New offsets: [0, edit.begin) as before, then the inserted text, then the old text from edit.end on.
+    std::string out;
+    out.reserve(to - from);
+    const std::size_t ins_end = edit.begin + edit.text.size();
+    for (std::size_t at = from; at < to;) {
+        if (at < edit.begin) {
+            const std::size_t n = std::min<std::size_t>(to, edit.begin) - at;
+            out.append(old, at, n);
+            at += n;
+        } else if (at < ins_end) {
+            const std::size_t n = std::min(to, ins_end) - at;
+            out.append(edit.text.substr(at - edit.begin, n));
+            at += n;
+        } else {
+            const std::size_t old_at = at - ins_end + edit.end;
+            out.append(old, old_at, to - at);
+            at = to;
+        }
+    }
+    return out;
+}
+
+// What an edit does to a tree: computed from the old tree alone, applied by copying (reparse) or in
+// place (reparse_in_place).
+struct Plan {
+    bool full = false;             // parse the edited text whole
+    bool tail = false;             // the edit is inside the text after the closing '%'
+    std::uint32_t line_begin = 0;  // the old bytes [line_begin, old_end) are the touched lines
+    std::uint32_t old_end = 0;
+    std::int64_t delta = 0;
+    std::size_t first = 0, last = 0;   // the old blocks replaced
+    std::size_t t0 = 0, t1 = 0, e0 = 0, e1 = 0, s0 = 0, s1 = 0;
+    ast::SyntaxTree region;        // the touched lines of the new text, parsed (offsets from line_begin)
+    Shift in_region, after;
+};
+
+Plan make_plan(const ast::SyntaxTree& old, const ByteEdit& edit, const dialects::LexicalRules& rules) {
+    Plan p;
+    const std::string& text = old.text;
+    const std::size_t n = text.size();
+    const std::size_t new_size = n - (edit.end - edit.begin) + edit.text.size();
+    p.delta = static_cast<std::int64_t>(edit.text.size()) - static_cast<std::int64_t>(edit.end - edit.begin);
+    if (n == 0 || new_size == 0 || n >= 0xFFFFFFF0u || new_size >= 0xFFFFFFF0u) {
+        p.full = true;
+        return p;
+    }
+    // The touched lines: from the start of the line of `begin` to the end of the line of `end`.
+    const std::size_t before_nl = edit.begin == 0 ? std::string::npos : text.rfind('\n', edit.begin - 1);
+    p.line_begin = before_nl == std::string::npos ? 0 : static_cast<std::uint32_t>(before_nl + 1);
+    const std::size_t after_nl = text.find('\n', edit.end);
+    p.old_end = after_nl == std::string::npos ? static_cast<std::uint32_t>(n) : static_cast<std::uint32_t>(after_nl + 1);
+
+    const std::size_t count = old.block_count();
+    const bool has_tail = count > 0 && old.blocks[count - 1].kind == BlockKind::tail;
+    const std::uint32_t tail_begin = has_tail ? old.blocks[count - 1].begin : static_cast<std::uint32_t>(n);
+    p.tail = has_tail && p.line_begin >= tail_begin;
+    p.first = p.tail ? count - 1 : first_block_at(old, p.line_begin);
+    if (!p.tail && p.first < count && old.blocks[p.first].begin != p.line_begin) {
+        p.full = true;
+        return p;
+    }
+    if (has_tail && p.old_end > tail_begin) p.old_end = static_cast<std::uint32_t>(n);
+
+    grammar::ParseState start = state_before(old, p.first);
+    start.file_start = p.line_begin == 0;
+    p.last = p.first;
+    if (p.tail) {
+        // Inside the text after the closing '%': it stays one tail block (the control does not read it).
+        p.last = count;
+        p.old_end = static_cast<std::uint32_t>(n);
+    } else {
+        while (true) {
+            p.last = p.old_end >= n ? count : first_block_at(old, p.old_end);
+            const std::uint32_t new_end = moved(p.old_end, p.delta);
+            grammar::ParseState end = start;
+            if (new_end > p.line_begin)
+                end = grammar::parse_into(p.region, edited_slice(text, edit, p.line_begin, new_end), rules, start);
+            else
+                p.region = ast::SyntaxTree{};
+            if (p.old_end >= n) break;
+            const grammar::ParseState old_state = state_before(old, p.last);
+            if (!end.ended && !old_state.ended && end.program_seen == old_state.program_seen) break;
+            p.old_end = static_cast<std::uint32_t>(n);   // the '%' state changed: the rest of the file reads differently
+        }
+    }
+    // The offsets of the old nodes: [0, first) before, [last, count) after the edited lines.
+    p.t0 = p.first < count ? old.blocks[p.first].first_token : old.tokens.size();
+    p.t1 = p.last < count ? old.blocks[p.last].first_token : old.tokens.size();
+    const auto expr_at = [&](std::uint32_t offset) {
+        return static_cast<std::size_t>(std::partition_point(old.exprs.begin(), old.exprs.end(), [&](const ast::Expr& e) { return e.begin < offset; }) - old.exprs.begin());
+    };
+    const auto statement_at = [&](std::uint32_t offset) {
+        return static_cast<std::size_t>(std::partition_point(old.statements.begin(), old.statements.end(), [&](const ast::Statement& st) { return st.range.begin < offset; }) - old.statements.begin());
+    };
+    p.e0 = expr_at(p.line_begin);
+    p.e1 = p.old_end >= n ? old.exprs.size() : expr_at(p.old_end);
+    p.s0 = statement_at(p.line_begin);
+    p.s1 = p.old_end >= n ? old.statements.size() : statement_at(p.old_end);
+    p.in_region = {p.line_begin, static_cast<std::int64_t>(p.t0), static_cast<std::int64_t>(p.e0), static_cast<std::int64_t>(p.s0),
+                   static_cast<std::int64_t>(old.big_numbers.size())};
+    p.after = {p.delta, static_cast<std::int64_t>(p.t0 + p.region.tokens.size()) - static_cast<std::int64_t>(p.t1),
+               static_cast<std::int64_t>(p.e0 + p.region.exprs.size()) - static_cast<std::int64_t>(p.e1),
+               static_cast<std::int64_t>(p.s0 + p.region.statements.size()) - static_cast<std::int64_t>(p.s1), 0};
+    return p;
+}
+
+ast::Block shifted(ast::Block b, const Shift& s) {
+    b.begin = moved(b.begin, s.bytes);
+    b.first_token = moved(b.first_token, s.tokens);
+    return b;
+}
+
+void fill_splice(const Plan& p, ast::BlockSplice& splice) {
+    splice.first = static_cast<std::uint32_t>(p.first);
+    splice.removed = p.tail ? 0 : static_cast<std::uint32_t>(p.last - p.first);
+    splice.added = static_cast<std::uint32_t>(p.region.blocks.size());
+    splice.old_begin = p.line_begin;
+    splice.old_end = p.old_end;
+    splice.shift = p.delta;
+}
+
+void full_splice(std::size_t old_blocks, std::size_t new_blocks, ast::BlockSplice& splice) {
+    splice = {0, static_cast<std::uint32_t>(old_blocks), static_cast<std::uint32_t>(new_blocks), 0, 0xFFFFFFFFu, 0};
+}
+
+// The diagnostics: those before the touched lines, the new ones, those after them moved.
+std::vector<ast::Diagnostic> spliced_diagnostics(const std::vector<ast::Diagnostic>& old, const Plan& p) {
+    std::vector<ast::Diagnostic> out;
+    for (const ast::Diagnostic& d : old)
+        if (d.range.begin < p.line_begin) out.push_back(d);
+    for (const ast::Diagnostic& d : p.region.diagnostics) out.push_back(shifted(d, p.line_begin));
+    if (!p.tail)
+        for (const ast::Diagnostic& d : old)
+            if (d.range.begin >= p.old_end) out.push_back(shifted(d, p.delta));
+    return out;
+}
+
+// Replaces v[first, last) by `with` (each through `fresh`) and moves the elements after it through
+// `moved_tail`, in place: the tail is shifted once by memmove and once by the offset pass.
+template <class V, class W, class F, class G>
+void replace_in_place(V& v, std::size_t first, std::size_t last, const W& with, F fresh, G moved_tail) {
+    const std::size_t removed = last - first, added = with.size();
+    if (added > removed) v.insert(v.begin() + static_cast<std::ptrdiff_t>(last), added - removed, typename V::value_type{});
+    else if (added < removed) v.erase(v.begin() + static_cast<std::ptrdiff_t>(first + added), v.begin() + static_cast<std::ptrdiff_t>(last));
+    for (std::size_t i = 0; i < added; ++i) v[first + i] = fresh(with[i]);
+    for (std::size_t i = first + added; i < v.size(); ++i) v[i] = moved_tail(v[i]);
 }
 
 }  // namespace
 
 ast::SyntaxTree reparse(const ast::SyntaxTree& old, const ByteEdit& edit, const dialects::LexicalRules& rules,
                         ast::BlockSplice& splice) {
-    const std::string& text = old.text;
-    const std::size_t n = text.size();
+    Plan p = make_plan(old, edit, rules);
     std::string new_text;
-    new_text.reserve(n - (edit.end - edit.begin) + edit.text.size());
-    new_text.append(text, 0, edit.begin).append(edit.text).append(text, edit.end, std::string::npos);
-    if (n == 0 || new_text.empty() || n >= 0xFFFFFFF0u || new_text.size() >= 0xFFFFFFF0u)
-        return full_parse(std::move(new_text), rules, old.block_count(), splice);
-
-    const std::int64_t delta = static_cast<std::int64_t>(edit.text.size()) - static_cast<std::int64_t>(edit.end - edit.begin);
-    // The touched lines: from the start of the line of `begin` to the end of the line of `end`.
-    const std::size_t before_nl = edit.begin == 0 ? std::string::npos : text.rfind('\n', edit.begin - 1);
-    const std::uint32_t line_begin = before_nl == std::string::npos ? 0 : static_cast<std::uint32_t>(before_nl + 1);
-    const std::size_t after_nl = text.find('\n', edit.end);
-    std::uint32_t old_end = after_nl == std::string::npos ? static_cast<std::uint32_t>(n) : static_cast<std::uint32_t>(after_nl + 1);
-
-    const std::size_t count = old.block_count();
-    const bool has_tail = count > 0 && old.blocks[count - 1].kind == BlockKind::tail;
-    const std::uint32_t tail_begin = has_tail ? old.blocks[count - 1].begin : static_cast<std::uint32_t>(n);
-    const bool in_tail = has_tail && line_begin >= tail_begin;
-    const std::size_t first = in_tail ? count - 1 : first_block_at(old, line_begin);
-    if (!in_tail && first < count && old.blocks[first].begin != line_begin) return full_parse(std::move(new_text), rules, count, splice);
-    if (has_tail && old_end > tail_begin) old_end = static_cast<std::uint32_t>(n);
-
-    grammar::ParseState start = state_before(old, first);
-    start.file_start = line_begin == 0;
-    ast::SyntaxTree region;
-    std::size_t last = first;
-    if (start.ended) {
-        // Inside the text after the closing '%': it stays one tail block (the control does not read it).
-        last = count;
-        old_end = static_cast<std::uint32_t>(n);
-    } else {
-        while (true) {
-            last = old_end >= n ? count : first_block_at(old, old_end);
-            const std::uint32_t new_end = moved(old_end, delta);
-            grammar::ParseState end = start;
-            if (new_end > line_begin)
-                end = grammar::parse_into(region, std::string_view(new_text).substr(line_begin, new_end - line_begin), rules, start);
-            else
-                region = ast::SyntaxTree{};
-            if (old_end >= n) break;
-            const grammar::ParseState old_state = state_before(old, last);
-            if (!end.ended && !old_state.ended && end.program_seen == old_state.program_seen) break;
-            old_end = static_cast<std::uint32_t>(n);   // the '%' state changed: the rest of the file reads differently
-        }
+    new_text.reserve(old.text.size() - (edit.end - edit.begin) + edit.text.size());
+    new_text.append(old.text, 0, edit.begin).append(edit.text).append(old.text, edit.end, std::string::npos);
+    if (p.full) {
+        ast::SyntaxTree tree = grammar::parse(std::move(new_text), rules);
+        full_splice(old.block_count(), tree.block_count(), splice);
+        return tree;
     }
-
-    // The offsets of the old nodes: [0, first) before, [last, count) after the edited lines.
-    const std::size_t t0 = first < count ? old.blocks[first].first_token : old.tokens.size();
-    const std::size_t t1 = last < count ? old.blocks[last].first_token : old.tokens.size();
-    const auto expr_at = [&](std::uint32_t offset) {
-        return static_cast<std::size_t>(std::partition_point(old.exprs.begin(), old.exprs.end(), [&](const ast::Expr& e) { return e.begin < offset; }) - old.exprs.begin());
-    };
-    const auto statement_at = [&](std::uint32_t offset) {
-        return static_cast<std::size_t>(std::partition_point(old.statements.begin(), old.statements.end(), [&](const ast::Statement& s) { return s.range.begin < offset; }) - old.statements.begin());
-    };
-    const std::size_t e0 = expr_at(line_begin), e1 = old_end >= n ? old.exprs.size() : expr_at(old_end);
-    const std::size_t s0 = statement_at(line_begin), s1 = old_end >= n ? old.statements.size() : statement_at(old_end);
-
+    const std::size_t count = old.block_count();
     const Shift keep{};
-    const Shift in_region{line_begin, static_cast<std::int64_t>(t0), static_cast<std::int64_t>(e0), static_cast<std::int64_t>(s0),
-                          static_cast<std::int64_t>(old.big_numbers.size())};
-    const Shift after{delta, static_cast<std::int64_t>(t0 + region.tokens.size()) - static_cast<std::int64_t>(t1),
-                      static_cast<std::int64_t>(e0 + region.exprs.size()) - static_cast<std::int64_t>(e1),
-                      static_cast<std::int64_t>(s0 + region.statements.size()) - static_cast<std::int64_t>(s1), 0};
-
     ast::SyntaxTree tree;
     tree.text = std::move(new_text);
-    tree.blocks.reserve(count - (last - first) + region.blocks.size());
-    const auto block_shifted = [](const Shift& s) {
-        return [&s](ast::Block b) {
-            b.begin = moved(b.begin, s.bytes);
-            b.first_token = moved(b.first_token, s.tokens);
-            return b;
-        };
-    };
-    append(tree.blocks, old.blocks, 0, first, block_shifted(keep));
-    append(tree.blocks, region.blocks, 0, region.blocks.size(), block_shifted(in_region));
-    if (start.ended) {
-        tree.blocks.push_back(old.blocks[count - 1]);   // the tail, where it was
-    } else {
-        append(tree.blocks, old.blocks, last, count, block_shifted(after));
-    }
+    tree.blocks.reserve(count - (p.last - p.first) + p.region.blocks.size());
+    const auto block_shifted = [](const Shift& sh) { return [&sh](const ast::Block& b) { return shifted(b, sh); }; };
+    append(tree.blocks, old.blocks, 0, p.first, block_shifted(keep));
+    append(tree.blocks, p.region.blocks, 0, p.region.blocks.size(), block_shifted(p.in_region));
+    if (p.tail) tree.blocks.push_back(old.blocks[count - 1]);   // the tail, where it was
+    else append(tree.blocks, old.blocks, p.last, count, block_shifted(p.after));
 
-    tree.tokens.reserve(old.tokens.size() - (t1 - t0) + region.tokens.size());
-    const auto token_shifted = [](const Shift& s) { return [&s](const ast::Token& t) { return shifted(t, s); }; };
-    append(tree.tokens, old.tokens, 0, t0, token_shifted(keep));
-    append(tree.tokens, region.tokens, 0, region.tokens.size(), token_shifted(in_region));
-    append(tree.tokens, old.tokens, t1, old.tokens.size(), token_shifted(after));
+    tree.tokens.reserve(old.tokens.size() - (p.t1 - p.t0) + p.region.tokens.size());
+    const auto token_shifted = [](const Shift& sh) { return [&sh](const ast::Token& t) { return shifted(t, sh); }; };
+    append(tree.tokens, old.tokens, 0, p.t0, token_shifted(keep));
+    append(tree.tokens, p.region.tokens, 0, p.region.tokens.size(), token_shifted(p.in_region));
+    append(tree.tokens, old.tokens, p.t1, old.tokens.size(), token_shifted(p.after));
 
-    const auto expr_shifted = [](const Shift& s) { return [&s](const ast::Expr& e) { return shifted(e, s); }; };
-    append(tree.exprs, old.exprs, 0, e0, expr_shifted(keep));
-    append(tree.exprs, region.exprs, 0, region.exprs.size(), expr_shifted(in_region));
-    append(tree.exprs, old.exprs, e1, old.exprs.size(), expr_shifted(after));
+    const auto expr_shifted = [](const Shift& sh) { return [&sh](const ast::Expr& e) { return shifted(e, sh); }; };
+    append(tree.exprs, old.exprs, 0, p.e0, expr_shifted(keep));
+    append(tree.exprs, p.region.exprs, 0, p.region.exprs.size(), expr_shifted(p.in_region));
+    append(tree.exprs, old.exprs, p.e1, old.exprs.size(), expr_shifted(p.after));
 
-    const auto statement_shifted = [](const Shift& s) { return [&s](const ast::Statement& st) { return shifted(st, s); }; };
-    append(tree.statements, old.statements, 0, s0, statement_shifted(keep));
-    append(tree.statements, region.statements, 0, region.statements.size(), statement_shifted(in_region));
-    append(tree.statements, old.statements, s1, old.statements.size(), statement_shifted(after));
+    const auto statement_shifted = [](const Shift& sh) { return [&sh](const ast::Statement& st) { return shifted(st, sh); }; };
+    append(tree.statements, old.statements, 0, p.s0, statement_shifted(keep));
+    append(tree.statements, p.region.statements, 0, p.region.statements.size(), statement_shifted(p.in_region));
+    append(tree.statements, old.statements, p.s1, old.statements.size(), statement_shifted(p.after));
 
     tree.big_numbers = old.big_numbers;
-    tree.big_numbers.insert(tree.big_numbers.end(), region.big_numbers.begin(), region.big_numbers.end());
-
-    for (const ast::Diagnostic& d : old.diagnostics)
-        if (d.range.begin < line_begin) tree.diagnostics.push_back(d);
-    for (const ast::Diagnostic& d : region.diagnostics) tree.diagnostics.push_back(shifted(d, line_begin));
-    for (const ast::Diagnostic& d : old.diagnostics)
-        if (d.range.begin >= old_end && !start.ended) tree.diagnostics.push_back(shifted(d, delta));
-
-    splice.first = static_cast<std::uint32_t>(first);
-    splice.removed = start.ended ? 0 : static_cast<std::uint32_t>(last - first);
-    splice.added = static_cast<std::uint32_t>(region.blocks.size());
-    splice.old_begin = line_begin;
-    splice.old_end = old_end;
-    splice.shift = delta;
+    tree.big_numbers.insert(tree.big_numbers.end(), p.region.big_numbers.begin(), p.region.big_numbers.end());
+    tree.diagnostics = spliced_diagnostics(old.diagnostics, p);
+    fill_splice(p, splice);
     return tree;
+}
+
+void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialects::LexicalRules& rules, ast::BlockSplice& splice) {
+    Plan p = make_plan(tree, edit, rules);
+    tree.text.replace(edit.begin, edit.end - edit.begin, edit.text);
+    if (p.full) {
+        const std::size_t old_blocks = tree.block_count();
+        tree = grammar::parse(std::move(tree.text), rules);
+        full_splice(old_blocks, tree.block_count(), splice);
+        return;
+    }
+    fill_splice(p, splice);
+    tree.diagnostics = spliced_diagnostics(tree.diagnostics, p);
+    if (p.tail) return;   // the tail block keeps its place; only the text changed
+    replace_in_place(tree.blocks, p.first, p.last, p.region.blocks, [&](const ast::Block& b) { return shifted(b, p.in_region); },
+                     [&](const ast::Block& b) { return shifted(b, p.after); });
+    replace_in_place(tree.tokens, p.t0, p.t1, p.region.tokens, [&](const ast::Token& t) { return shifted(t, p.in_region); },
+                     [&](const ast::Token& t) { return shifted(t, p.after); });
+    replace_in_place(tree.exprs, p.e0, p.e1, p.region.exprs, [&](const ast::Expr& e) { return shifted(e, p.in_region); },
+                     [&](const ast::Expr& e) { return shifted(e, p.after); });
+    replace_in_place(tree.statements, p.s0, p.s1, p.region.statements, [&](const ast::Statement& st) { return shifted(st, p.in_region); },
+                     [&](const ast::Statement& st) { return shifted(st, p.after); });
+    tree.big_numbers.insert(tree.big_numbers.end(), p.region.big_numbers.begin(), p.region.big_numbers.end());
 }
 
 }  // namespace kerf::lsp

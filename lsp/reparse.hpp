@@ -29,5 +29,8 @@ struct ByteEdit {
 // The tree of the edited text; `splice` says which blocks changed (for ast::TypedFile::bind_edited).
 ast::SyntaxTree reparse(const ast::SyntaxTree& old, const ByteEdit& edit, const dialects::LexicalRules& rules,
                         ast::BlockSplice& splice);
+// The same edit made to `tree` itself (no copy: the document store's path when nobody else holds
+// the version); afterwards `tree` is what reparse() would have returned.
+void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialects::LexicalRules& rules, ast::BlockSplice& splice);
 
 }  // namespace kerf::lsp

@@ -361,9 +361,25 @@ struct Server::Impl {
         set_document(doc);
     }
 
+    // The current version of `uri`, taken out of the store with every other holder let go (the
+    // analysis worker stops with it): an edit can then change it in place.
+    std::shared_ptr<const Document> take_document(const std::string& uri) {
+        std::shared_ptr<const Document> doc;
+        {
+            const std::lock_guard lock(docs_mutex);
+            const auto it = docs.find(uri);
+            if (it == docs.end()) throw RpcError(error_code::invalid_params, fmt::format("'{}' is not open", uri));
+            doc = std::move(it->second);
+            docs.erase(it);
+        }
+        if (worker) worker->release(uri);
+        return doc;
+    }
+
     void did_change(const json::value& params) {
         const json::object& td = object_param(params, "textDocument");
-        const std::shared_ptr<const Document> doc = open_document(string_param(td, "uri"));
+        const std::string uri = string_param(td, "uri");
+        open_document(uri);   // an error for a document that is not open, before anything changes
         const json::value* changes = params_object(params).if_contains("contentChanges");
         if (!changes || !changes->is_array()) throw RpcError(error_code::invalid_params, "'contentChanges' must be an array");
         std::vector<ContentChange> list;
@@ -374,11 +390,13 @@ struct Server::Impl {
             if (c.as_object().contains("range")) change.range = range_param(c.as_object(), "range");
             list.push_back(std::move(change));
         }
+        const std::int64_t version = int_param(td, "version");
+        std::shared_ptr<const Document> doc = take_document(uri);
+        const bool was_refused = !doc->refused().empty();
         std::vector<std::string> problems;
-        std::shared_ptr<const Document> next = doc->edit(int_param(td, "version"), list, problems);
-        for (const std::string& p : problems) log(message_type::warning, fmt::format("kerf lsp: {}: {}", doc->uri(), p));
-        if (!next->refused().empty() && doc->refused().empty())
-            log(message_type::warning, fmt::format("kerf lsp: {}: {}", doc->uri(), next->refused()));
+        std::shared_ptr<const Document> next = Document::edit(std::move(doc), version, list, problems);
+        for (const std::string& p : problems) log(message_type::warning, fmt::format("kerf lsp: {}: {}", uri, p));
+        if (!next->refused().empty() && !was_refused) log(message_type::warning, fmt::format("kerf lsp: {}: {}", uri, next->refused()));
         // A dialect detected from the text may change with the header: resolve again when the edit
         // reached the first lines (detection weighs the header first).
         if (next->settings().dialect_why.ends_with("detected from the text") && touches_head(list)) {

@@ -123,6 +123,16 @@ Bound step(const Bound& current, const lsp::ByteEdit& edit, const dialects::Dial
                                                                                  : ast::TypedFile::bind_edited(*next.owned, *current.typed, splice));
     const Bound expected = full(next.tree().text, d);
     REQUIRE(difference(next.tree(), expected.tree()) == "");
+    // The document store's path when it is the only holder: the same edit made to the tree itself.
+    ast::SyntaxTree in_place = current.tree();
+    ast::BlockSplice in_place_splice;
+    lsp::reparse_in_place(in_place, edit, d.lexical, in_place_splice);
+    const ast::TypedFile in_place_typed = in_place_splice.old_end == 0xFFFFFFFFu ? ast::TypedFile::bind(in_place, d)
+                                                                                 : ast::TypedFile::bind_edited(in_place, *current.typed, in_place_splice);
+    REQUIRE(difference(in_place, expected.tree()) == "");
+    REQUIRE(same_typed(in_place_typed, *expected.typed));
+    REQUIRE((in_place_splice.first == splice.first && in_place_splice.removed == splice.removed &&
+             in_place_splice.added == splice.added && in_place_splice.old_end == splice.old_end));
     REQUIRE(same_typed(*next.typed, *expected.typed));
     return next;
 }
@@ -238,4 +248,34 @@ TEST_CASE("Document::edit takes LSP positions in UTF-16 units and re-parses only
     const auto same = doc->edit(5, {ContentChange{std::make_pair(ast::Position{5000, 0}, ast::Position{5001, 0}), "X"}}, problems);
     CHECK(problems.size() == 1);
     CHECK(same->text() == doc->text());
+}
+
+TEST_CASE("Document::edit of the only holder edits that version in place; a shared version is copied") {
+    using namespace kerf::lsp;
+    auto settings = std::make_shared<FileSettings>();
+    settings->registry = std::shared_ptr<const dialects::Registry>(&dialects::builtin_registry(), [](const dialects::Registry*) {});
+    settings->dialect = settings->registry->find("fanuc-mill");
+    std::string text = "O1\n";
+    for (int i = 0; i < 100; ++i) text += "N" + std::to_string(i + 1) + " G1 X" + std::to_string(i) + ". F100.\n";
+    std::vector<std::string> problems;
+    std::shared_ptr<const Document> doc = Document::open("file:///t.nc", "/t.nc", 1, text, settings);
+    const Document* const address = doc.get();
+    // Line 2 is "N2 G1 X1. F100.": X1. -> X17. (column 8 is after "X1").
+    doc = Document::edit(std::move(doc), 2, {ContentChange{std::make_pair(ast::Position{2, 8}, ast::Position{2, 8}), "7"}}, problems);
+    CHECK(doc.get() == address);
+    CHECK(doc->version() == 2);
+    CHECK(doc->reparsed_blocks() == 1);
+    const std::string expected_text = doc->text();
+    CHECK(expected_text.find("\nN2 G1 X17. F100.\n") != std::string::npos);
+    // The tree and the typed file are those of a whole parse of the new text.
+    const auto whole = Document::open("file:///u.nc", "/u.nc", 2, expected_text, settings);
+    CHECK(difference(doc->tree(), whole->tree()) == "");
+    CHECK(same_typed(doc->typed(), whole->typed()));
+    // Another holder (an analysis still running on version 2): version 3 is a new object, 2 unchanged.
+    const std::shared_ptr<const Document> held = doc;
+    const auto next = Document::edit(doc, 3, {ContentChange{std::make_pair(ast::Position{2, 0}, ast::Position{2, 2}), "N9"}}, problems);
+    CHECK(next.get() != held.get());
+    CHECK(held->text() == expected_text);
+    CHECK(next->text().find("\nN9 G1 X17. F100.\n") != std::string::npos);
+    CHECK(problems.empty());
 }
