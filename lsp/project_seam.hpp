@@ -1,9 +1,9 @@
-// The one seam between the server and the project layer (issue 13's `project/`: the .kerf.toml
-// model, dialect and machine resolution, the program index). Until that layer is on main this
-// file's implementation reads what `kerf check` and `kerf fmt` read (.kerf.toml walking up from the
-// file: dialect, machine, dialect_files, [format], [check]) and keeps a small program index of the
-// workspace; when it lands, only project_seam.cpp changes (NOTICES.md). Nothing else in lsp/
-// resolves settings or finds programs.
+// The server's face of the project layer (issue 13's `project/`): one project::Workspace whose
+// files are the open documents over the disk, so the .kerf.toml model, dialect and machine
+// resolution (the client's kerf.dialect / kerf.machine as the workspace's overrides) and the
+// program index are exactly those of `kerf check` and `kerf fmt`. This file turns the workspace's
+// answers into what the features use (FileSettings per document, IndexedProgram with its file);
+// nothing else in lsp/ resolves settings or finds programs.
 //
 // Thread-safe: the analysis worker asks for programs while the message thread updates the index.
 #pragma once
@@ -11,7 +11,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -22,6 +21,7 @@
 #include "ast/typed.hpp"
 #include "interpreter/program_set.hpp"
 #include "lsp/settings.hpp"
+#include "project/workspace.hpp"
 
 namespace kerf::lsp {
 
@@ -37,9 +37,10 @@ struct IndexedProgram {
 
 class ProjectSeam {
 public:
-    // Reads a file's text (open documents first, then the disk); nullopt when it cannot.
+    // The text of an open document (nullopt when `path` is not open): open documents hide their
+    // files on disk for every read of the workspace (configuration, index, subprograms).
     using Reader = std::function<std::optional<std::string>(const std::filesystem::path&)>;
-    explicit ProjectSeam(Reader reader);
+    explicit ProjectSeam(Reader open_documents);
 
     void set_client(ClientSettings settings);
     ClientSettings client() const;
@@ -57,25 +58,27 @@ public:
     void set_programs(const std::filesystem::path& file, std::vector<IndexedProgram> programs);
     static std::vector<IndexedProgram> programs_of(const std::filesystem::path& file, const ast::TypedFile& typed);
     void remove_file(const std::filesystem::path& file);
-    // Program `number` as a call from `from` reaches it outside `from` itself: the file's own
-    // folder first, then the nearest file in path order.
-    std::optional<IndexedProgram> find_program(std::int64_t number, const std::filesystem::path& from) const;
+    // Program `number` as a call from `from` reaches it outside `from` itself (project/index.hpp:
+    // the file's folder, then the nearest folder, within its folder and [programs] library); when
+    // no such file holds it and `anywhere`, the nearest file of the whole index (go to definition
+    // still finds it; the analysis asks without `anywhere`, as `kerf check` does).
+    std::optional<IndexedProgram> find_program(std::int64_t number, const std::filesystem::path& from, bool anywhere = true);
+    // The other files a call from `from` reaches that hold `number`, first the one the dry run
+    // takes (analyzer K3010), named as `kerf check` names them.
+    std::vector<std::string> program_files(std::int64_t number, const std::filesystem::path& from);
     std::vector<IndexedProgram> programs_in(const std::filesystem::path& file) const;
     std::vector<IndexedProgram> all_programs() const;
     std::vector<std::filesystem::path> files() const;
     // For interpreter::ProgramSet::set_loader: O number → (name, text) through the index.
-    interpreter::ProgramSet::Loader loader_for(const std::filesystem::path& file) const;
-    const Reader& reader() const { return reader_; }
+    interpreter::ProgramSet::Loader loader_for(const std::filesystem::path& file);
+    // A file's text: the open document, else the disk.
+    std::optional<std::string> read(const std::filesystem::path& file) const;
 
 private:
-    struct Config;
-    std::shared_ptr<const Config> config_for(const std::optional<std::filesystem::path>& file);
-
-    Reader reader_;
+    std::shared_ptr<const project::FileSystem> files_;
+    mutable project::Workspace workspace_;
     mutable std::mutex mutex_;
     ClientSettings client_;
-    std::map<std::filesystem::path, std::shared_ptr<const Config>> configs_;
-    std::map<std::filesystem::path, std::vector<IndexedProgram>> index_;
 };
 
 // True for the file names the index reads: NC extensions (.nc .ngc .tap .cnc .mpf .eia .txt, any

@@ -62,7 +62,7 @@ struct Server::Impl {
     using NotifyFn = std::function<void(const json::value& params)>;
 
     Impl(int in_fd, int out_fd, ServerOptions o)
-        : options(std::move(o)), transport(in_fd, out_fd), project([this](const fs::path& p) { return read_file(p); }) {
+        : options(std::move(o)), transport(in_fd, out_fd), project([this](const fs::path& p) { return open_text(p); }) {
         register_handlers();
     }
 
@@ -114,13 +114,12 @@ struct Server::Impl {
 
     // --- files -------------------------------------------------------------------------------
 
-    std::optional<std::string> read_file(const fs::path& path) {
-        {
-            const std::lock_guard lock(docs_mutex);
-            for (const auto& [uri, doc] : docs)
-                if (doc->path() == path) return doc->text();
-        }
-        return read_disk(path);
+    // The text of an open document at `path` (the project layer reads the disk for the rest).
+    std::optional<std::string> open_text(const fs::path& path) {
+        const std::lock_guard lock(docs_mutex);
+        for (const auto& [uri, doc] : docs)
+            if (doc->path() == path) return doc->text();
+        return std::nullopt;
     }
 
     // --- the reader thread -------------------------------------------------------------------
@@ -399,7 +398,7 @@ struct Server::Impl {
         if (!next->refused().empty() && !was_refused) log(message_type::warning, fmt::format("kerf lsp: {}: {}", uri, next->refused()));
         // A dialect detected from the text may change with the header: resolve again when the edit
         // reached the first lines (detection weighs the header first).
-        if (next->settings().dialect_why.ends_with("detected from the text") && touches_head(list)) {
+        if (next->settings().detected && touches_head(list)) {
             const auto settings = project.resolve(next->path(), next->text());
             if (settings->dialect != next->settings().dialect) next = next->with_settings(settings);
         }
@@ -681,7 +680,7 @@ void Server::interrupt() { impl_->transport.interrupt(); }
 std::shared_ptr<const Document> Snapshot::document_at(const fs::path& path) const {
     for (const auto& [uri, doc] : open)
         if (doc->path() == path) return doc;
-    const std::optional<std::string> text = project.reader()(path);
+    const std::optional<std::string> text = project.read(path);
     if (!text) return nullptr;
     return Document::open(path_to_uri(path), path, 0, *text, project.resolve(path, *text));
 }

@@ -1,5 +1,5 @@
 // What analysing, formatting and running one document needs, resolved once per document from the
-// client's settings and the .kerf.toml over it (lsp/project_seam.hpp). Immutable: documents and
+// client's settings and the .kerf.toml over it (project::Workspace through lsp/project_seam.hpp). Immutable: documents and
 // the analysis worker share one through a shared pointer.
 #pragma once
 
@@ -30,6 +30,7 @@ struct FileSettings {
     std::shared_ptr<const dialects::Registry> registry;   // keeps `dialect` alive
     const dialects::Dialect* dialect = nullptr;
     std::string dialect_why;                // "fanuc-mill from the client setting kerf.dialect"
+    bool detected = false;                  // the dialect was detected from the text (a header edit may change it)
     std::vector<std::string> detection;     // detection's reasons when it decided
     interpreter::Setup setup;
     std::string machine_why;

@@ -131,7 +131,7 @@ std::vector<std::shared_ptr<const Document>> workspace_documents(const Snapshot&
     for (const fs::path& path : s.project.files()) {
         if (s.cancelled()) break;
         if (!seen.insert(path).second) continue;
-        const std::optional<std::string> text = s.project.reader()(path);
+        const std::optional<std::string> text = s.project.read(path);
         if (!text || text->find(needle) == std::string::npos) continue;   // no call can name the number
         out.push_back(Document::open(path_to_uri(path), path, 0, *text, s.project.resolve(path, *text)));
     }

@@ -130,7 +130,7 @@ json::value workspace_symbols(const OpenDocuments& open, ProjectSeam& project, c
         const std::string name = fmt::format("O{:04}", p.number);
         if (!matches(name, p.comment)) continue;
         // Positions need the file's lines: read it (only the matching ones).
-        const std::optional<std::string> text = project.reader()(p.file);
+        const std::optional<std::string> text = project.read(p.file);
         if (!text) continue;
         const ast::LineIndex lines(*text);
         const ast::Position at = lines.utf16(p.begin);

@@ -201,3 +201,37 @@ TEST_CASE("a newer version supersedes the analysis of an older one: the last com
     const json::value h = c.result("textDocument/hover", test::at("file:///w/v.nc", 1, 16));
     CHECK(str(h.at("contents").at("value")).find("Dry run after this block") != std::string::npos);   // the analysis of version 6
 }
+
+TEST_CASE("the project layer decides: .kerf.toml problems are said, [programs] library folders are reached, K3010 as kerf check") {
+    // proj/.kerf.toml reaches lib/ (a library folder); other/ is in the workspace but not reachable
+    // by a call from proj/ (kerf check says K3003 there too), yet go to definition still finds it.
+    test::TempFolder folder;
+    folder.write("proj/.kerf.toml", "dialect = \"fanuc-mill\"\nmachin = \"m.toml\"\n[programs]\nlibrary = [\"../lib\"]\n");
+    folder.write("lib/macros.nc", "%\nO9010 (PECK MACRO)\nG00 X1.\nM99\nO9011\nM99\n%\n");
+    folder.write("other/O4444.nc", "O4444 (ELSEWHERE)\nM99\n");
+    folder.write("proj/O5555.nc", "O5555 (COPY ONE)\nM99\n");
+    folder.write("lib/O5555.nc", "O5555 (COPY TWO)\nM99\n");
+    LspClient c;
+    c.initialize({}, folder.path());
+    c.log_containing("kerf lsp: indexed");
+    c.open(folder.uri("proj/main.nc"), "O0001\nG65 P9010\nM98 P4444\nM98 P5555\nM30\n");
+    // The strict .kerf.toml model (project/config.hpp): the misspelt key is said with its place.
+    const json::object problem = c.log_containing("unknown key");
+    CHECK(std::string(problem.at("params").at("message").as_string()).find(".kerf.toml:2:1") != std::string::npos);
+    const json::array diagnostics = c.diagnostics(folder.uri("proj/main.nc"), 1);
+    const auto d = by_code(diagnostics);
+    REQUIRE(d.count("K3003") == 1);                                 // O4444 only: O9010 is in the library
+    CHECK(span(d.at("K3003")->at("range")) == "2:4-2:9");
+    REQUIRE(d.count("K3010") == 1);                                 // O5555 in proj/ and lib/: proj's copy runs
+    CHECK(span(d.at("K3010")->at("range")) == "3:4-3:9");
+    CHECK(str(d.at("K3010")->at("message")).find((folder.path() / "proj/O5555.nc").string()) != std::string::npos);
+    // Definition: into the library file (a program inside a file named by content, not by number)...
+    const json::value macro = c.result("textDocument/definition", test::at(folder.uri("proj/main.nc"), 1, 6));
+    CHECK(str(macro.at("uri")) == folder.uri("lib/macros.nc"));
+    CHECK(span(macro.at("range")) == "1:0-1:5");
+    // ...and to the one file of the workspace that holds O4444, though no call from proj/ reaches it.
+    const json::value other = c.result("textDocument/definition", test::at(folder.uri("proj/main.nc"), 2, 6));
+    CHECK(str(other.at("uri")) == folder.uri("other/O4444.nc"));
+    const json::value copy = c.result("textDocument/definition", test::at(folder.uri("proj/main.nc"), 3, 6));
+    CHECK(str(copy.at("uri")) == folder.uri("proj/O5555.nc"));
+}
