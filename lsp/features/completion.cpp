@@ -77,7 +77,7 @@ void codes(const Snapshot& s, char letter, const json::object& range, json::arra
 
 // Two-block cycle forms (cycles.md §2–§7), spelled with this dialect's code for the function.
 struct CycleSnippet {
-    std::string_view function;
+    dialects::FunctionId function;
     const char* name;
     const char* body;   // {0} = the code
 };
@@ -191,7 +191,7 @@ void block_words(const Snapshot& s, std::uint32_t block, const json::object& ran
         }
 }
 
-bool has_function(const ast::BlockView& view, std::initializer_list<std::string_view> functions) {
+bool has_function(const ast::BlockView& view, std::initializer_list<dialects::FunctionId> functions) {
     std::vector<ast::CodeRef> g, m;
     view.collect_codes(g, m);
     for (const auto* list : {&g, &m})

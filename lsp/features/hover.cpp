@@ -60,7 +60,7 @@ std::string code_text(const FileSettings& settings, const dialects::CodeInfo& in
     if (info.group == "00") group = ru ? "группа 00 (действует в одном кадре)" : "group 00 (one-shot)";
     else if (!info.group.empty()) group = fmt::format(fmt::runtime(ru ? "группа {}{}" : "group {}{}"), info.group, info.modal ? (ru ? ", модальный" : ", modal") : "");
     if (info.power_on_default) group += ru ? ", при включении" : ", power-on default";
-    out += fmt::format("\n\n`{}`{}", info.function.empty() ? "-" : info.function, group.empty() ? "" : " · " + group);
+    out += fmt::format("\n\n`{}`{}", info.function.empty() ? std::string_view("-") : info.function.name(), group.empty() ? "" : " · " + group);
     if (!info.words.empty()) {
         std::string words;
         for (const std::string& w : info.words) words += (words.empty() ? "" : " ") + w;

@@ -16,7 +16,7 @@ namespace {
 enum class Which { any, first, second };
 
 struct CycleWord {
-    std::string_view function;
+    dialects::FunctionId function;
     Which which;
     char letter;
     const char* en;
@@ -105,7 +105,7 @@ constexpr CycleWord kCycleWords[] = {
 };
 
 // Drilling cycles (cycles.md §10–§11; [FANUC] mill G73/G74/G76/G81–G89).
-constexpr std::string_view kDrilling[] = {
+constexpr dialects::FunctionId kDrilling[] = {
     fn::drilling_cycle, fn::drilling_dwell_cycle, fn::peck_drilling_cycle, fn::high_speed_peck_drilling_cycle, fn::tapping_cycle,
     fn::left_hand_tapping_cycle, fn::boring_cycle, fn::boring_dwell_cycle, fn::boring_spindle_stop_cycle,
     fn::boring_manual_retract_cycle, fn::back_boring_cycle, fn::fine_boring_cycle, fn::face_drilling_cycle, fn::face_tapping_cycle,
@@ -143,7 +143,7 @@ bool has_letter(const ast::BlockView& view, std::initializer_list<char> letters)
 }
 
 // The second block of a two-block cycle: G71–G73 with P/Q, G74–G76 with an end point.
-Which which_block(const ast::BlockView& view, std::string_view function) {
+Which which_block(const ast::BlockView& view, dialects::FunctionId function) {
     if (function == fn::rough_turning_cycle || function == fn::rough_facing_cycle || function == fn::pattern_repeating_cycle)
         return has_letter(view, {'P', 'Q'}) ? Which::second : Which::first;
     if (function == fn::face_peck_drilling_cycle || function == fn::grooving_cycle || function == fn::multiple_threading_cycle)
@@ -151,7 +151,7 @@ Which which_block(const ast::BlockView& view, std::string_view function) {
     return Which::any;
 }
 
-std::string_view table_function(std::string_view f) {
+dialects::FunctionId table_function(dialects::FunctionId f) {
     // The second blocks of G72 and G73 read as G71's (cycles.md §3, §4).
     if (f == fn::rough_facing_cycle || f == fn::pattern_repeating_cycle) return fn::rough_turning_cycle;
     return f;
@@ -202,15 +202,15 @@ std::string word_meaning(const Document& doc, std::uint32_t token, const std::st
     for (const auto* codes : {&g, &m}) {
         for (const ast::CodeRef& c : *codes) {
             if (!c.info) continue;
-            const std::string_view f = c.info->function;
+            const dialects::FunctionId f = c.info->function;
             const Which which = which_block(view, f);
-            const std::string_view table = which == Which::second ? table_function(f) : f;
+            const dialects::FunctionId table = which == Which::second ? table_function(f) : f;
             for (const CycleWord& w : kCycleWords)
                 if (w.function == table && w.letter == t.letter && (w.which == Which::any || w.which == which))
                     return fmt::format("{} {}{}{}: {}", t.letter, ru ? "в кадре " : "in a ", c.info->spelling,
                                        which == Which::first ? (ru ? " (первый кадр)" : " first block") : which == Which::second ? (ru ? " (второй кадр)" : " second block") : (ru ? "" : " block"),
                                        ru ? w.ru : w.en);
-            for (const std::string_view d : kDrilling)
+            for (const dialects::FunctionId d : kDrilling)
                 if (d == f)
                     for (const LetterWord& w : kDrillingWords)
                         if (w.letter == t.letter) return fmt::format("{} {}{}{}: {}", t.letter, ru ? "в кадре " : "in a ", c.info->spelling, ru ? "" : " block", ru ? w.ru : w.en);
