@@ -109,7 +109,8 @@ def percentiles(values):
 
 
 def fmt(p):
-    return f"p50 {p['p50_ms']:.2f} ms, p99 {p['p99_ms']:.2f} ms, max {p['max_ms']:.2f} ms (n={p['n']})"
+    answered = f", {p['answered']} with a result" if 'answered' in p else ''
+    return f"p50 {p['p50_ms']:.2f} ms, p99 {p['p99_ms']:.2f} ms, max {p['max_ms']:.2f} ms (n={p['n']}{answered})"
 
 
 def main():
@@ -175,12 +176,14 @@ def main():
         line = rng.randrange(len(lines))
         return {'line': line, 'character': rng.randrange(len(lines[line]) + 1)}
     for method, key in (('textDocument/hover', 'hover_idle'), ('textDocument/completion', 'completion_idle')):
-        times = []
+        times, answered = [], 0
         for _ in range(a.requests):
             dt, msg = c.call(method, {'textDocument': {'uri': uri}, 'position': random_position()})
             assert 'result' in msg, msg
+            answered += msg['result'] not in (None, [], {})
             times.append(dt)
         result[key] = percentiles(times)
+        result[key]['answered'] = answered   # requests with a non-empty result (a hover on a blank has none)
     # ...and right after an edit, while the new version's analysis (static rules, dry run) runs.
     version += 1
     c.notify('textDocument/didChange', {'textDocument': {'uri': uri, 'version': version},
