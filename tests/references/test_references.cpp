@@ -35,7 +35,7 @@ const dialects::Dialect& with_m97() {
         m97.letter = 'M';
         m97.key = 970;
         m97.spelling = "M97";
-        m97.function = "local-subprogram-call";
+        m97.function = dialects::functions::local_subprogram_call;
         m97.words = {"P", "L"};
         m97.en = "Local subprogram call";
         copy.add_or_replace(m97);
