@@ -197,7 +197,7 @@ void ProjectSeam::update_file(const fs::path& file, std::string_view text) {
     const fs::path path = project::normal_path(file);
     const std::shared_ptr<const project::Project> p = workspace_.project_for(path);
     // The lexical rules of the file's dialect decide where its programs end (';', comments).
-    const dialects::Dialect* d = p->dialects().find(project::choose_dialect(workspace_.overrides(), p->config(), text).id);
+    const dialects::Dialect* d = p->dialects().find(project::choose_dialect(workspace_.overrides(), p->config(), text, p->dialects()).id);
     workspace_.index().update_file(path, text, d ? project::ScanRules::of(d->lexical) : project::ScanRules{});
 }
 
