@@ -27,14 +27,18 @@ std::string lower(std::string s) {
 class OpenDocumentsFileSystem : public project::FileSystem {
 public:
     explicit OpenDocumentsFileSystem(ProjectSeam::Reader open) : open_(std::move(open)) {}
-    project::ReadResult read(const fs::path& path) const override {
-        if (std::optional<std::string> text = open_(path)) return {std::move(text), {}};
-        return disk_.read(path);
+    using project::FileSystem::read;
+    // An open document is the editor's text (already decoded); a file is read and decoded from disk.
+    project::ReadResult read(const fs::path& path, const ast::InputLimits& limits) const override {
+        project::ReadResult r;
+        if ((r.text = open_(path))) return r;
+        return disk_.read(path, limits);
     }
     project::ReadResult read_head(const fs::path& path, std::size_t bytes) const override {
-        if (std::optional<std::string> text = open_(path)) {
-            if (text->size() > bytes) text->resize(bytes);
-            return {std::move(text), {}};
+        project::ReadResult r;
+        if ((r.text = open_(path))) {
+            if (r.text->size() > bytes) r.text->resize(bytes);
+            return r;
         }
         return disk_.read_head(path, bytes);
     }
