@@ -29,7 +29,7 @@ inline constexpr int request_cancelled = -32800;      // $/cancelRequest
 
 // Thrown by a handler to answer its request with an error.
 struct RpcError : std::runtime_error {
-    RpcError(int code, const std::string& message) : std::runtime_error(message), code(code) {}
+    RpcError(int error_code, const std::string& message) : std::runtime_error(message), code(error_code) {}
     int code;
 };
 

@@ -678,8 +678,8 @@ int Server::run() { return impl_->run(); }
 void Server::interrupt() { impl_->transport.interrupt(); }
 
 std::shared_ptr<const Document> Snapshot::document_at(const fs::path& path) const {
-    for (const auto& [uri, doc] : open)
-        if (doc->path() == path) return doc;
+    for (const auto& [uri, open_doc] : open)
+        if (open_doc->path() == path) return open_doc;
     const std::optional<std::string> text = project.read(path);
     if (!text) return nullptr;
     return Document::open(path_to_uri(path), path, 0, *text, project.resolve(path, *text));
