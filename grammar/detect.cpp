@@ -164,7 +164,7 @@ struct Score {
 };
 
 Score weigh(const dialects::Dialect& d, const Facts& f, const ast::LineIndex& lines) {
-    Score s{&d};
+    Score s{&d, 0, 0, {}};
     const std::vector<bool> macro_calls = macro_call_blocks(f, d);
     for (const DetectClue& c : d.detect.clues) {
         const std::vector<std::uint32_t> at = occurrences(c, f, macro_calls);
