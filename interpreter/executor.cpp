@@ -313,6 +313,7 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     apply_m_codes(frame, view, words, MPhase::before_motion);
     if (stopped_) return false;
     if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
+    if (pending_length_event_ || length_applied_mm_ != length_mm_) take_up_length_offset(view, words);
     if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
     // A block that sets a frame (G10, G50/G92 X Z, G52, G68, G51, G51.1) does not move; its M

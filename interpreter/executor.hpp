@@ -462,7 +462,13 @@ private:
     // work coordinates stay: the machine position shifts (like a lathe T word).
     int length_sign_ = 0;      // +1 G43, −1 G44, 0 G49 (power-on)
     int length_h_ = 0;         // the H number in force
-    double length_mm_ = 0;     // the signed offset on Z, mm
+    double length_mm_ = 0;     // the signed offset on Z, mm, as commanded
+    // The offset the axes have taken up: the commanded one from the next block that moves Z (or at
+    // once, machine switch length_offset_motion). Machine positions use this one.
+    double length_applied_mm_ = 0;
+    std::optional<Event> pending_length_event_;   // its coordinate_change, emitted when taken up
+    void take_up_length_offset(const ast::BlockView& view, const BlockWords& words);   // if the block moves Z
+    void take_up_length_offset(const ast::BlockView& view);
     void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
     bool axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const;   // seed-004 G43/G44
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------

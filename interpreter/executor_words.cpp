@@ -177,7 +177,7 @@ Position Executor::machine_offset() const {
     for (std::size_t a = 0; a < kAxisCount; ++a)
         p[a] = active_work_offset()[a] + external_offset_[a] + setup_.work_shift_sign * work_shift_[a] +
                local_shift_[a] + setting_shift_[a] + tool[a];
-    p[2] += length_mm_;   // [length offsets] G43/G44 H on Z (executor_length.cpp)
+    p[2] += length_applied_mm_;   // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp)
     return p;
 }
 

@@ -106,7 +106,10 @@ bool ahead_on(const Element& e, P2 from, P2 p) {
     const double to_p = travelled(p);
     double to_end = travelled(e.end);
     if (to_end < 1e-9) to_end = 2 * kPi;   // a full circle back to its start
-    return to_p <= to_end + 1e-6 || norm(p - from) < 1e-6;
+    // Past the end is ahead too (an outside corner's join lies on the arc's extension, as a line's
+    // lies past its end); behind `from` is an angle near a whole turn: the rest of the circle is
+    // split between the two.
+    return to_p <= to_end + (2 * kPi - to_end) / 2 || norm(p - from) < 1e-6;
 }
 
 }  // namespace kerf::motion

@@ -47,9 +47,9 @@ std::optional<P2> meet(const Element& a, const Element& b, P2 near);
 enum class CornerClass { straight, inside, outside, outside_acute };
 CornerClass classify_corner(P2 in, P2 out, int side);
 
-// True when `p` lies on the element ahead of (or at) `from`, going the element's way: the part
-// from `from` to `p` does not run backwards. A join behind the tool means the element is too
-// short for the radius (over-cut).
+// True when `p` lies on the element ahead of (or at) `from`, going the element's way, or on its
+// extension past the end: the part from `from` to `p` does not run backwards. A join behind the
+// tool means the element is too short for the radius (over-cut).
 bool ahead_on(const Element& e, P2 from, P2 p);
 
 }  // namespace kerf::motion
