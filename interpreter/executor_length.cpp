@@ -96,7 +96,7 @@ void Executor::take_up_length_offset(const ast::BlockView& view) {
     Event e = std::move(*pending_length_event_);
     pending_length_event_.reset();
     if (e.source.line != scan_.source.line) {
-        e.text += fmt::format(" (line {}), taken up by this block", e.source.line);
+        e.text += ", given before and taken up by this block's Z";   // no line number: formatting moves lines
         e.source = source(*frame_, view);
     }
     e.start = e.end = position_;
