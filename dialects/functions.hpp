@@ -49,6 +49,7 @@ inline constexpr std::uint32_t threading = 1u << 21;        // cuts a thread (a 
 inline constexpr std::uint32_t peck = 1u << 22;             // Q is the depth of one peck, more than 0
 inline constexpr std::uint32_t radius_comp_on = 1u << 23;   // G41/G42: the tool left or right of the path
 inline constexpr std::uint32_t not_in_plane_transform = 1u << 24;   // [FANUC] not allowed in G112/G107 mode (reference returns, G53, G50/G92, G52, threads, planes)
+inline constexpr std::uint32_t not_modelled = 1u << 26;     // moves the machine in a way the dry run does not reproduce: a warning (kerf_warning::not_modelled, K5009)
 inline constexpr std::uint32_t after_motion = 1u << 25;     // an M code that acts after the block's motion (semantics.md §1.2 step 9: M5, M9, M0, M1, M2, M30, M98, M99); the others act before it (step 3)
 }  // namespace traits
 
@@ -72,11 +73,11 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"arc-approach", 'G', traits::arc_approach, "Seed-004 G12: tangential arc approach to the contour"},
     {"arc-exit", 'G', traits::arc_approach, "Seed-004 G13: tangential arc exit from the contour"},
     {"automatic-corner-override", 'G', 0, "Automatic feed override at inside corners"},
-    {"automatic-tool-comp-x", 'G', 0, "Automatic tool compensation, X axis (lathe)"},
-    {"automatic-tool-comp-z", 'G', 0, "Automatic tool compensation, Z axis (lathe)"},
+    {"automatic-tool-comp-x", 'G', traits::not_modelled, "Automatic tool compensation, X axis (lathe)"},
+    {"automatic-tool-comp-z", 'G', traits::not_modelled, "Automatic tool compensation, Z axis (lathe)"},
     {"axial-offset-direction-minus", 'G', traits::length_comp | traits::approach_offset, "Seed-004 'direction of axial offset' (−)"},
     {"axial-offset-direction-plus", 'G', traits::length_comp | traits::approach_offset, "Seed-004 'direction of axial offset' (+), used as a one-block approach offset by D – not FANUC length compensation"},
-    {"axis-homing", 'G', 0, "Home (machine-zero search) of the named axes (ADV400 G74)"},
+    {"axis-homing", 'G', traits::not_modelled, "Home (machine-zero search) of the named axes (ADV400 G74)"},
     {"b-axis-torque-limit-off", 'M', 0, "B-axis torque limitation off"},
     {"b-axis-torque-limit-on", 'M', 0, "B-axis torque limitation on"},
     {"back-boring-cycle", 'G', traits::cycle, "Back boring cycle"},
@@ -130,13 +131,13 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"coordinate-rotation-cancel", 'G', 0, "Coordinate system rotation cancel"},
     {"coordinate-rotation-cw", 'G', 0, "Coordinate system rotation, + = CLOCKWISE (ADV400; negate R when converting)"},
     {"coordinate-system-setting", 'G', traits::not_in_plane_transform, "Coordinate system setting: the current position takes the programmed values (lathes: S = max rpm clamp)"},
-    {"corner-circular-interpolation", 'G', 0, "Corner offset circular interpolation (cutter compensation)"},
+    {"corner-circular-interpolation", 'G', traits::not_modelled, "Corner offset circular interpolation (cutter compensation)"},
     {"corner-slowdown", 'G', traits::corner_slowdown, "Seed-004 G28: feed reduced by F % over the last K mm before each G01 end point"},
     {"corner-slowdown-cancel", 'G', traits::corner_slowdown, "Seed-004 G29: cancel the corner slow-down"},
     {"cylindrical-interpolation", 'G', traits::plane_transform, "Cylindrical interpolation on/off (G07.1 C<r> / C0)"},
     {"door-open", 'M', 0, "Automatic door opening"},
-    {"double-turret-mirror-off", 'G', 0, "FANUC T mirror image for double turrets / balance cut off"},
-    {"double-turret-mirror-on", 'G', 0, "FANUC T mirror image for double turrets / balance cut on"},
+    {"double-turret-mirror-off", 'G', traits::not_modelled, "FANUC T mirror image for double turrets / balance cut off"},
+    {"double-turret-mirror-on", 'G', traits::not_modelled, "FANUC T mirror image for double turrets / balance cut on"},
     {"drilling-cycle", 'G', traits::cycle, "Drilling cycle (feed in, rapid out)"},
     {"drilling-dwell-cycle", 'G', traits::cycle, "Drilling cycle with dwell at the bottom"},
     {"dwell", 'G', 0, "Dwell (units differ: FANUC X/U s, P ms; ADV400 X/P s)"},
@@ -151,7 +152,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"feed-per-revolution", 'G', traits::per_revolution, "Feed per revolution (mm/rev)"},
     {"fine-boring-cycle", 'G', traits::cycle, "Mill fine boring cycle"},
     {"finishing-cycle", 'G', traits::cycle | traits::profile_cycle, "Lathe finishing cycle over profile P..Q"},
-    {"floating-reference-return", 'G', 0, "Floating reference point return"},
+    {"floating-reference-return", 'G', traits::not_modelled, "Floating reference point return"},
     {"grooving-cycle", 'G', traits::cycle, "Lathe OD/ID grooving (X peck) cycle"},
     {"high-speed-peck-drilling-cycle", 'G', traits::cycle | traits::peck, "Mill high-speed peck drilling cycle"},
     {"inch-input", 'G', traits::inch, "Inch input"},
@@ -199,8 +200,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"polar-coordinate-command-cancel", 'G', traits::program_transform, "Polar coordinate command cancel"},
     {"polar-interpolation-off", 'G', traits::plane_transform, "Polar coordinate interpolation cancel"},
     {"polar-interpolation-on", 'G', traits::plane_transform, "Polar coordinate interpolation mode (Cartesian programming with a rotary axis)"},
-    {"polygon-turning-off", 'G', 0, "Polygon turning cancel"},
-    {"polygon-turning-on", 'G', 0, "Polygon turning"},
+    {"polygon-turning-off", 'G', traits::not_modelled, "Polygon turning cancel"},
+    {"polygon-turning-on", 'G', traits::not_modelled, "Polygon turning"},
     {"position-offset-decrease", 'G', traits::position_offset, "One-block position offset: move decreased by D", -1},
     {"position-offset-double-decrease", 'G', traits::position_offset, "One-block position offset: move decreased by 2·D", -2},
     {"position-offset-double-increase", 'G', traits::position_offset, "One-block position offset: move increased by 2·D", 2},
@@ -228,8 +229,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"side-boring-cycle", 'G', traits::cycle, "Lathe side (radial) boring cycle"},
     {"side-drilling-cycle", 'G', traits::cycle, "Lathe side (radial) drilling cycle"},
     {"side-tapping-cycle", 'G', traits::cycle, "Lathe side (radial) tapping cycle"},
-    {"single-direction-positioning", 'G', 0, "Single-direction positioning (backlash removal)"},
-    {"skip-function", 'G', 0, "Skip function (move until the skip signal)"},
+    {"single-direction-positioning", 'G', traits::not_modelled, "Single-direction positioning (backlash removal)"},
+    {"skip-function", 'G', traits::not_modelled, "Skip function (move until the skip signal)"},
     {"spindle-brake-low-off", 'M', 0, "Low brake pressure / brake off (TC82-108)"},
     {"spindle-brake-low-on", 'M', 0, "Main spindle brake with reduced force / low pressure on"},
     {"spindle-brake-off", 'M', 0, "Main spindle brake off"},
@@ -403,6 +404,8 @@ inline constexpr FunctionId optional_stop = FunctionId::known("optional-stop");
 inline constexpr FunctionId program_end = FunctionId::known("program-end");
 inline constexpr FunctionId program_end_rewind = FunctionId::known("program-end-rewind");
 inline constexpr FunctionId tool_change = FunctionId::known("tool-change");
+inline constexpr FunctionId skip_function = FunctionId::known("skip-function");   // G31
+inline constexpr FunctionId reference_return_check = FunctionId::known("reference-return-check");   // G27
 inline constexpr FunctionId reference_return_nth = FunctionId::known("reference-return-nth");
 inline constexpr FunctionId return_from_reference = FunctionId::known("return-from-reference");
 inline constexpr FunctionId coordinate_rotation = FunctionId::known("coordinate-rotation");

@@ -305,6 +305,7 @@ void Executor::execute_block(Frame& frame) {
 bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
     remember_words(view, words);
     apply_feed_speed_tool(view, words);
+    if (scan_.classes & dialects::traits::not_modelled) note_not_modelled(view, words);
     apply_modal_codes(view);
     // M codes that act before motion (M03, M08, clamps ...) start the spindle for the block's own
     // cut: `G99 G01 Z-5. F0.2 S800 M03` cuts with the spindle turning (semantics.md §1.2 step 3).
@@ -326,6 +327,25 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     apply_dwell(view, words);
     apply_m_codes(frame, view, words, MPhase::after_motion);   // may end the program: `frame` is gone after M30
     return moved;
+}
+
+// A code whose motion the dry run does not reproduce (traits::not_modelled: G31 skip, G36/G37
+// automatic tool measurement, G39 corner arcs, G68/G69 double-turret mirror, G30.1, G50.2/G51.2
+// polygon turning, G60, ADV400 G74 homing) is said, never quietly run as something else: a
+// warning event the analyzer reports as K5009, saying what the trace does instead.
+void Executor::note_not_modelled(const ast::BlockView& view, const BlockWords& words) {
+    const bool axis_words = (words.words.mask() & axis_letters_) != 0 || words.incremental.mask() != 0;
+    for (const ast::CodeRef& c : scan_.g) {
+        if (!c.info || !c.info->has(dialects::traits::not_modelled)) continue;
+        Event e = event_at(EventKind::message, *frame_, view);
+        e.code = kerf_warning::not_modelled;
+        const std::string what = c.info->function == fn::skip_function
+                                     ? "the move runs to its end point (a dry run has no skip signal)"
+                                 : axis_words ? "the block's axis words run as an ordinary move of the active motion mode"
+                                              : "the trace shows no motion for it";
+        e.text = fmt::format("{} ({}) is not modelled by the dry run: {}", c.info->spelling, c.info->function.def().meaning, what);
+        emit(std::move(e));
+    }
 }
 
 void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {

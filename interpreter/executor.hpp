@@ -243,6 +243,7 @@ private:
     macro::Options macro_options(bool address) const;
     void remember_words(const ast::BlockView& view, const BlockWords& words);
     void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);
+    void note_not_modelled(const ast::BlockView& view, const BlockWords& words);
     void apply_tool_word(const ast::BlockView& view, int value);
     void apply_modal_codes(const ast::BlockView& view);
     void update_flags();
