@@ -374,23 +374,42 @@ void ModalState::set(const dialects::CodeInfo& code) {
     slots_.emplace_back(code.group, &code);   // a code of a group the dialect table did not list (user dialect)
 }
 
-LabelTable::LabelTable(std::vector<std::int64_t> numbers) : sorted_(std::move(numbers)) {
-    // Most programs number their blocks in ascending order: then there is nothing to sort.
-    if (!std::is_sorted(sorted_.begin(), sorted_.end())) std::sort(sorted_.begin(), sorted_.end());
+namespace {
+bool number_before(const LabelTable::Entry& a, const LabelTable::Entry& b) { return a.number < b.number; }
+}  // namespace
+
+LabelTable::LabelTable(std::vector<Entry> entries) : sorted_(std::move(entries)) {
+    // Most programs number their blocks in ascending order: then there is nothing to sort. Stable,
+    // so the blocks of one number stay in block order.
+    if (!std::is_sorted(sorted_.begin(), sorted_.end(), number_before))
+        std::stable_sort(sorted_.begin(), sorted_.end(), number_before);
+}
+
+std::pair<std::vector<LabelTable::Entry>::const_iterator, std::vector<LabelTable::Entry>::const_iterator>
+LabelTable::range(std::int64_t n) const {
+    return std::equal_range(sorted_.begin(), sorted_.end(), Entry{n, 0.0, 0}, number_before);
 }
 
 int LabelTable::count(std::int64_t n) const {
-    const auto [lo, hi] = std::equal_range(sorted_.begin(), sorted_.end(), n);
+    const auto [lo, hi] = range(n);
     return static_cast<int>(hi - lo);
+}
+
+std::vector<std::uint32_t> LabelTable::blocks(std::int64_t n) const {
+    std::vector<std::uint32_t> out;
+    const auto [lo, hi] = range(n);
+    for (auto it = lo; it != hi; ++it)
+        if (it->value == static_cast<double>(n)) out.push_back(it->block);
+    return out;
 }
 
 const LabelTable& FileContext::labels(std::size_t program) const {
     if (const auto it = labels_.find(program); it != labels_.end()) return it->second;
-    std::vector<std::int64_t> numbers;
+    std::vector<LabelTable::Entry> entries;
     const ast::Program& p = typed.programs()[program];
     for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
-        if (const auto n = typed.block(b).sequence_number()) numbers.push_back(static_cast<std::int64_t>(*n));
-    return labels_.emplace(program, LabelTable(std::move(numbers))).first->second;
+        if (const auto n = typed.block(b).sequence_number()) entries.push_back({static_cast<std::int64_t>(*n), *n, b});
+    return labels_.emplace(program, LabelTable(std::move(entries))).first->second;
 }
 
 Location locate(const ast::LineIndex& lines, ast::Range range) {

@@ -56,6 +56,8 @@ public:
     // The new finding; with a tally, a finding it does not keep is a scratch one the caller may
     // still fill in (notes, fix) and that goes nowhere.
     Finding& report(ast::Range range, std::string message, std::string hint = {});
+    // False for the scratch finding of a report the tally did not keep: a rule need not fill it in.
+    bool kept(const Finding& f) const { return &f != &scratch_; }
 
 private:
     const Rule* rule_;
@@ -68,11 +70,21 @@ private:
 // matter only where something jumps to them). Built once per program for all rules that ask.
 class LabelTable {
 public:
-    explicit LabelTable(std::vector<std::int64_t> numbers);
+    struct Entry {
+        std::int64_t number;   // the N value as an integer label (what count() compares)
+        double value;          // the N value as written (N10.5 is not label 10 for blocks())
+        std::uint32_t block;
+    };
+    // `entries` in block order.
+    explicit LabelTable(std::vector<Entry> entries);
     int count(std::int64_t n) const;   // how many blocks carry N`n`
+    // The blocks whose N value is exactly `n`, in block order (references::label_blocks without the
+    // walk over the program: AmbiguousLabel asks once per jump, and CAM output repeats N numbers).
+    std::vector<std::uint32_t> blocks(std::int64_t n) const;
 
 private:
-    std::vector<std::int64_t> sorted_;
+    std::pair<std::vector<Entry>::const_iterator, std::vector<Entry>::const_iterator> range(std::int64_t n) const;
+    std::vector<Entry> sorted_;   // by number, then block
 };
 
 // What a static check sees of the whole file.

@@ -76,8 +76,9 @@ public:
                 Finding& f = out.report(b.token(t.token).range(),
                                         fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                                         "give each target block a number of its own");
+                if (!out.kept(f)) continue;   // past the rule's cap: the related blocks would go nowhere
                 bool first = true;
-                for (const std::uint32_t block : references::label_blocks(b.file.typed, static_cast<std::uint32_t>(b.program), t.label)) {
+                for (const std::uint32_t block : labels().blocks(t.label)) {
                     f.related.push_back({block_range(b.file, block), first ? fmt::format("N{}: the block the control jumps to", t.label)
                                                                           : fmt::format("N{} again", t.label)});
                     first = false;
