@@ -28,6 +28,9 @@
 #      MB/s, and rs274's median wall / kerf's median wall on the same program. rs274 runs the mill
 #      program to its end; it stops at the first line it cannot read in the lathe program (U/W words)
 #      and the macro program (WHILE), which the table says (no ratio there).
+#   KERF_BENCH_KERF=path runs another kerf binary (a build of the commit before a change) with the
+#   same script; KERF_BENCH_TIMEOUT (seconds, default 600) ends a case that runs longer (exit 124 in
+#   the table: the figure is then a lower bound).
 #   The raw figures stay in BUILD_DIR/cam-raw.txt (case round wall user sys peak_kb minflt exit load).
 #
 # Needs kerf built (cmake --build BUILD_DIR --target kerf), rs274 (Debian linuxcnc-uspace) and GNU
@@ -45,9 +48,10 @@ corpus="$shared/corpus"
 data=${KERF_BENCH_DATA:-/tmp/kerf-bench-data}
 size=${KERF_BENCH_SIZE:-100M}
 runs=${KERF_BENCH_RUNS:-5}
-kerf="$build/kerf"
+kerf=${KERF_BENCH_KERF:-$build/kerf}
+limit=${KERF_BENCH_TIMEOUT:-600}
 . "$here/common.sh"
-require_built cam.sh "$build" kerf
+[ -n "${KERF_BENCH_KERF:-}" ] || require_built cam.sh "$build" kerf
 rs274=$(command -v rs274 || true)
 for need in "$gen" "$tools" /usr/bin/time; do
     [ -e "$need" ] || { echo "cam.sh: $need is missing" >&2; exit 2; }
@@ -81,6 +85,7 @@ echo "cores:    $(nproc)"
 echo "memory:   $(awk '/MemTotal/ {printf "%.1f GiB", $2 / 1048576}' /proc/meminfo)"
 echo "kernel:   $(uname -r)"
 echo "build:    $(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt" | head -1)"
+echo "kerf:     $kerf"
 echo "source:   $(git -C "$here/.." rev-parse --short HEAD 2>/dev/null || echo '?')$( [ -n "$(git -C "$here/.." status --porcelain -uno 2>/dev/null)" ] && echo ' + uncommitted changes')"
 echo "rs274:    $rs274, $(dpkg-query -W -f='${Package} ${Version}' linuxcnc-uspace 2>/dev/null || echo 'version unknown')"
 for k in "${kinds[@]}"; do
@@ -104,7 +109,7 @@ raw="$build/cam-raw.txt"
 measure() {   # measure CASE ROUND command...
     local case=$1 round=$2 status=0
     shift 2
-    "${pin[@]}" /usr/bin/time -o "$tmp/time" -f '%e %U %S %M %R' "$@" > /dev/null 2> "$tmp/stderr" < /dev/null || status=$?
+    "${pin[@]}" /usr/bin/time -o "$tmp/time" -f '%e %U %S %M %R' timeout "$limit" "$@" > /dev/null 2> "$tmp/stderr" < /dev/null || status=$?
     local t
     t=$(tail -1 "$tmp/time")
     echo "$case $round $t $status $(cut -d' ' -f1 /proc/loadavg)" >> "$raw"
