@@ -30,13 +30,17 @@ struct Word {
     std::uint32_t offset;
     bool number;
     double value;
+    std::optional<dialects::CodeKey> key;   // dialects::code_key(value), once: every dialect's code clues compare it
 };
 
 // What a file says, read once from the permissive tree; every dialect's clues are weighed against it.
 struct Facts {
     std::array<std::vector<Word>, 26> words;                            // by letter, in text order
     std::vector<std::uint32_t> block_begin;                              // per block
-    std::vector<std::vector<std::pair<char, double>>> block_words;       // per block: letter, value (NaN: no number)
+    // Per block: letter, value (NaN: no number); block b's words are [word_start[b], word_start[b + 1])
+    // of one flat array (a vector per block was a third of a small file's detection in malloc/free).
+    std::vector<std::pair<char, double>> block_words;
+    std::vector<std::uint32_t> word_start;
     std::vector<std::pair<std::string_view, std::uint32_t>> comments;    // text, offset
     std::vector<std::pair<std::string_view, std::uint32_t>> header;      // comments before the first code
     std::vector<std::pair<double, std::uint32_t>> variables;             // #n with a plain number n
@@ -48,11 +52,12 @@ bool letter_ok(char L) { return L >= 'A' && L <= 'Z'; }
 Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
     Facts f;
     bool in_header = true;
-    f.block_words.resize(tree.block_count());
+    f.word_start.reserve(tree.block_count() + 1);
     f.block_begin.resize(tree.block_count());
     for (std::size_t bi = 0; bi < tree.block_count(); ++bi) {
         const auto b = static_cast<std::uint32_t>(bi);
         f.block_begin[bi] = tree.blocks[bi].begin;
+        f.word_start.push_back(static_cast<std::uint32_t>(f.block_words.size()));
         for (const ast::Token& t : tree.block_tokens(bi)) {
             if (t.kind == ast::TokenKind::comment) {
                 f.comments.emplace_back(tree.spelling(t), t.begin);
@@ -67,8 +72,9 @@ Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
             if (t.letter != 'O' && t.letter != 'N') in_header = false;
             const bool number = t.is_number();
             const double value = number ? tree.number_value(t) : std::numeric_limits<double>::quiet_NaN();
-            f.words[static_cast<std::size_t>(t.letter - 'A')].push_back({b, t.begin, number, value});
-            f.block_words[bi].emplace_back(t.letter, value);
+            f.words[static_cast<std::size_t>(t.letter - 'A')].push_back(
+                {b, t.begin, number, value, number ? dialects::code_key(value) : std::nullopt});
+            f.block_words.emplace_back(t.letter, value);
         }
     }
     for (const ast::Expr& e : tree.exprs) {
@@ -76,25 +82,25 @@ Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
         const ast::Expr& n = tree.exprs[static_cast<std::size_t>(e.a)];
         if (n.kind == ast::ExprKind::number) f.variables.emplace_back(tree.number_value(n), e.begin);
     }
+    f.word_start.push_back(static_cast<std::uint32_t>(f.block_words.size()));
     return f;
 }
 
 // The G65/G66 blocks of dialect `d` (its codes with traits::takes_arguments): their words are
 // macro arguments (`W#23` is argument W, not an incremental Z), so they prove nothing.
 std::vector<bool> macro_call_blocks(const Facts& f, const dialects::Dialect& d) {
-    std::vector<bool> out(f.block_words.size(), false);
+    std::vector<bool> out(f.block_begin.size(), false);
     for (const Word& w : f.words['G' - 'A']) {
         if (!w.number) continue;
-        const auto key = dialects::code_key(w.value);
-        const dialects::CodeInfo* info = key ? d.fast_code('G', *key) : nullptr;
+        const dialects::CodeInfo* info = w.key ? d.fast_code('G', *w.key) : nullptr;
         if (info && info->has(dialects::traits::takes_arguments)) out[w.block] = true;
     }
     return out;
 }
 
 bool block_has(const Facts& f, std::uint32_t block, char letter, std::optional<double> value = std::nullopt) {
-    for (const auto& [L, v] : f.block_words[block])
-        if (L == letter && (!value || v == *value)) return true;
+    for (std::uint32_t i = f.word_start[block]; i < f.word_start[block + 1]; ++i)
+        if (const auto& [L, v] = f.block_words[i]; L == letter && (!value || v == *value)) return true;
     return false;
 }
 
@@ -114,7 +120,7 @@ std::vector<std::uint32_t> occurrences(const DetectClue& c, const Facts& f, cons
     switch (c.kind) {
         case DetectClue::Kind::code:
             for (const Word& w : f.words[static_cast<std::size_t>(c.letter - 'A')]) {
-                if (!w.number || dialects::code_key(w.value) != std::optional<dialects::CodeKey>(c.key)) continue;
+                if (!w.number || w.key != std::optional<dialects::CodeKey>(c.key)) continue;
                 bool ok = true;
                 for (const auto& [L, v] : c.with) ok &= block_has(f, w.block, L, v);
                 if (!c.with_any.empty()) ok &= block_has_any(f, w.block, c.with_any);
