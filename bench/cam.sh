@@ -24,13 +24,14 @@
 #      dry run beside the static rules, a folder check runs files on every core). KERF_BENCH_PIN=1 pins
 #      every process to one core (taskset) to see the one-core figure.
 #   3. prints, and writes to BUILD_DIR/cam-results.md, the table: median wall (and the spread), user and
-#      sys of the median run, CPU / wall (> 1: two cores busy), peak RSS and its ratio to the input,
-#      MB/s, and rs274's median wall / kerf's median wall on the same program. rs274 runs the mill
+#      sys of the median run, CPU / wall (> 1: two cores busy), the median CPU time, peak RSS and its ratio to the input,
+#      MB/s, and rs274's median / kerf's median on the same program, in wall and in CPU time. rs274 runs the mill
 #      program to its end; it stops at the first line it cannot read in the lathe program (U/W words)
 #      and the macro program (WHILE), which the table says (no ratio there).
 #   KERF_BENCH_KERF=path runs another kerf binary (a build of the commit before a change) with the
 #   same script; KERF_BENCH_TIMEOUT (seconds, default 600) ends a case that runs longer (exit 124 in
 #   the table: the figure is then a lower bound).
+#   KERF_BENCH_RAW=file prints the table again from the raw figures of an earlier run.
 #   The raw figures stay in BUILD_DIR/cam-raw.txt (case round wall user sys peak_kb minflt exit load).
 #
 # Needs kerf built (cmake --build BUILD_DIR --target kerf), rs274 (Debian linuxcnc-uspace) and GNU
@@ -104,7 +105,6 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 raw="$build/cam-raw.txt"
-: > "$raw"
 
 measure() {   # measure CASE ROUND command...
     local case=$1 round=$2 status=0
@@ -118,6 +118,10 @@ measure() {   # measure CASE ROUND command...
     printf '  %-24s %s  exit %d  load %s\n' "$case" "$t" "$status" "$(cut -d' ' -f1 /proc/loadavg)"
 }
 
+if [ -n "${KERF_BENCH_RAW:-}" ]; then   # only the table, from the raw figures of an earlier run
+    [ "$KERF_BENCH_RAW" -ef "$raw" ] || cp "$KERF_BENCH_RAW" "$raw"
+else
+: > "$raw"
 echo "== runs ($runs rounds; wall user sys peak_kb minor_faults)"
 for round in $(seq 1 "$runs"); do
     echo "-- round $round (load $(cut -d' ' -f1-3 /proc/loadavg))"
@@ -149,6 +153,7 @@ done
 for f in "${largest[@]}"; do
     echo "$(basename "$f"): $(stat -c %s "$f") bytes; kerf run: $("$kerf" run "$f" --json 2>/dev/null | grep -o -E '"(blocks|completed)":[a-z0-9]+' | tr '\n' ' ')"
 done
+fi
 
 # ---- table ----
 out="$build/cam-results.md"
@@ -164,6 +169,12 @@ function median_index(c,   i, j, n, idx, w, t) {   # the round whose wall time i
     lo = w[idx[1]]; hi = w[idx[n]]
     return idx[int((n + 1) / 2)]
 }
+function median_cpu(c,   i, j, n, v, t) {   # the median of user + sys over the rounds
+    n = cnt[c]
+    for (i = 1; i <= n; i++) v[i] = user[c, i] + sys[c, i]
+    for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (v[j] < v[i]) { t = v[i]; v[i] = v[j]; v[j] = t }
+    return v[int((n + 1) / 2)]
+}
 BEGIN { n = split(sizes, s, " "); for (i = 1; i <= n; i++) { split(s[i], kv, "="); bytes[kv[1]] = kv[2] } }
 {
     c = $1; i = ++cnt[c]
@@ -171,26 +182,28 @@ BEGIN { n = split(sizes, s, " "); for (i = 1; i <= n; i++) { split(s[i], kv, "="
     if (!(c in seen)) { order[++m] = c; seen[c] = 1 }
 }
 END {
-    print "| case | median wall s (min-max) | user s | sys s | CPU/wall | peak RSS MB | RSS / input | minor faults | MB/s | rs274 / kerf |"
-    print "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+    print "| case | median wall s (min-max) | user s | sys s | CPU/wall | median CPU s | peak RSS MB | RSS / input | minor faults | MB/s | rs274 / kerf wall | rs274 / kerf CPU |"
+    print "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
     for (o = 1; o <= m; o++) {
         c = order[o]; mi = median_index(c)
         split(c, part, "/"); key = part[1] == "corpus-run" ? c : part[1]
         b = bytes[key]; mw = wall[c, mi]
         peak = 0; for (r = 1; r <= cnt[c]; r++) if (rss[c, r] > peak) peak = rss[c, r]
-        ratio = "-"
+        ratio = "-"; cratio = "-"; mc = median_cpu(c)
         if (part[1] == "mill" && part[2] != "rs274" && ("mill/rs274" in seen)) {
             rmi = median_index("mill/rs274"); ratio = sprintf("%.1fx", wall["mill/rs274", rmi] / mw)
+            if (mc > 0) cratio = sprintf("%.1fx", median_cpu("mill/rs274") / mc)
             mi = median_index(c)   # median_index sets lo/hi for the row
         }
-        if (part[2] == "rs274" && part[1] != "mill") ratio = "stops early"
+        if (part[2] == "rs274" && part[1] != "mill") ratio = cratio = "stops early"
         bad = ""; for (r = 1; r <= cnt[c]; r++) if (st[c, r] != 0 && st[c, r] != 1) bad = " (exit " st[c, r] ")"
-        printf "| %s%s | %.2f (%.2f-%.2f) | %.2f | %.2f | %.2f | %.0f | %s | %d | %s | %s |\n", c, bad, mw, lo, hi,
-            user[c, mi], sys[c, mi], (mw > 0) ? (user[c, mi] + sys[c, mi]) / mw : 0, peak * 1024 / 1e6,
-            (b > 0) ? sprintf("%.2f", peak * 1024 / b) : "-", flt[c, mi], (b > 0 && mw > 0) ? sprintf("%.1f", b / 1e6 / mw) : "-", ratio
+        printf "| %s%s | %.2f (%.2f-%.2f) | %.2f | %.2f | %.2f | %.2f | %.0f | %s | %d | %s | %s | %s |\n", c, bad, mw, lo, hi,
+            user[c, mi], sys[c, mi], (mw > 0) ? (user[c, mi] + sys[c, mi]) / mw : 0, mc, peak * 1024 / 1e6,
+            (b > 0) ? sprintf("%.2f", peak * 1024 / b) : "-", flt[c, mi], (b > 0 && mw > 0) ? sprintf("%.1f", b / 1e6 / mw) : "-", ratio, cratio
     }
     print ""
     print "Median of the rounds by wall time; user, sys and minor faults of that run; peak RSS the largest of all rounds;"
-    print "CPU/wall > 1 where kerf kept both cores busy; rs274 / kerf = rs274 median wall / kerf median wall on the same mill program."
+    print "CPU/wall > 1 where kerf kept both cores busy; rs274 / kerf = rs274 median / kerf median on the same mill program, in wall"
+    print "time and in CPU time (user + sys: what a loaded machine disturbs least). exit 124: ended by the time limit (a lower bound)."
 }' "$raw" | tee "$out"
 echo "(table: $out; raw figures: $raw)"
