@@ -149,7 +149,7 @@ Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& v
     return e;
 }
 
-void Executor::emit(Event&& e) {
+void Executor::emit(Event&& e, const Position& machine_end) {
     const bool motion = e.kind == EventKind::rapid || e.kind == EventKind::linear || e.kind == EventKind::arc_cw ||
                         e.kind == EventKind::arc_ccw || e.kind == EventKind::thread;
     if (motion && !stopped_) {
@@ -158,7 +158,7 @@ void Executor::emit(Event&& e) {
     }
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
     e.inch = flags_.inch;
-    e.machine_end = machine_position_of(e.end);
+    e.machine_end = machine_end;
     if (motion) machine_at_ = e.machine_end;
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;

@@ -311,7 +311,9 @@ private:
     // An event of this block at the current position (start = end), before its details are set.
     Event event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const;
     // The event goes to the sink with its machine position and tool; rvalues are not copied.
-    void emit(Event&& e);
+    void emit(Event&& e) { emit(std::move(e), machine_position_of(e.end)); }
+    // With its machine position already computed (move() has it: one offset sum per move, not two).
+    void emit(Event&& e, const Position& machine_end);
     void emit(const Event& e) {
         Event copy = e;
         emit(std::move(copy));

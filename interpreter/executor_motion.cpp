@@ -190,7 +190,7 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
     position_ = to;
     const bool thread = kind == EventKind::thread;
     const double thread_speed = thread ? std::max(e.feed, e.lead_end) * unit_scale() * e.spindle_rpm : 0.0;
-    emit(std::move(e));
+    emit(std::move(e), machine_to);   // offsets unchanged since machine_to was computed from `to` (= e.end)
     if (thread && setup_.max_cutting_feed > 0 && thread_speed > setup_.max_cutting_feed) {
         // cycles.md §9: lead × rpm is the axis speed of a thread; the analyzer reads this event.
         Event w = event_at(EventKind::message, f, view);
