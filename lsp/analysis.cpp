@@ -141,6 +141,7 @@ void AnalysisWorker::forget(const std::string& uri) {
     pending_.erase(uri);
     std::erase(order_, uri);
     results_.erase(uri);
+    incremental_.erase(uri);
     if (running_ == uri) cancel_ = true;
 }
 
@@ -208,8 +209,22 @@ void AnalysisWorker::analyse(const std::shared_ptr<const Document>& doc) {
     const auto exists = [&](std::int64_t n) {
         return references::program_numbered(doc->typed(), n).has_value() || project_.find_program(n, doc->path(), false).has_value();
     };
-    std::vector<analyzer::Finding> raw = analyzer::check_static(programs, file, *s.dialect, s.setup, options, exists, &cancel_);
-    if (superseded(*doc)) return;
+    std::shared_ptr<Incremental> incremental;
+    {
+        const std::lock_guard lock(mutex_);
+        std::shared_ptr<Incremental>& slot = incremental_[doc->uri()];
+        if (!slot) slot = std::make_shared<Incremental>();
+        incremental = slot;
+    }
+    // The static findings: walked again only where the edits since the last analysis changed them.
+    const bool same_settings = incremental->settings.get() == doc->settings_ptr().get();
+    const analyzer::IncrementalStatic::Input input{programs, file, *s.dialect, s.setup, options, exists, project_.generation(),
+                                                   same_settings ? doc->edits_since(incremental->serial) : std::nullopt, &cancel_};
+    std::optional<std::vector<analyzer::Finding>> checked = incremental->check.check(input);
+    incremental->serial = doc->serial();
+    incremental->settings = doc->settings_ptr();
+    if (!checked || superseded(*doc)) return;
+    std::vector<analyzer::Finding> raw = std::move(*checked);
     {
         Analysis first;
         first.version = doc->version();

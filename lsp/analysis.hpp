@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "analyzer/finding.hpp"
+#include "analyzer/incremental.hpp"
 #include "interpreter/events.hpp"
 #include "lsp/document.hpp"
 #include "lsp/project_seam.hpp"
@@ -100,6 +101,13 @@ private:
     std::deque<std::string> order_;                                    // uris in arrival order
     std::map<std::string, std::shared_ptr<const Document>> pending_;   // the newest version per uri
     std::map<std::string, std::shared_ptr<const Analysis>> results_;
+    // The static check of each document, kept between its versions (analyzer/incremental.hpp).
+    struct Incremental {
+        analyzer::IncrementalStatic check;
+        std::uint64_t serial = 0;                       // Document::serial() of the version it knows
+        std::shared_ptr<const FileSettings> settings;   // the settings it checked under (kept alive)
+    };
+    std::map<std::string, std::shared_ptr<Incremental>> incremental_;
     std::string running_;                                              // the uri being analysed
     std::atomic<bool> cancel_{false};
     bool stop_ = false;

@@ -129,6 +129,7 @@ void ProjectSeam::set_client(ClientSettings settings) {
     if (overrides_of(settings).dialect != overrides_of(client_).dialect || settings.machine != client_.machine)
         workspace_.set_overrides(overrides_of(settings));
     client_ = std::move(settings);
+    ++generation_;
 }
 
 ClientSettings ProjectSeam::client() const {
@@ -136,7 +137,10 @@ ClientSettings ProjectSeam::client() const {
     return client_;
 }
 
-void ProjectSeam::forget_configs() { workspace_.forget_projects(); }
+void ProjectSeam::forget_configs() {
+    workspace_.forget_projects();
+    ++generation_;
+}
 
 std::optional<fs::path> ProjectSeam::config_of(const fs::path& file) const { return workspace_.find_config(project::normal_path(file)); }
 
@@ -195,6 +199,7 @@ void ProjectSeam::index_root(const fs::path& root) {
         }
         workspace_.index_folder(entry.path());
     }
+    ++generation_;
 }
 
 void ProjectSeam::update_file(const fs::path& file, std::string_view text) {
@@ -203,6 +208,7 @@ void ProjectSeam::update_file(const fs::path& file, std::string_view text) {
     // The lexical rules of the file's dialect decide where its programs end (';', comments).
     const dialects::Dialect* d = p->dialects().find(project::choose_dialect(workspace_.overrides(), p->config(), text, p->dialects()).id);
     workspace_.index().update_file(path, text, d ? project::ScanRules::of(d->lexical) : project::ScanRules{});
+    ++generation_;
 }
 
 std::vector<IndexedProgram> ProjectSeam::programs_of(const fs::path& file, const ast::TypedFile& typed) {
@@ -219,13 +225,21 @@ std::vector<IndexedProgram> ProjectSeam::programs_of(const fs::path& file, const
 }
 
 void ProjectSeam::set_programs(const fs::path& file, std::vector<IndexedProgram> programs) {
+    const fs::path path = project::normal_path(file);
+    const std::vector<project::ScannedProgram> before = workspace_.index().programs_in(path);
+    const bool same_numbers = std::equal(before.begin(), before.end(), programs.begin(), programs.end(),
+                                         [](const project::ScannedProgram& a, const IndexedProgram& b) { return a.number == b.number; });
     std::vector<project::ScannedProgram> scanned;
     scanned.reserve(programs.size());
     for (IndexedProgram& p : programs) scanned.push_back({p.number, p.program_index, p.begin, p.end, std::move(p.comment)});
-    workspace_.index().set_file(project::normal_path(file), std::move(scanned));
+    workspace_.index().set_file(path, std::move(scanned));
+    if (!same_numbers) ++generation_;
 }
 
-void ProjectSeam::remove_file(const fs::path& file) { workspace_.index().remove_file(project::normal_path(file)); }
+void ProjectSeam::remove_file(const fs::path& file) {
+    workspace_.index().remove_file(project::normal_path(file));
+    ++generation_;
+}
 
 std::optional<IndexedProgram> ProjectSeam::find_program(std::int64_t number, const fs::path& from, bool anywhere) {
     const fs::path path = project::normal_path(from);

@@ -8,6 +8,7 @@
 // Thread-safe: the analysis worker asks for programs while the message thread updates the index.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -46,6 +47,11 @@ public:
     ClientSettings client() const;
     // A .kerf.toml, dialect or machine file changed: read them again on next use.
     void forget_configs();
+    // Goes up whenever the settings or the programs of the workspace may answer differently
+    // (new numbers in a file, a file on disk changed or gone, configuration): the analysis then
+    // checks open documents whole again (analyzer/incremental.hpp `world`). An open document's
+    // edits that keep its program numbers leave it as it is.
+    std::uint64_t generation() const { return generation_.load(); }
     // Dialect, machine, style and rule settings for `file` whose text is `text`.
     std::shared_ptr<const FileSettings> resolve(const std::filesystem::path& file, std::string_view text);
     // The .kerf.toml that governs `file` (walking up), if any.
@@ -79,6 +85,7 @@ private:
     mutable project::Workspace workspace_;
     mutable std::mutex mutex_;
     ClientSettings client_;
+    std::atomic<std::uint64_t> generation_{0};
 };
 
 // True for the file names the index reads: NC extensions (.nc .ngc .tap .cnc .mpf .eia .txt, any
