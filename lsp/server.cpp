@@ -59,7 +59,8 @@ const std::set<std::string, std::less<>> kVersionedRequests = {
 
 struct Server::Impl {
     using RequestFn = std::function<json::value(const json::value& params)>;
-    using NotifyFn = std::function<void(const json::value& params)>;
+    // Notifications may take what they keep out of their parameters (didOpen: the document).
+    using NotifyFn = std::function<void(json::value& params)>;
 
     Impl(int in_fd, int out_fd, ServerOptions o)
         : options(std::move(o)), transport(in_fd, out_fd), project([this](const fs::path& p) { return open_text(p); }) {
@@ -285,7 +286,7 @@ struct Server::Impl {
         running_id.clear();
     }
 
-    void handle_notification(const Message& m) {
+    void handle_notification(Message& m) {
         if (m.method == "exit") {
             exit_code = phase == Phase::shutting_down ? 0 : 1;
             return;
@@ -348,14 +349,17 @@ struct Server::Impl {
         return Snapshot{doc, std::move(analysis), docs, project, &running_cancel};
     }
 
-    void did_open(const json::value& params) {
+    void did_open(json::value& params) {
         const json::object& td = object_param(params, "textDocument");
         const std::string uri = string_param(td, "uri");
         const fs::path path = uri_to_path(uri);
         std::string text = string_param(td, "text");
+        const std::int64_t version = int_param(td, "version");
+        // The message's copy goes before the document is parsed (memory: bench/RESULTS.md).
+        if (json::value* sent = params.as_object().if_contains("textDocument")->as_object().if_contains("text")) *sent = nullptr;
         const auto settings = project.resolve(path, text);
         for (const std::string& p : settings->problems) log(message_type::warning, "kerf: " + p);
-        const auto doc = Document::open(uri, path, int_param(td, "version"), std::move(text), settings);
+        const auto doc = Document::open(uri, path, version, std::move(text), settings);
         if (!doc->refused().empty()) log(message_type::warning, fmt::format("kerf lsp: {}: {}", uri, doc->refused()));
         set_document(doc);
     }
@@ -595,7 +599,7 @@ struct Server::Impl {
             return nullptr;
         };
         notifications["initialized"] = [this](const json::value&) { initialized(); };
-        notifications["textDocument/didOpen"] = [this](const json::value& p) { did_open(p); };
+        notifications["textDocument/didOpen"] = [this](json::value& p) { did_open(p); };
         notifications["textDocument/didChange"] = [this](const json::value& p) { did_change(p); };
         notifications["textDocument/didClose"] = [this](const json::value& p) { did_close(p); };
         notifications["textDocument/didSave"] = [](const json::value&) {};
