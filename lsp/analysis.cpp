@@ -210,6 +210,7 @@ void AnalysisWorker::analyse(const std::shared_ptr<const Document>& doc) {
     programs.set_loader(project_.loader_for(doc->path()), s.dialect);
     analyzer::CheckOptions options;
     options.config = s.check;
+    options.time_limit = s.time_limit;
     options.program_files = [this, path = doc->path()](std::int64_t n) { return project_.program_files(n, path); };
     const auto exists = [&](std::int64_t n) {
         return references::program_numbered(doc->typed(), n).has_value() || project_.find_program(n, doc->path(), false).has_value();

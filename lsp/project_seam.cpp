@@ -154,6 +154,7 @@ std::shared_ptr<const FileSettings> ProjectSeam::resolve(const fs::path& file, s
     s->config_file = config.file;
     s->style = config.format;
     s->check = config.check;
+    s->time_limit = r.project->limits().time_limit;
     s->language = client.language;
     // The registry lives as long as the project that holds it.
     s->registry = std::shared_ptr<const dialects::Registry>(r.project, &r.project->dialects());
