@@ -164,6 +164,7 @@ bool run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const di
     options.lenient = true;   // syntax defects are the syntax rules' findings; go on and check the rest
     options.time_limit = check.time_limit;
     options.emit_state = hooks.emit_state;
+    options.after_block = hooks.after_block;
     try {
         interpreter::run(programs, *main, dialect, setup, sink, options);
     } catch (const RunCancelled&) {

@@ -1,5 +1,6 @@
 #include "lsp/analysis.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <unordered_map>
 
@@ -34,6 +35,38 @@ class Collector : public interpreter::EventSink {
 public:
     Collector(const Document& doc, DryRun& run) : doc_(doc), run_(run) {
         run_.state_of_block.assign(doc.tree().block_count(), -1);
+        for (const ast::Expr& e : doc.tree().exprs) {
+            if (macro_blocks_.empty()) macro_blocks_.resize(doc.tree().block_count());
+            macro_blocks_[doc.block_at(e.begin)] = true;
+        }
+    }
+    bool has_macro() const { return !macro_blocks_.empty(); }
+
+    // The values of a block's variables and expression words, the first time it ran (RunOptions::after_block).
+    void after_block(const interpreter::SourceRef& where, interpreter::macro::Variables& variables, const interpreter::macro::Options& options) {
+        if (where.file != 0) return;
+        const std::uint32_t block = doc_.block_at(where.range.begin);
+        if (block >= macro_blocks_.size() || !macro_blocks_[block] || run_.macro_values.count(block)) return;
+        std::vector<MacroValue>& out = run_.macro_values[block];
+        const ast::SyntaxTree& tree = doc_.tree();
+        const auto add = [&](ast::Range range, std::int64_t variable, const interpreter::macro::Value& v) {
+            out.push_back({range, variable, v.is_vacant(), v.or_zero()});
+        };
+        // The block's expression nodes: the tree keeps them in text order from block to block.
+        const ast::Range r = tree.block_range(block);
+        const auto first = std::partition_point(tree.exprs.begin(), tree.exprs.end(), [&](const ast::Expr& e) { return e.begin < r.begin; });
+        const auto last = std::partition_point(first, tree.exprs.end(), [&](const ast::Expr& e) { return e.begin < r.end; });
+        for (auto it = first; it != last; ++it) {
+            if (it->kind != ast::ExprKind::variable) continue;
+            const auto number = interpreter::macro::variable_number(tree, static_cast<std::int32_t>(it - tree.exprs.begin()), variables, options);
+            if (!number.ok()) continue;
+            if (const auto v = variables.read(number.number)) add(it->range(), number.number, *v);
+        }
+        for (const ast::Token& t : tree.block_tokens(block)) {
+            if ((t.kind != ast::TokenKind::word && t.kind != ast::TokenKind::comma_word) || !t.has(ast::token_flags::value_expr)) continue;
+            const interpreter::macro::Result v = interpreter::macro::evaluate(tree, static_cast<std::int32_t>(t.payload), variables, options);
+            if (v.ok()) add(tree.exprs[t.payload].range(), -1, v.value);
+        }
     }
 
     void on_event(const Event& e) override {
@@ -98,6 +131,7 @@ private:
 
     const Document& doc_;
     DryRun& run_;
+    std::vector<bool> macro_blocks_;   // blocks with macro expressions (empty: none in the document)
     std::unordered_map<std::string, std::uint32_t> modal_ids_;
     std::vector<BlockMotion> motion_;   // per block of the document
 };
@@ -245,6 +279,9 @@ void AnalysisWorker::analyse(const std::shared_ptr<const Document>& doc) {
     hooks.observer = &collector;
     hooks.emit_state = true;
     hooks.cancel = &cancel_;
+    if (collector.has_macro())
+        hooks.after_block = [&collector](const interpreter::SourceRef& block, interpreter::macro::Variables& variables,
+                                         const interpreter::macro::Options& macro) { collector.after_block(block, variables, macro); };
     std::optional<std::vector<analyzer::Finding>> dynamic = analyzer::check_dry_run(programs, file, *s.dialect, s.setup, options, hooks);
     if (!dynamic || superseded(*doc)) return;
     collector.finish();

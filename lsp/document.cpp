@@ -74,6 +74,10 @@ constexpr std::size_t kLogLength = 256;              // edits kept for the analy
 
 }  // namespace
 
+std::uint32_t Document::offset(ast::Position p) const {
+    return offset_in(*lines_, text(), p).value_or(static_cast<std::uint32_t>(text().size()));
+}
+
 std::optional<std::pair<std::uint32_t, std::uint32_t>> Document::bytes_of(const ContentChange& c, std::size_t index, std::int64_t version,
                                                                           std::vector<std::string>& problems) const {
     const std::string_view text = this->text();

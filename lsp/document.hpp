@@ -65,8 +65,9 @@ public:
     std::uint64_t serial() const { return serial_; }
     std::optional<std::vector<analyzer::BlockEdit>> edits_since(std::uint64_t serial) const;
 
-    // Byte offset of a UTF-16 position (clamped to the line's end and the text's end).
-    std::uint32_t offset(ast::Position p) const { return lines_->offset_of_utf16(p); }
+    // Byte offset of a UTF-16 position: a column past the line's end means its end, before the
+    // line break (LSP 3.17 Position); a line past the last means the end of the text.
+    std::uint32_t offset(ast::Position p) const;
     ast::Position position(std::uint32_t offset) const { return lines_->utf16(offset); }
     // The block that holds byte `offset` (the last block for the end of the text).
     std::uint32_t block_at(std::uint32_t offset) const;

@@ -225,7 +225,7 @@ std::vector<IndexedProgram> ProjectSeam::programs_of(const fs::path& file, const
     return out;
 }
 
-void ProjectSeam::set_programs(const fs::path& file, std::vector<IndexedProgram> programs) {
+bool ProjectSeam::set_programs(const fs::path& file, std::vector<IndexedProgram> programs) {
     const fs::path path = project::normal_path(file);
     const std::vector<project::ScannedProgram> before = workspace_.index().programs_in(path);
     const bool same_numbers = std::equal(before.begin(), before.end(), programs.begin(), programs.end(),
@@ -235,6 +235,7 @@ void ProjectSeam::set_programs(const fs::path& file, std::vector<IndexedProgram>
     for (IndexedProgram& p : programs) scanned.push_back({p.number, p.program_index, p.begin, p.end, std::move(p.comment)});
     workspace_.index().set_file(path, std::move(scanned));
     if (!same_numbers) ++generation_;
+    return !same_numbers;
 }
 
 void ProjectSeam::remove_file(const fs::path& file) {

@@ -60,8 +60,9 @@ public:
     // The program index: every numbered program of every program file under the roots.
     void index_root(const std::filesystem::path& root);
     void update_file(const std::filesystem::path& file, std::string_view text);
-    // An open document's programs (it is parsed already: programs_of reads its tree).
-    void set_programs(const std::filesystem::path& file, std::vector<IndexedProgram> programs);
+    // An open document's programs (it is parsed already: programs_of reads its tree); true when
+    // its program numbers changed (calls from other documents may reach others now).
+    bool set_programs(const std::filesystem::path& file, std::vector<IndexedProgram> programs);
     static std::vector<IndexedProgram> programs_of(const std::filesystem::path& file, const ast::TypedFile& typed);
     void remove_file(const std::filesystem::path& file);
     // Program `number` as a call from `from` reaches it outside `from` itself (project/index.hpp:

@@ -332,8 +332,13 @@ struct Server::Impl {
             const std::lock_guard lock(docs_mutex);
             docs[doc->uri()] = doc;
         }
-        project.set_programs(doc->path(), ProjectSeam::programs_of(doc->path(), doc->typed()));
-        if (worker) worker->schedule(doc);
+        const bool numbers = project.set_programs(doc->path(), ProjectSeam::programs_of(doc->path(), doc->typed()));
+        if (!worker) return;
+        worker->schedule(doc);
+        // New program numbers: a call in another open document may reach a program now, or no more.
+        if (numbers)
+            for (const auto& [uri, other] : docs)
+                if (other != doc) worker->schedule(other);
     }
 
     std::shared_ptr<const Document> open_document(const std::string& uri) const {
@@ -427,9 +432,11 @@ struct Server::Impl {
         }
         if (worker) worker->forget(uri);
         send(notification("textDocument/publishDiagnostics", json::object{{"uri", uri}, {"diagnostics", json::array{}}}));
-        // The file on disk counts again in the index (or nothing, when there is none).
+        // The file on disk counts again in the index (or nothing, when there is none), and the
+        // other documents' calls are checked against it.
         if (const auto text = read_disk(path)) project.update_file(path, *text);
         else project.remove_file(path);
+        reanalyse_documents();
     }
 
     // Every open document under the current settings again (a new dialect parses it again).
