@@ -345,6 +345,11 @@ TEST_CASE("open documents win over their files on disk in the workspace index") 
     const json::value d = c.result("textDocument/definition", test::at(folder.uri("main.nc"), 1, 6));
     CHECK(str(d.at("uri")) == folder.uri("sub.nc"));
     CHECK(span(d.at("range")) == "0:0-0:5");
+    // An edit of the open document keeps the index current: O2500 → O2600 and the call finds nothing.
+    c.notify("textDocument/didChange", json::object{{"textDocument", json::object{{"uri", folder.uri("sub.nc")}, {"version", 2}}},
+                                                     {"contentChanges", json::array{json::object{{"range", test::range(0, 2, 0, 3)}, {"text", "6"}}}}});
+    CHECK(by_code(c.diagnostics(folder.uri("main.nc"), 1)).count("K3003") == 1);
+    CHECK(c.result("textDocument/definition", test::at(folder.uri("main.nc"), 1, 6)).is_null());
     // Closed unsaved: the file on disk (O2000) counts again.
     c.notify("textDocument/didClose", json::object{{"textDocument", json::object{{"uri", folder.uri("sub.nc")}}}});
     CHECK(by_code(c.diagnostics(folder.uri("main.nc"), 1)).count("K3003") == 1);
