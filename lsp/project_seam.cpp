@@ -31,18 +31,15 @@ public:
     // An open document is the editor's text (already decoded); a file is read and decoded from disk.
     project::ReadResult read(const fs::path& path, const ast::InputLimits& limits) const override {
         project::ReadResult r;
-        if ((r.text = open_(path))) return r;
+        if ((r.text = open_(path, std::string::npos))) return r;
         return disk_.read(path, limits);
     }
     project::ReadResult read_head(const fs::path& path, std::size_t bytes) const override {
         project::ReadResult r;
-        if ((r.text = open_(path))) {
-            if (r.text->size() > bytes) r.text->resize(bytes);
-            return r;
-        }
+        if ((r.text = open_(path, bytes))) return r;
         return disk_.read_head(path, bytes);
     }
-    bool is_file(const fs::path& path) const override { return open_(path).has_value() || disk_.is_file(path); }
+    bool is_file(const fs::path& path) const override { return open_(path, 0).has_value() || disk_.is_file(path); }
     std::vector<fs::path> files_in(const fs::path& folder) const override { return disk_.files_in(folder); }
 
 private:

@@ -38,9 +38,11 @@ struct IndexedProgram {
 
 class ProjectSeam {
 public:
-    // The text of an open document (nullopt when `path` is not open): open documents hide their
-    // files on disk for every read of the workspace (configuration, index, subprograms).
-    using Reader = std::function<std::optional<std::string>(const std::filesystem::path&)>;
+    // At most the first `max_bytes` of the text of an open document (nullopt when `path` is not
+    // open): open documents hide their files on disk for every read of the workspace
+    // (configuration, index, subprograms). A head is all the recognition of a file reads: a
+    // million-line document is not copied for it.
+    using Reader = std::function<std::optional<std::string>(const std::filesystem::path&, std::size_t max_bytes)>;
     explicit ProjectSeam(Reader open_documents);
 
     void set_client(ClientSettings settings);

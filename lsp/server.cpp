@@ -63,7 +63,7 @@ struct Server::Impl {
     using NotifyFn = std::function<void(json::value& params)>;
 
     Impl(int in_fd, int out_fd, ServerOptions o)
-        : options(std::move(o)), transport(in_fd, out_fd), project([this](const fs::path& p) { return open_text(p); }) {
+        : options(std::move(o)), transport(in_fd, out_fd), project([this](const fs::path& p, std::size_t max_bytes) { return open_text(p, max_bytes); }) {
         register_handlers();
     }
 
@@ -115,11 +115,12 @@ struct Server::Impl {
 
     // --- files -------------------------------------------------------------------------------
 
-    // The text of an open document at `path` (the project layer reads the disk for the rest).
-    std::optional<std::string> open_text(const fs::path& path) {
+    // The text of an open document at `path`, its first `max_bytes` (the project layer reads the
+    // disk for the rest).
+    std::optional<std::string> open_text(const fs::path& path, std::size_t max_bytes) {
         const std::lock_guard lock(docs_mutex);
         for (const auto& [uri, doc] : docs)
-            if (doc->path() == path) return doc->text();
+            if (doc->path() == path) return doc->text().substr(0, max_bytes);
         return std::nullopt;
     }
 

@@ -355,17 +355,26 @@ TEST_CASE("open documents win over their files on disk in the workspace index") 
     CHECK(by_code(c.diagnostics(folder.uri("main.nc"), 1)).count("K3003") == 1);
 }
 
-TEST_CASE("hover and completion are answered while the dry run runs") {
-    // An endless loop, and a machine and limits that let its dry run go on for a minute: the hover
-    // and the completion must come before the dry run's diagnostics (which come when the run is
-    // cancelled at the end of the test, or never).
-    test::TempFolder folder;
+namespace {
+
+// A project whose loop.nc loops without end, on a machine that lets a dry run take a million
+// million blocks (machine/SCHEMA.md max_blocks): only the wall-clock limit ends its dry run.
+std::string endless_loop(const test::TempFolder& folder, LspClient& c, const char* time_limit) {
     folder.write("m.toml", "id = \"m\"\nbase = \"fanuc-mill\"\nname = \"m\"\n[switches]\nmax_blocks = 1000000000000\n");
-    folder.write(".kerf.toml", "dialect = \"fanuc-mill\"\nmachine = \"m.toml\"\n[limits]\ntime_limit = 60\n");
-    LspClient c;
+    folder.write(".kerf.toml", std::string("dialect = \"fanuc-mill\"\nmachine = \"m.toml\"\n[limits]\ntime_limit = ") + time_limit + "\n");
     c.initialize({}, folder.path());
-    const std::string uri = folder.uri("loop.nc");
-    c.open(uri, "O1\nN1 G01 X1. F100.\nG01 X2.\nGOTO 1\nM30\n");
+    c.open(folder.uri("loop.nc"), "O1\nN1 G01 X1. F100.\nG01 X2.\nGOTO 1\nM30\n");
+    return folder.uri("loop.nc");
+}
+
+}  // namespace
+
+TEST_CASE("hover and completion are answered while the dry run runs") {
+    // The dry run may go on for a minute: the hover and the completion must come before its
+    // diagnostics (which come when the run is cancelled at the end of the test, or never).
+    test::TempFolder folder;
+    LspClient c;
+    const std::string uri = endless_loop(folder, c, "60");
     c.diagnostics(uri, 1, "static");
     const json::value h = c.result("textDocument/hover", test::at(uri, 1, 4));
     CHECK(str(h.at("contents").at("value")).find("**G01**") != std::string::npos);
@@ -378,12 +387,8 @@ TEST_CASE("hover and completion are answered while the dry run runs") {
 
 TEST_CASE("the dry run stops at .kerf.toml [limits] time_limit, as kerf check's does") {
     test::TempFolder folder;
-    folder.write("m.toml", "id = \"m\"\nbase = \"fanuc-mill\"\nname = \"m\"\n[switches]\nmax_blocks = 1000000000000\n");
-    folder.write(".kerf.toml", "dialect = \"fanuc-mill\"\nmachine = \"m.toml\"\n[limits]\ntime_limit = 0.2\n");
     LspClient c;
-    c.initialize({}, folder.path());
-    c.open(folder.uri("loop.nc"), "O1\nN1 G01 X1. F100.\nG01 X2.\nGOTO 1\nM30\n");
-    const json::array d = c.diagnostics(folder.uri("loop.nc"), 1);
+    const json::array d = c.diagnostics(endless_loop(folder, c, "0.2"), 1);
     const auto found = by_code(d);
     // The run's limit (alarm 90005, docs/trace.md) at whichever block of the loop ran when the
     // clock ran out.
