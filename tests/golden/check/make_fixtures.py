@@ -94,7 +94,7 @@ F = {
                                 [(6, "Y18.", E)]),
 }
 # K5015 needs soft limits: the harness sets them from "# soft-limit AXIS MIN MAX".
-SOFT = {"K5015-soft-limit": (L, prog("G00 X900."), prog("G00 X200."), [(2, "G00", E)], "# soft-limit X -10 500")}
+SOFT = {"K5015-soft-limit": (L, prog("G00 X900."), prog("G00 X200."), [(2, "G00", E)], "# soft-limit X -500 10")}   # machine X: home 0, the spindle axis at -300
 # K3010 needs other files: the harness answers the program index's question from
 # "# program-files N FILE..." (the real index is tested in tests/project/test_workspace.cpp).
 INDEX = {"K3010-program-in-several-files": (M, prog("M98 P1000"), prog("M98 P1001"), [(2, "P1000", W)],
