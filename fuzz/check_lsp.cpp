@@ -39,7 +39,7 @@ namespace json = boost::json;
 constexpr const char* kPrograms[] = {
     "O1000 (MAIN)\nN10 G50 S2000\nN20 T0101\nN30 G96 S200 M03\nN40 G00 X50. Z2.\nN50 G71 U1. R0.5\n"
     "N60 G71 P70 Q90 U0.4 W0.1 F0.25\nN70 G00 X20.\nN80 G01 Z-20.\nN90 X50.\nN100 G70 P70 Q90\nN110 M98 P31234\nN120 M30\n"
-    "O1234 (SUB)\nN5 G01 U-2. F0.1\nN6 M99 P110\n",
+    "O1234 (SUB)\nN5 G01 U-2. F0.1\nN6 M99 P120\n",
     "%\nO0001\nN10 G00 X0. Y0. X1.\nN20 G01 X10. Y10.\nN30 G02 X20. Y0. R1.\nGOTO 10\nN10 M30\nG00 X5.\n%\n",
     "O2\n#1=0\nWHILE [#1 LT 3] DO 1\n#1=#1+1\nG65 P9010 A#1\nEND 1\nIF [#1 EQ 3] GOTO 5\nN5 M98 P41001\nM30\n",
     "O3\nT1 M06\nG90 G00 X0. Y0. S1000 M03\nG43 H2 Z50.\nG81 X10. Y10. Z-5. R2. F100.\nG80\nM30\n",
@@ -48,15 +48,15 @@ constexpr const char* kPrograms[] = {
 constexpr const char* kPieces[] = {"", "X", "7", " ", "\n", "\r\n", "%", "(", "G71 P10 Q20 ", "N10 ", "GOTO 10\n", "#1=#1+1\n",
                                    "M98 P41001\n", "O1234\n", "Ф", "𝄞", "\t", ";", "IF [#1 LT 2] GOTO 5\n"};
 constexpr const char* kDialects[] = {"", "auto", "nope", "fanuc-mill", "fanuc-lathe-a", "fanuc-lathe-c", "pcnc-mill"};
-// The documents live in a folder of their own whose .kerf.toml bounds every dry run to a quarter of
-// a second (a program may loop: the server stops it at the time limit, as kerf check does).
+// The documents live in a folder of their own whose .kerf.toml bounds every dry run to a tenth of a
+// second (a program may loop: the server stops it at the time limit, as kerf check does).
 constexpr const char* kFiles[] = {"a.nc", "O1234", "sub/b.nc"};
 
 const std::filesystem::path& folder() {
     static const std::filesystem::path dir = [] {
         const std::filesystem::path d = std::filesystem::temp_directory_path() / fmt::format("kerf-fuzz-lsp-{}", ::getpid());
         std::filesystem::create_directories(d / "sub");
-        std::ofstream(d / ".kerf.toml") << "[limits]\ntime_limit = 0.25\n";
+        std::ofstream(d / ".kerf.toml") << "[limits]\ntime_limit = 0.1\n";
         return d;
     }();
     return dir;

@@ -116,6 +116,9 @@ TEST_CASE("hover shows the dry-run state at the block and the diagnostics under 
     // N30 G01 without any F: K5001 feed-move-without-feed, with the rule's documentation.
     const std::string on_move = s.hover("file:///w/b.nc", 3, 5);
     CHECK(has(on_move, "**K5001** feed-move-without-feed (error)"));
+    // ...and the rule's explanation, as `kerf explain K5001` gives it (analyzer/rules/motion.cpp).
+    CHECK(has(on_move, "A G01/G02/G03 move runs with no feed rate."));
+    CHECK(has(on_move, "*semantics.md §4*"));
 }
 
 TEST_CASE("completion: codes after G and M, cycle snippets in the dialect's own G-code system") {
