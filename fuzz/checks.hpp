@@ -55,4 +55,13 @@ Broken check_input(std::string_view input);
 // position inside the text (or none), and its text names the file.
 Broken check_kerf_toml(std::string_view input);
 
+// The language server's message loop (`kerf lsp`: lsp::Server reading a pipe as it reads stdin):
+// the input is a script of messages (fuzz/check_lsp.cpp): raw bytes, frames with a wrong
+// Content-Length or a body that is not JSON-RPC, and the requests and notifications of every
+// feature with document texts, edits, positions and ranges taken from the input. The server ends
+// once the input does (or at `exit`), with 0 after shutdown and exit, else 1; every frame it writes
+// is a JSON-RPC 2.0 message; a response answers a request that was sent, once; when the script
+// has no broken framing, every request before `exit` is answered.
+Broken check_lsp(std::string_view input);
+
 }  // namespace kerf::fuzz

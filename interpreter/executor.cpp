@@ -296,6 +296,7 @@ void Executor::execute_block(Frame& frame) {
     const SourceRef where = source(frame, view);
     const bool moved = apply_block_words(frame, view, words);
     if (options_.emit_state && !stopped_) emit_state(where);
+    if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(true));
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
     if (moved && modal_call_ && !stopped_ && frames_.size() == depth && !frame.modal_macro)
         push_macro_frame(frame, view, modal_call_->program, modal_call_->repeats, modal_call_->arguments, true);
