@@ -724,7 +724,9 @@ private:
 
     std::string respell(const Token& t, const CodeInfo& target) const {
         const char letter = t.has(ast::token_flags::lower_case) ? static_cast<char>(std::tolower(t.letter)) : t.letter;
-        return respell_code(std::string(1, letter) + std::string(tree_.value_spelling(t)), target);
+        std::string spelled(1, letter);
+        spelled.append(tree_.value_spelling(t));
+        return respell_code(spelled, target);
     }
 
     // G68 R: + = CCW (FANUC) ↔ + = CW (ADV400), gcode-tables.md §8.10: the angle changes sign.

@@ -35,8 +35,11 @@ public:
             for (char& ch : s) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
         return s;
     }
+    // Appended piecewise: GCC 12 warns falsely on string + string (-Wrestrict, tests/cli/cli_runner.hpp).
     std::string word(char letter, double value, int digits = kPositionDigits) const {
-        return cased(std::string(1, letter)) + format_value(value, digits);
+        std::string w = cased(std::string(1, letter));
+        w.append(format_value(value, digits));
+        return w;
     }
 
 private:
@@ -104,14 +107,18 @@ Expansion expand_block(const BlockRun& run, const ExpandContext& c) {
             bool any = false;
             for (std::size_t a = 0; a < e.end.size(); ++a) {
                 if (std::fabs(e.end[a] - e.start[a]) < 1e-9) continue;
-                line += (line.empty() ? "" : " ") + w.word(kAxisLetters[a], e.end[a]);
+                if (!line.empty()) line += ' ';
+                line.append(w.word(kAxisLetters[a], e.end[a]));
                 any = true;
             }
-            if (!any) line += (line.empty() ? "" : " ") + w.word(kAxisLetters[plane.first], e.end[plane.first]);
+            if (any) return;
+            if (!line.empty()) line += ' ';
+            line.append(w.word(kAxisLetters[plane.first], e.end[plane.first]));
         };
         const auto feed = [&] {
             if (last_feed && *last_feed == e.feed) return;
-            line += " " + w.word('F', e.feed, kFeedDigits);
+            line += ' ';
+            line.append(w.word('F', e.feed, kFeedDigits));
             last_feed = e.feed;
         };
         switch (e.kind) {
@@ -135,7 +142,10 @@ Expansion expand_block(const BlockRun& run, const ExpandContext& c) {
                 const double d = (*e.center)[a] - e.start[a];
                 return a == 0 && c.reading.diameter_x ? d / 2 : d;   // X centres are diameters, I a radius value
             };
-            line += " " + w.word(plane.i, offset(plane.first)) + " " + w.word(plane.j, offset(plane.second));
+            line += ' ';
+            line.append(w.word(plane.i, offset(plane.first)));
+            line += ' ';
+            line.append(w.word(plane.j, offset(plane.second)));
             feed();
             break;
         }

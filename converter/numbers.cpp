@@ -28,7 +28,7 @@ std::optional<Decimal> parse_decimal(std::string_view text) {
     }
     if (!any) {
         if (!d.point) return std::nullopt;   // "-" alone
-        d.digits = "0";                      // "." reads as 0 on FANUC
+        d.digits.assign(1, '0');             // "." reads as 0 on FANUC
     }
     return d;
 }
