@@ -158,7 +158,8 @@ json::object json_of(const fs::path& path, const FileResult& r, bool with_output
     if (c.verified || c.verify_failure) f["verified"] = c.verified;
     if (c.verify_failure) {
         const project::VerifyFailure& v = *c.verify_failure;
-        f["verify_failure"] = json::object{{"event", v.event},         {"input_line", v.input_line},
+        f["verify_failure"] = json::object{{"event", v.event},         {"input_file", ast::valid_utf8(v.input_file)},
+                                           {"output_file", ast::valid_utf8(v.output_file)}, {"input_line", v.input_line},
                                            {"output_line", v.output_line}, {"input_block", ast::valid_utf8(v.input_block)},
                                            {"output_block", ast::valid_utf8(v.output_block)}, {"what", ast::valid_utf8(v.what)}};
     }

@@ -126,6 +126,14 @@ public:
     }
 
     Conversion run() {
+        // A lathe program says nothing a mill dialect can say by meaning (axes, diameters, cycles).
+        if (from_.machine != to_.machine) {
+            const char* kinds[] = {"lathe", "mill"};
+            report({0, 0}, ReportKind::unconverted, from_.id,
+                   fmt::format("a {} program: {} is a dialect for {}s; nothing was converted", kinds[static_cast<int>(from_.machine)],
+                               to_.id, kinds[static_cast<int>(to_.machine)]));
+            return std::move(out_);
+        }
         prepare();
         for (std::size_t b = 0; b < tree_.block_count(); ++b) convert_block(b);
         report_syntax_errors();

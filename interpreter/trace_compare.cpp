@@ -153,7 +153,7 @@ public:
         const Event* expected = next();
         if (difference_ || stopped_) return;
         if (!expected) {
-            difference_ = TraceDifference{i, 0, e.source.line, "the output has more events than the input"};
+            difference_ = TraceDifference{i, 0, e.source.line, "the output has more events than the input", {}, {}, 0, e.source.file};
             return;
         }
         if (is_run_limit(e) || is_run_limit(*expected)) {
@@ -161,14 +161,15 @@ public:
             return;
         }
         if (auto what = compare_events(*expected, e, options_))
-            difference_ = TraceDifference{i, expected->source.line, e.source.line, *what};
+            difference_ = TraceDifference{i, expected->source.line, e.source.line, *what, {}, {}, expected->source.file, e.source.file};
     }
     // After the output's run: the input's events it did not match.
     void finish() {
         const std::size_t matched = count_;
         while (const Event* expected = next()) {
             if (!difference_ && !stopped_ && !is_run_limit(*expected))
-                difference_ = TraceDifference{matched, expected->source.line, 0, "the output has fewer events than the input"};
+                difference_ = TraceDifference{matched, expected->source.line, 0, "the output has fewer events than the input", {}, {},
+                                              expected->source.file, 0};
         }
     }
     std::size_t expected_count() const { return taken_; }
@@ -236,7 +237,7 @@ TraceComparison compare_runs(TraceSide input, TraceSide output, const CompareOpt
     load(before, input);
     load(after, output);
     if (before.main.has_value() != after.main.has_value()) {
-        result.difference = TraceDifference{0, 0, 0, before.main ? "the output has no program" : "the input has no program"};
+        result.difference = TraceDifference{0, 0, 0, before.main ? "the output has no program" : "the input has no program", {}, {}, 0, 0};
         return result;
     }
     if (!before.main) return result;   // nothing runs in either
@@ -253,6 +254,12 @@ TraceComparison compare_runs(TraceSide input, TraceSide output, const CompareOpt
     input_run.join();
     result.events = actual.expected_count();
     result.difference = std::move(actual.difference());
+    // Both runs are over: the file tables no longer grow.
+    if (result.difference) {
+        TraceDifference& d = *result.difference;
+        if (d.input_file_index < before.programs.file_count()) d.input_file = before.programs.file(d.input_file_index).name();
+        if (d.output_file_index < after.programs.file_count()) d.output_file = after.programs.file(d.output_file_index).name();
+    }
     return result;
 }
 

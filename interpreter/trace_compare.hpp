@@ -48,6 +48,9 @@ struct TraceDifference {
     std::uint32_t input_line = 0;   // 1-based source lines of that event, 0 when there is none
     std::uint32_t output_line = 0;
     std::string what;               // "end X: 10 vs 10.5", "kind: linear vs rapid", "the output has fewer events ..."
+    std::string input_file;         // the file of each side's event (a subprogram's file when it came from one)
+    std::string output_file;
+    std::uint32_t input_file_index = 0, output_file_index = 0;   // in each side's ProgramSet
 };
 
 struct TraceComparison {

@@ -79,9 +79,16 @@ void verify(Workspace& workspace, const fs::path& file, const std::string& input
         return;
     }
     const interpreter::TraceDifference& d = *c.difference;
-    r.verify_failure = VerifyFailure{d.event, static_cast<int>(d.input_line), static_cast<int>(d.output_line),
-                                     line_text(input, static_cast<int>(d.input_line)),
-                                     line_text(*r.converted, static_cast<int>(d.output_line)), d.what};
+    // A block of the file itself is shown from its text; one of a subprogram's file is named.
+    const bool own_input = d.input_file == file.string(), own_output = d.output_file == file.string();
+    r.verify_failure = VerifyFailure{d.event,
+                                     own_input ? file.string() : d.input_file,
+                                     own_output ? std::string("converted") : "converted " + d.output_file,
+                                     static_cast<int>(d.input_line),
+                                     static_cast<int>(d.output_line),
+                                     own_input ? line_text(input, static_cast<int>(d.input_line)) : std::string(),
+                                     own_output ? line_text(*r.converted, static_cast<int>(d.output_line)) : std::string(),
+                                     d.what};
 }
 
 }  // namespace
@@ -134,10 +141,11 @@ std::vector<std::string> describe(const std::string& file, const ConvertOutcome&
                                     ast::printable(ast::shorten(r.construct, 80)), ast::printable(r.reason)));
     if (o.verify_failure) {
         const VerifyFailure& f = *o.verify_failure;
-        lines.push_back(fmt::format("{}:{}: error: --verify: the converted program runs differently at motion event {}: {}", file,
-                                    f.input_line, f.event, f.what));
-        lines.push_back(fmt::format("  {} ({}) line {}: {}", file, o.from, f.input_line, f.input_block));
-        lines.push_back(fmt::format("  converted ({}) line {}: {}", o.to, f.output_line, f.output_block));
+        const std::string at = f.input_file == file && f.input_line > 0 ? fmt::format("{}:{}", file, f.input_line) : file;
+        lines.push_back(fmt::format("{}: error: --verify: the converted program runs differently at motion event {}: {}", at,
+                                    f.event, f.what));
+        lines.push_back(fmt::format("  {} ({}) line {}: {}", ast::printable(f.input_file), o.from, f.input_line, f.input_block));
+        lines.push_back(fmt::format("  {} ({}) line {}: {}", ast::printable(f.output_file), o.to, f.output_line, f.output_block));
     }
     return lines;
 }

@@ -33,6 +33,7 @@ struct ConvertReport {
 
 struct VerifyFailure {
     std::size_t event = 0;
+    std::string input_file, output_file;   // the file of each side's block (a subprogram's file, or the converted one)
     int input_line = 0, output_line = 0;   // 1-based; 0 when that side has no such event
     std::string input_block, output_block;   // the blocks' text (shortened, printable)
     std::string what;

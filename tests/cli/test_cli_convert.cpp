@@ -145,7 +145,7 @@ TEST_CASE("kerf convert --verify: a difference fails the file with the first dif
     CHECK(r.err.find((dir / "g91.nc").string() + ":4:5: not converted: G91") != std::string::npos);
     CHECK(r.err.find("error: --verify: the converted program runs differently at motion event") != std::string::npos);
     CHECK(r.err.find("(fanuc-lathe-a) line 4: N20 G91 G28 Z0.") != std::string::npos);
-    CHECK(r.err.find("converted (fanuc-lathe-b) line 4: N20 G91 G28 Z0.") != std::string::npos);
+    CHECK(r.err.find("  converted (fanuc-lathe-b) line 4: N20 G91 G28 Z0.") != std::string::npos);
     fs::remove_all(dir);
     fs::remove_all(runs(dir));
 }
