@@ -534,9 +534,9 @@ private:
 
     void convert_block(std::size_t b) {
         const ast::Block& block = tree_.blocks[b];
+        if (block.kind == ast::BlockKind::program_start || b == 0) reset_program_state(b);
         if (block.kind == ast::BlockKind::tail || block.kind == ast::BlockKind::blank || block.kind == ast::BlockKind::percent) return;
         const ast::BlockView view = file_.block(b);
-        if (block.kind == ast::BlockKind::program_start || b == 0) reset_program_state(b);
         const auto tokens = view.tokens();
         const std::uint32_t first = view.first_token();
         for (std::uint32_t i = 0; i < tokens.size(); ++i) {
