@@ -230,7 +230,9 @@ int run_convert(const ConvertOptions& o) {
     ProblemPrinter problems;
     if (!check_target(workspace, o, problems)) return kExitUsage;
     if (o.paths.size() == 1 && o.paths.front() == "-") return run_stdin(o, workspace, problems);
-    const project::WalkResult sources = project::collect_program_files({o.paths.begin(), o.paths.end()}, workspace.files());
+    // Folders are walked as `kerf check` walks them ([check] include/exclude of each .kerf.toml).
+    const project::WalkResult sources =
+        project::collect_program_files({o.paths.begin(), o.paths.end()}, workspace.files(), workspace.check_selector());
     for (const std::string& e : sources.errors) std::cerr << "kerf: " << e << "\n";
     const bool single = !o.write && o.output_dir.empty();
     if (single && (sources.files.size() > 1 || (o.paths.size() == 1 && fs::is_directory(o.paths.front())))) {
