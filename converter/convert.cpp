@@ -225,6 +225,13 @@ private:
 
     std::string_view spelling(const Token& t) const { return tree_.spelling(t); }
 
+    // A block's text for a report: without its line break.
+    std::string block_text(const ast::BlockView& view) const {
+        std::string_view s = tree_.slice(view.range());
+        while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+        return std::string(s);
+    }
+
     void edit(std::uint32_t begin, std::uint32_t end, std::string text) {
         pending_.push_back({begin, end, order_++, std::move(text)});
     }
@@ -491,7 +498,7 @@ private:
         if (!power_on_pending_ || view.block().kind != ast::BlockKind::code) return;
         power_on_pending_ = false;
         for (const std::string& f : power_on_missing_)
-            report(view.range(), ReportKind::unconverted, std::string(tree_.slice(view.range())).substr(0, 40),
+            report(view.range(), ReportKind::unconverted, block_text(view),
                    fmt::format("{} starts in {} mode and {} has no code for it (dialects.md §3.8)", from_.id, f, to_.id));
         for (const CodeInfo* code : power_on_codes_)
             if (!in_same_family(code->function)) insert_code(tokens, *code, lower);
@@ -541,7 +548,7 @@ private:
         const std::uint32_t first = view.first_token();
         for (std::uint32_t i = 0; i < tokens.size(); ++i) {
             const Token& t = tokens[i];
-            if (t.kind == TokenKind::comment) convert_comment(t, block.kind != ast::BlockKind::comment_only);
+            if (t.kind == TokenKind::comment) convert_comment(t);
             else if (t.kind == TokenKind::eob) convert_eob(t);
             else if (t.kind == TokenKind::word && t.role() != Role::none) header_done_ = true;
             if (t.kind == TokenKind::word && t.role() == Role::program) check_program_number(t);
@@ -561,16 +568,20 @@ private:
 
     enum class CommentForm { paren, semicolon, line };
 
-    void convert_comment(const Token& t, bool in_code_block) {
-        const std::string_view text = spelling(t);
-        if (!header_done_) rename_header(t, text);
-        if (text.empty()) return;
+    // A comment as the target reads it: its text unchanged, or in the target's comment form; nullopt
+    // with a report when the target has no form for it.
+    struct CommentText {
+        std::optional<std::string> text;   // nullopt: as written
+        bool parens_replaced = false;
+        bool impossible = false;
+    };
+    CommentText target_comment(std::string_view text) const {
+        CommentText r;
+        if (text.empty()) return r;
         std::string_view body;
-        CommentForm form = CommentForm::paren;
         std::string_view opener;
-        if (text.front() == '(') {
-            form = CommentForm::paren;
-        } else {
+        CommentForm form = CommentForm::paren;
+        if (text.front() != '(') {
             for (const std::string& l : from_.lexical.line_comments)
                 if (text.substr(0, l.size()) == l && l.size() > opener.size()) opener = text.substr(0, l.size());
             if (opener.empty() && text.front() == ';') opener = text.substr(0, 1);
@@ -578,27 +589,38 @@ private:
                                                                                                 : CommentForm::line;
             body = text.substr(opener.size());
         }
-        if (accepts(form, opener)) return;
-        if (form == CommentForm::paren) {
-            // Only a target without ( ) comments: a line comment, if it runs to the end of the line.
-            report_token(t, ReportKind::unconverted, fmt::format("{} has no ( ) comments", to_.id));
-            return;
-        }
-        if (!to_.lexical.paren_comments) {
-            report_token(t, ReportKind::unconverted, fmt::format("{} reads no comment of this form", to_.id));
-            return;
+        if (accepts(form, opener)) return r;
+        // A ( ) comment into a target without ( ), or no ( ) in the target for a line comment.
+        if (form == CommentForm::paren || !to_.lexical.paren_comments) {
+            r.impossible = true;
+            return r;
         }
         std::string inner(body);
-        const bool parens = inner.find_first_of("()") != std::string::npos;
+        r.parens_replaced = inner.find_first_of("()") != std::string::npos;
         std::replace(inner.begin(), inner.end(), '(', '[');
         std::replace(inner.begin(), inner.end(), ')', ']');
         // A line comment runs to the end of the line, blanks included; ( ) needs none of them.
         while (!inner.empty() && (inner.back() == ' ' || inner.back() == '\t')) inner.pop_back();
-        replace_token(t, "(" + inner + ")");
-        if (parens)
+        std::string out = "(";
+        out.append(inner);
+        out += ')';
+        r.text = std::move(out);
+        return r;
+    }
+
+    void convert_comment(const Token& t) {
+        const std::string_view text = spelling(t);
+        if (!header_done_) rename_header(t, text);
+        const CommentText c = target_comment(text);
+        if (c.impossible) {
+            report_token(t, ReportKind::unconverted, fmt::format("{} reads no comment of this form", to_.id));
+            return;
+        }
+        if (!c.text) return;
+        replace_token(t, *c.text);
+        if (c.parens_replaced)
             report_token(t, ReportKind::note,
                          fmt::format("( ) inside the comment became [ ]: {} comments cannot nest (dialects.md §2)", to_.id));
-        (void)in_code_block;
     }
 
     bool accepts(CommentForm form, std::string_view opener) const {
@@ -1142,7 +1164,7 @@ private:
         if (to_.lexical.macro_b || !from_.lexical.macro_b) return;
         for (const Token& t : tokens) {
             if (t.kind == TokenKind::statement || (t.kind == TokenKind::word && t.has(ast::token_flags::value_expr))) {
-                report(view.range(), ReportKind::unconverted, std::string(tree_.slice(view.range())),
+                report(view.range(), ReportKind::unconverted, block_text(view),
                        fmt::format("{} has no Custom Macro B (#variables, expressions, IF/WHILE/GOTO)", to_.id));
                 return;
             }
@@ -1164,7 +1186,7 @@ private:
         if (source_moves_at_power_on_ || !target_moves_at_power_on_) return;
         for (const Token& t : view.tokens()) {
             if (t.kind != TokenKind::word || !is_axis_role(t.role())) continue;
-            report(view.range(), ReportKind::unconverted, std::string(tree_.slice(view.range())),
+            report(view.range(), ReportKind::unconverted, block_text(view),
                    fmt::format("axis words before any motion code: {} has no power-on motion mode, {} moves them at its "
                                "own; write the motion code the program means",
                                from_.id, to_.id));
@@ -1185,7 +1207,7 @@ private:
 
     void report_repeat(std::uint32_t b, const ast::BlockView& view, bool group01) {
         if (group01 || !repeats_construct(view)) return;
-        report(view.range(), ReportKind::unconverted, std::string(tree_.slice(view.range())),
+        report(view.range(), ReportKind::unconverted, block_text(view),
                fmt::format("repeats {} of line {}, which has no equivalent in {}", motion_->spelling, line_of(motion_at_), to_.id));
         expandable_candidates_.insert(b);
     }
@@ -1325,36 +1347,52 @@ private:
 
 bool Converter::try_expand(std::uint32_t b, const ast::BlockView& view) {
     const BlockRun* run = run_ ? run_->block(b) : nullptr;
-    const std::string construct = std::string(tree_.slice(view.range()));
-    const auto trimmed = [](std::string s) {
-        while (!s.empty() && (s.back() == '\n' || s.back() == '\r' || s.back() == ' ')) s.pop_back();
-        return s;
-    };
+    const std::string construct = block_text(view);
     const auto refuse = [&](const std::string& why) {
-        report(view.range(), ReportKind::unconverted, trimmed(construct), fmt::format("--expand: {}", why));
+        report(view.range(), ReportKind::unconverted, construct, fmt::format("--expand: {}", why));
         return false;
     };
+    if (view.block().has(ast::block_flags::deleted)) return refuse("the block is behind a block delete '/'");
     if (!run) return refuse("the dry run never reached this block");
     if (run->varies) return refuse("the block runs more than once, and not the same way each time");
     if (compensating_) return refuse("it runs under G41/G42: its events are tool-centre points");
     if (transformed_) return refuse("it runs under a coordinate transform (rotation, scaling, mirror, polar)");
     if (tgt_incremental_) return refuse("the target is in G91 here");
-    // Kept on the comment's line: N, and the block's codes and words that the target has and that
-    // are not the construct (M08, S, T ...).
+    // Kept on the comment's line: N and the block's M codes (as the target spells them) before the
+    // comment, the block's own comments after it (a line comment runs to the end of the line).
     view.collect_codes(g_, m_);
-    std::string prefix;
+    std::string prefix, comments;
     const auto tokens = view.tokens();
     for (const Token& t : tokens) {
+        if (t.kind == TokenKind::comment) {
+            const CommentText c = target_comment(spelling(t));
+            if (c.impossible) return refuse("a comment of the block has no form in the target");
+            comments += ' ';
+            comments.append(c.text ? *c.text : std::string(spelling(t)));
+            continue;
+        }
         if (t.kind != TokenKind::word) continue;
-        if (t.role() == Role::sequence) prefix += std::string(spelling(t)) + " ";
+        if (t.role() == Role::sequence) {
+            prefix.append(spelling(t));
+            prefix += ' ';
+        }
     }
-    ExpandContext context{to_, codes_, rt_, false, dialects::PlaneTrait::xy, false, "\n", "", ""};
+    for (const ast::CodeRef& c : m_) {
+        const Token& t = tree_.tokens[c.token];
+        const CodeMapping* m = c.info ? &codes_(*c.info) : nullptr;
+        if (!m || (m->action != CodeAction::keep && m->action != CodeAction::rename))
+            return refuse(fmt::format("its {} has no equivalent either", spelling(t)));
+        prefix.append(m->action == CodeAction::rename ? respell(t, *m->target) : std::string(spelling(t)));
+        prefix += ' ';
+    }
+    ExpandContext context{to_, codes_, rt_, false, dialects::PlaneTrait::xy, false, "\n", "", "", ""};
     context.feed_per_rev = feed_per_rev_;
     context.plane = plane_;
     context.lower_case = !tokens.empty() && tokens.front().has(ast::token_flags::lower_case);
     context.line_ending = line_ending_;
     context.prefix = prefix;
-    context.construct = trimmed(construct);
+    context.suffix = comments;
+    context.construct = construct;
     const Expansion e = expand_block(*run, context);
     if (!e.text) return refuse(e.why_not);
     // The block's text but its line break.
@@ -1362,7 +1400,7 @@ bool Converter::try_expand(std::uint32_t b, const ast::BlockView& view) {
     std::uint32_t end = range.end;
     while (end > range.begin && (tree_.text[end - 1] == '\n' || tree_.text[end - 1] == '\r')) --end;
     edit(range.begin, end, *e.text);
-    report(range, ReportKind::expanded, trimmed(construct),
+    report(range, ReportKind::expanded, construct,
            fmt::format("replaced by the motion the dry run computes for it ({} has no equivalent)", to_.id));
     // The block's modal effects as the source had them, for the blocks after it.
     infos_.clear();

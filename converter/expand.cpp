@@ -179,7 +179,7 @@ Expansion expand_block(const BlockRun& run, const ExpandContext& c) {
         if (!mode) return refuse("the target cannot restore the feed mode");
         lines.push_back(*mode);
     }
-    std::string text = c.prefix + comment(c, fmt::format("KERF --EXPAND: {}", c.construct));
+    std::string text = c.prefix + comment(c, fmt::format("KERF --EXPAND: {}", c.construct)) + c.suffix;
     for (const std::string& l : lines) text += c.line_ending + l;
     result.text = std::move(text);
     return result;

@@ -24,7 +24,8 @@ struct ExpandContext {
     dialects::PlaneTrait plane = dialects::PlaneTrait::xy;   // the arc plane in force
     bool lower_case = false;         // the block's letters are lower case
     std::string line_ending = "\n";
-    std::string prefix;              // N word, kept codes and words, written on the comment's line
+    std::string prefix;              // N word and kept M codes, written before the comment
+    std::string suffix;              // the block's own comments, after it
     std::string construct;           // what is replaced, for the comment ("G384 ... (line 12)")
 };
 
