@@ -23,10 +23,8 @@ namespace {
 fs::path runs(const fs::path& dir) { return dir.string() + "-run"; }
 
 fs::path fresh_folder(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("kerf-convert-" + name + "-" + std::to_string(::getpid()));
-    fs::remove_all(dir);
+    const fs::path dir = kerf::test::fresh_folder("convert-" + name);   // tests/shared_files.hpp
     fs::remove_all(runs(dir));
-    fs::create_directories(dir);
     return dir;
 }
 

@@ -19,25 +19,6 @@ using namespace kerf;
 
 namespace {
 
-// `key = "value"` lines of the case's .toml (the same small reader as the format goldens'); every
-// line of a key that repeats (`report`).
-std::vector<std::string> values(const std::string& toml, const std::string& key) {
-    std::vector<std::string> out;
-    const std::string prefix = key + " = ";
-    for (const std::string& line : test::split_lines(toml)) {
-        if (line.rfind(prefix, 0) != 0) continue;
-        std::string v = line.substr(prefix.size());
-        if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
-        out.push_back(v);
-    }
-    return out;
-}
-
-std::string value(const std::string& toml, const std::string& key, const std::string& fallback = "") {
-    const auto v = values(toml, key);
-    return v.empty() ? fallback : v.front();
-}
-
 // "not converted 5:4 G384": kind, line:column (1-based) and the construct's text.
 std::string describe(const std::string& text, const converter::Report& r) {
     std::size_t line = 1, column = 1;
@@ -51,8 +32,8 @@ std::string describe(const std::string& text, const converter::Report& r) {
 
 converter::Options options_of(const std::string& toml) {
     converter::Options o;
-    if (value(toml, "incremental") == "letters") o.incremental = converter::IncrementalStyle::letters;
-    o.expand = value(toml, "expand") == "true";
+    if (test::golden_value(toml, "incremental") == "letters") o.incremental = converter::IncrementalStyle::letters;
+    o.expand = test::golden_value(toml, "expand") == "true";
     return o;
 }
 
@@ -68,8 +49,8 @@ TEST_CASE("golden convert pairs: every rename, word rule and reported construct"
         INFO(name);
         const std::string toml = test::read_text(fs::path(input).replace_extension(".toml"));
         REQUIRE_FALSE(toml.empty());
-        const dialects::Dialect& from = test::dialect(value(toml, "from"));
-        const dialects::Dialect& to = test::dialect(value(toml, "to"));
+        const dialects::Dialect& from = test::dialect(test::golden_value(toml, "from"));
+        const dialects::Dialect& to = test::dialect(test::golden_value(toml, "to"));
         const std::string text = test::read_text(input);
         const std::string expected = test::read_text(fs::path(input).replace_extension(".expected"));
         const test::Converted out = test::convert_text(text, from, to, options_of(toml));
@@ -77,14 +58,14 @@ TEST_CASE("golden convert pairs: every rename, word rule and reported construct"
         CHECK(out.text == expected);
         std::vector<std::string> reports;
         for (const converter::Report& r : out.reports) reports.push_back(describe(text, r));
-        CHECK(reports == values(toml, "report"));
-        CHECK(out.clean == (value(toml, "clean", "true") == "true"));
-        if (value(toml, "verify", "true") == "true") {
+        CHECK(reports == test::golden_values(toml, "report"));
+        CHECK(out.clean == (test::golden_value(toml, "clean", "true") == "true"));
+        if (test::golden_value(toml, "verify", "true") == "true") {
             const auto difference = test::motion_difference(text, from, out.text, to);
             INFO((difference ? difference->what + " at input line " + std::to_string(difference->input_line) : std::string()));
             CHECK_FALSE(difference.has_value());
         }
-        if (value(toml, "reverse") == "true") {
+        if (test::golden_value(toml, "reverse") == "true") {
             converter::Options back = options_of(toml);
             const test::Converted again = test::convert_text(expected, to, from, back);
             INFO("back: " << test::line_diff(text, again.text));

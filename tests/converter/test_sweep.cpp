@@ -45,6 +45,24 @@ struct Tally {
     std::size_t conversions = 0, clean = 0, verified = 0, round_trips = 0;
 };
 
+// One conversion: comments and N numbers kept; unless a construct was left as it is, the same
+// motion. Returns the converted text when it was verified.
+std::optional<std::string> check_conversion(const std::string& text, const dialects::Dialect& from, const dialects::Dialect& to,
+                                            const std::vector<std::string>& marks, Tally& tally) {
+    INFO("to " << to.id);
+    const test::Converted out = test::convert_text(text, from, to);
+    ++tally.conversions;
+    tally.clean += out.clean;
+    CHECK(test::comments_and_numbers(out.text, to) == marks);
+    if (left_something(out)) return std::nullopt;
+    const auto difference = test::motion_difference(text, from, out.text, to);
+    INFO(what(difference));
+    CHECK_FALSE(difference.has_value());
+    if (difference) return std::nullopt;
+    ++tally.verified;
+    return out.text;
+}
+
 }  // namespace
 
 TEST_CASE("lathe systems: every example and corpus program to the other two systems and back") {
@@ -62,18 +80,10 @@ TEST_CASE("lathe systems: every example and corpus program to the other two syst
         for (const char system : {'a', 'b', 'c'}) {
             const dialects::Dialect& to = test::dialect(*family + system);
             if (to.id == from.id) continue;
-            INFO("to " << to.id);
-            const test::Converted out = test::convert_text(text, from, to);
-            ++tally.conversions;
-            tally.clean += out.clean;
-            CHECK(test::comments_and_numbers(out.text, to) == marks);
-            if (left_something(out)) continue;
-            const auto difference = test::motion_difference(text, from, out.text, to);
-            INFO(what(difference));
-            CHECK_FALSE(difference.has_value());
-            tally.verified += !difference;
+            const std::optional<std::string> out = check_conversion(text, from, to, marks, tally);
+            if (!out) continue;
             // Back to where it came from: the same text (issue 16, point 3).
-            const test::Converted back = test::convert_text(out.text, to, from);
+            const test::Converted back = test::convert_text(*out, to, from);
             CHECK(back.text == text);
             tally.round_trips += back.text == text;
         }
@@ -113,18 +123,7 @@ TEST_CASE("mill controls: every mill example to every other mill control") {
         const dialects::Dialect& from = test::dialect(id);
         const std::vector<std::string> marks = test::comments_and_numbers(text, from);
         for (const char* target : mills) {
-            if (id == target) continue;
-            const dialects::Dialect& to = test::dialect(target);
-            INFO("to " << to.id);
-            const test::Converted out = test::convert_text(text, from, to);
-            ++tally.conversions;
-            tally.clean += out.clean;
-            CHECK(test::comments_and_numbers(out.text, to) == marks);
-            if (left_something(out)) continue;
-            const auto difference = test::motion_difference(text, from, out.text, to);
-            INFO(what(difference));
-            CHECK_FALSE(difference.has_value());
-            tally.verified += !difference;
+            if (id != target) check_conversion(text, from, test::dialect(target), marks, tally);
         }
     }
     WARN(tally.conversions << " conversions, " << tally.clean << " clean, " << tally.verified << " verified");
