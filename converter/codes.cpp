@@ -16,7 +16,7 @@ namespace {
 
 // Ids several unrelated codes share: a code of one of them maps only to the same number.
 bool is_catch_all(FunctionId f) {
-    return f == FunctionId::known("undocumented") || f == fn::machine_builder_code;
+    return f == fn::undocumented || f == fn::machine_builder_code;
 }
 
 // Function pairs that say the same thing with a difference in the words (functions.hpp notes).

@@ -747,7 +747,7 @@ private:
     static bool moves(const CodeInfo& c) {
         return c.has(dialects::traits::cycle) || c.has(dialects::traits::motion_group) || c.function == fn::reference_return ||
                c.function == fn::reference_return_nth || c.function == fn::return_from_reference ||
-               c.function == fn::dwell || c.has(dialects::traits::arc_approach) || c.function == FunctionId::known("axis-homing");
+               c.function == fn::dwell || c.has(dialects::traits::arc_approach) || c.function == fn::axis_homing;
     }
 
     std::uint32_t token_index(const Token& t) const { return static_cast<std::uint32_t>(&t - tree_.tokens.data()); }
@@ -823,8 +823,7 @@ private:
             fn::dwell, fn::feed_per_minute, fn::feed_per_revolution, fn::css_on, fn::css_off, fn::plane_xy, fn::plane_zx,
             fn::plane_yz, fn::inch_input, fn::metric_input, fn::canned_cycle_cancel, fn::return_initial_level,
             fn::return_r_level, fn::modal_macro_call_cancel, fn::stroke_check_off, fn::tool_length_comp_cancel,
-            FunctionId::known("exact-stop-check"), FunctionId::known("exact-stop-mode"),
-            FunctionId::known("continuous-cutting-mode")};
+            fn::exact_stop_check, fn::exact_stop_mode, fn::continuous_cutting_mode};
         return std::find(std::begin(kFree), std::end(kFree), f) != std::end(kFree);
     }
 
