@@ -1,5 +1,7 @@
 #include "converter/expand.hpp"
 
+#include "converter/pass.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -186,3 +188,71 @@ Expansion expand_block(const BlockRun& run, const ExpandContext& c) {
 }
 
 }  // namespace kerf::converter
+
+namespace kerf::converter::detail {
+
+// A construct block replaced by its expansion (docs/convert.md "--expand"), or refused with the reason.
+bool Converter::try_expand(std::uint32_t b, const ast::BlockView& view) {
+    const BlockRun* run = run_ ? run_->block(b) : nullptr;
+    const std::string construct = block_text(view);
+    const auto refuse = [&](const std::string& why) {
+        report(view.range(), ReportKind::unconverted, construct, fmt::format("--expand: {}", why));
+        return false;
+    };
+    if (view.block().has(ast::block_flags::deleted)) return refuse("the block is behind a block delete '/'");
+    if (!run) return refuse("the dry run never reached this block");
+    if (run->varies) return refuse("the block runs more than once, and not the same way each time");
+    if (compensating_) return refuse("it runs under G41/G42: its events are tool-centre points");
+    if (transformed_) return refuse("it runs under a coordinate transform (rotation, scaling, mirror, polar)");
+    if (tgt_incremental_) return refuse("the target is in G91 here");
+    // Kept on the comment's line: N and the block's M codes (as the target spells them) before the
+    // comment, the block's own comments after it (a line comment runs to the end of the line).
+    view.collect_codes(g_, m_);
+    std::string prefix, comments;
+    const auto tokens = view.tokens();
+    for (const Token& t : tokens) {
+        if (t.kind == TokenKind::comment) {
+            const CommentText c = target_comment(spelling(t));
+            if (c.impossible) return refuse("a comment of the block has no form in the target");
+            comments += ' ';
+            comments.append(c.text ? *c.text : std::string(spelling(t)));
+            continue;
+        }
+        if (t.kind != TokenKind::word) continue;
+        if (t.role() == Role::sequence) {
+            prefix.append(spelling(t));
+            prefix += ' ';
+        }
+    }
+    for (const ast::CodeRef& c : m_) {
+        const Token& t = tree_.tokens[c.token];
+        const CodeMapping* m = c.info ? &codes_(*c.info) : nullptr;
+        if (!m || (m->action != CodeAction::keep && m->action != CodeAction::rename))
+            return refuse(fmt::format("its {} has no equivalent either", spelling(t)));
+        prefix.append(m->action == CodeAction::rename ? respell(t, *m->target) : std::string(spelling(t)));
+        prefix += ' ';
+    }
+    ExpandContext context{to_, codes_, rt_, false, dialects::PlaneTrait::xy, false, "\n", "", "", ""};
+    context.feed_per_rev = feed_per_rev_;
+    context.plane = plane_;
+    context.lower_case = !tokens.empty() && tokens.front().has(ast::token_flags::lower_case);
+    context.line_ending = line_ending_;
+    context.prefix = prefix;
+    context.suffix = comments;
+    context.construct = construct;
+    const Expansion e = expand_block(*run, context);
+    if (!e.text) return refuse(e.why_not);
+    // The block's text but its line break.
+    const ast::Range range = view.range();
+    std::uint32_t end = range.end;
+    while (end > range.begin && (tree_.text[end - 1] == '\n' || tree_.text[end - 1] == '\r')) --end;
+    edit(range.begin, end, *e.text);
+    report(range, ReportKind::expanded, construct,
+           fmt::format("replaced by the motion the dry run computes for it ({} has no equivalent)", to_.id));
+    // The block's modal effects as the source had them, for the blocks after it.
+    infos_.clear();
+    update_state(view, false);
+    return true;
+}
+
+}  // namespace kerf::converter::detail
