@@ -69,9 +69,10 @@ bool Converter::dependent(const ast::BlockView& view) const {
     return false;
 }
 
-void Converter::convert_distance(std::uint32_t b, const ast::BlockView& view, std::uint32_t first, std::span<const Token> tokens,
-                      bool lower) {
-    // The source's mode for this block: its own G90/G91 (the last wins), else the modal one.
+// The source's mode of this block (its own G90/G91, the last wins, else the modal one), and the
+// axis words with what they mean: which axis, incremental or not, written with a U/W/H letter.
+std::optional<std::uint32_t> Converter::read_axis_meanings(const ast::BlockView& view, std::uint32_t first,
+                                                          std::span<const Token> tokens) {
     std::optional<std::uint32_t> mode_token;
     for (const ast::CodeRef& c : g_) {
         if (!c.info) continue;
@@ -93,43 +94,47 @@ void Converter::convert_distance(std::uint32_t b, const ast::BlockView& view, st
         }
     }
     if (unconverted_motion() || repeats_construct(view)) axes_.clear();   // a construct: its words stay
-    const bool profile = flags_[b] & kProfile;
-    if (!tgt_modes_) {
-        for (const ast::CodeRef& c : g_)
-            if (c.info && codes_(*c.info).action == CodeAction::distance_mode) remove_token(c.token);
-        for (const AxisMeaning& a : axes_) write_axis(a, true);
-        return;
-    }
-    bool any_inc = false, all_inc = !axes_.empty(), any_mode_form = false;
+    return mode_token;
+}
+
+// The target mode the block needs (nullopt: either reads the same), and whether its U/W/H become
+// G91 X/Z/C (`to_mode_form`).
+std::optional<bool> Converter::wanted_mode(const ast::BlockView& view, bool& to_mode_form) const {
+    const bool src_effective = src_modes_ && src_incremental_;
+    to_mode_form = false;
+    if (axes_.empty()) return dependent(view) ? std::optional<bool>(src_effective) : std::nullopt;
+    bool any_inc = false, all_inc = true, any_mode_form = false;
     for (const AxisMeaning& a : axes_) {
         any_inc = any_inc || a.incremental;
         all_inc = all_inc && a.incremental;
         any_mode_form = any_mode_form || (a.incremental && !a.letter_form);
     }
-    std::optional<bool> want;   // the target mode the block needs
-    bool to_mode_form = false;  // write the letter-form increments as G91 X/Z
-    if (profile) {
-        // The profile is read in the cycle block's mode: its increments stay letters.
+    const bool letters_must_go = (!src_modes_ && options_.incremental == IncrementalStyle::g91) || !letters_exist();
+    if (!any_inc) return false;
+    if (all_inc && (letters_must_go || any_mode_form)) {
+        to_mode_form = letters_must_go;   // G91 X/Z (a source's own G91 words stay as they are)
+        return true;
+    }
+    if (!all_inc) return false;   // mixed: the increments stay letters, the rest reads absolute
+    return dependent(view) ? std::optional<bool>(src_effective) : std::nullopt;   // letters read alike in either mode
+}
+
+void Converter::convert_distance(std::uint32_t b, const ast::BlockView& view, std::uint32_t first, std::span<const Token> tokens,
+                                 bool lower) {
+    const std::optional<std::uint32_t> mode_token = read_axis_meanings(view, first, tokens);
+    if (!tgt_modes_) {   // system A: no G90/G91, increments are letters
+        for (const ast::CodeRef& c : g_)
+            if (c.info && codes_(*c.info).action == CodeAction::distance_mode) remove_token(c.token);
+        for (const AxisMeaning& a : axes_) write_axis(a, true);
+        return;
+    }
+    if (flags_[b] & kProfile) {   // read in the cycle block's mode: its increments stay letters
         for (const AxisMeaning& a : axes_) write_axis(a, true);
         if (mode_token) map_mode_token(*mode_token, src_incremental_);
         return;
     }
-    const bool src_effective = src_modes_ && src_incremental_;
-    if (!axes_.empty()) {
-        const bool letters_must_go = (!src_modes_ && options_.incremental == IncrementalStyle::g91) || !letters_exist();
-        if (!any_inc) {
-            want = false;
-        } else if (all_inc && (letters_must_go || any_mode_form)) {
-            want = true;   // G91 X/Z (a source's own G91 words stay as they are)
-            to_mode_form = letters_must_go;
-        } else if (!all_inc) {
-            want = false;   // mixed: the increments stay letters, the rest reads absolute
-        } else if (dependent(view)) {
-            want = src_effective;   // letters only: they read the same in either mode
-        }
-    } else if (dependent(view)) {
-        want = src_effective;
-    }
+    bool to_mode_form = false;
+    const std::optional<bool> want = wanted_mode(view, to_mode_form);
     for (const AxisMeaning& a : axes_) {
         if (to_mode_form && a.letter_form) rename_letter(a, a.axis);
         else write_axis(a, false);
@@ -141,11 +146,8 @@ void Converter::convert_distance(std::uint32_t b, const ast::BlockView& view, st
         }
         return;
     }
-    if (mode_token) {
-        map_mode_token(*mode_token, *want);
-    } else if (tgt_incremental_ != *want) {
-        insert_mode(first, tokens, *want, lower);
-    }
+    if (mode_token) map_mode_token(*mode_token, *want);
+    else if (tgt_incremental_ != *want) insert_mode(first, tokens, *want, lower);
     tgt_incremental_ = *want;
 }
 

@@ -183,6 +183,8 @@ private:
     bool data_follows_mode(const ast::BlockView& view) const;
     static bool distance_free(FunctionId f);
     bool dependent(const ast::BlockView& view) const;
+    std::optional<std::uint32_t> read_axis_meanings(const ast::BlockView& view, std::uint32_t first, std::span<const Token> tokens);
+    std::optional<bool> wanted_mode(const ast::BlockView& view, bool& to_mode_form) const;
     void convert_distance(std::uint32_t b, const ast::BlockView& view, std::uint32_t first, std::span<const Token> tokens,
                           bool lower);
     bool letters_exist() const;
@@ -221,6 +223,13 @@ private:
     // local_system: G52 (semantics.md §2.4), B/C return levels into A (cycles.md §10)
     void convert_return_level(const ast::CodeRef& c);
     void convert_local_system(std::uint32_t b, const ast::BlockView& view, const ast::CodeRef& c, const CodeMapping& m);
+    std::vector<std::pair<std::uint32_t, std::size_t>> local_words(const ast::BlockView& view) const;
+    const BlockRun* local_run(std::uint32_t b, const Token& code);
+    void write_cancel_code(const Token& code, const CodeInfo& cancel_code,
+                           const std::vector<std::pair<std::uint32_t, std::size_t>>& words);
+    void write_zero_g52(const Token& code, const CodeInfo& g52, const BlockRun& run);
+    void write_g52_values(const Token& code, const CodeInfo& g52, const ast::CodeRef& c,
+                          const std::vector<std::pair<std::uint32_t, std::size_t>>& words, const BlockRun& run, bool cancel);
 
     // expand.cpp: --expand (a construct replaced by the motion the dry run computes)
     bool try_expand(std::uint32_t b, const ast::BlockView& view);
