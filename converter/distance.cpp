@@ -85,7 +85,7 @@ std::optional<std::uint32_t> Converter::read_axis_meanings(const ast::BlockView&
         const Token& t = tokens[i];
         if (t.kind != TokenKind::word || t.has(ast::token_flags::value_none)) continue;
         const Role r = t.role();
-        const char inc_axis = from_.lexical.incremental_axis_of(t.letter);
+        const char inc_axis = incremental_axis(src_incremental_axis_, t.letter);
         if (r == Role::axis_incremental) {
             axes_.push_back({first + i, inc_axis, true, true});
         } else if (r == Role::axis_absolute || (r == Role::parameter && data_mode && (from_.lexical.is_axis(t.letter) || inc_axis))) {
@@ -168,7 +168,7 @@ char Converter::target_letter(char axis) const {
 void Converter::write_axis(const AxisMeaning& a, bool letters_only) {
     const Token& t = tree_.tokens[a.token];
     if (!a.incremental) return;
-    if (a.letter_form && to_.lexical.incremental_axis_of(t.letter) == a.axis) return;   // U stays U
+    if (a.letter_form && incremental_axis(tgt_incremental_axis_, t.letter) == a.axis) return;   // U stays U
     if (!a.letter_form && !letters_only) return;   // G91 X stays X under G91
     const char letter = target_letter(a.axis);
     if (!letter) {

@@ -8,9 +8,11 @@ namespace kerf::converter::detail {
 
 void Converter::prepare() {
     flags_.assign(tree_.block_count(), 0);
+    const bool return_levels = needs_return_level_pass();
     for (const ast::Program& p : file_.programs()) {
-        mark_profiles(p);
-        if (needs_return_level_pass()) scan_return_levels(p);
+        // Only a source with U/W/H letters into a target with G90/G91 treats a profile apart.
+        if (!from_.lexical.incremental_letters.empty() && tgt_modes_) mark_profiles(p);
+        if (return_levels) scan_return_levels(p);
     }
     prepare_run();
 }

@@ -27,9 +27,14 @@ bool Converter::unconverted_motion() const {
 void Converter::convert_parameters(const ast::BlockView& view, std::uint32_t first, std::span<const Token> tokens) {
     if (unconverted_motion() || repeats_construct(view)) return;
     const CodeInfo* drill = nullptr;
-    for (const CodeInfo* c : infos_)
+    bool cycle = false;   // only a cycle's words can be missing from the target's code
+    for (const CodeInfo* c : infos_) {
         if (c && is_drilling_cycle(c->function)) drill = c;
+        cycle = cycle || (c && c->has(dialects::traits::cycle));
+    }
     const CodeInfo* drill_target = drill ? mapped(*drill) : nullptr;
+    // What a parameter reads as matters only where the two readings differ (most pairs: never).
+    const bool units = lengths_differ_ || rf_.dwell_p_seconds != rt_.dwell_p_seconds;
     for (std::uint32_t i = 0; i < tokens.size(); ++i) {
         const Token& t = tokens[i];
         if (t.kind == TokenKind::comma_word) {
@@ -45,14 +50,14 @@ void Converter::convert_parameters(const ast::BlockView& view, std::uint32_t fir
             continue;
         }
         if (is_axis_role(r)) {
-            rewrite_reading(t, WordUnit::length);
+            if (lengths_differ_) rewrite_reading(t, WordUnit::length);
             continue;
         }
         if (r != Role::parameter) continue;
         const std::size_t reports = out_.reports.size();
         if (drill && drill_target) rename_drill_letter(t, *drill, *drill_target);
-        else check_taken(t);
-        if (out_.reports.size() != reports) continue;   // reported: left as written
+        else if (cycle) check_taken(t);
+        if (out_.reports.size() != reports || !units) continue;   // reported: left as written
         const WordUnit unit = parameter_unit(t.letter, infos_);
         if (unit == WordUnit::length) rewrite_reading(t, unit);
         if (unit == WordUnit::dwell) rewrite_dwell(t);

@@ -17,6 +17,10 @@ Converter::Converter(const ast::TypedFile& file, const dialects::Dialect& to, co
     tgt_power_incremental_ = power_on(to_, fn::incremental_programming);
     lengths_differ_ = rf_.calculator_decimal != rt_.calculator_decimal || rf_.increment_digits != rt_.increment_digits;
     line_ending_ = detect_line_ending(tree_.text);
+    for (const auto& [letter, axis] : from_.lexical.incremental_letters)
+        if (letter >= 'A' && letter <= 'Z') src_incremental_axis_[static_cast<std::size_t>(letter - 'A')] = axis;
+    for (const auto& [letter, axis] : to_.lexical.incremental_letters)
+        if (letter >= 'A' && letter <= 'Z') tgt_incremental_axis_[static_cast<std::size_t>(letter - 'A')] = axis;
 }
 
 Conversion Converter::run() {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -76,6 +77,12 @@ private:
     const CodeInfo* power_on_motion_ = nullptr;   // the source's power-on G00 where the target has none
     bool src_power_incremental_ = false, tgt_power_incremental_ = false;
     bool lengths_differ_ = false;
+    // The axis each letter moves incrementally (U → X), per dialect: lexical.incremental_axis_of
+    // is a map lookup, and the pass asks for every word.
+    std::array<char, 26> src_incremental_axis_{}, tgt_incremental_axis_{};
+    char incremental_axis(const std::array<char, 26>& table, char letter) const {
+        return letter >= 'A' && letter <= 'Z' ? table[static_cast<std::size_t>(letter - 'A')] : 0;
+    }
 
     // Facts gathered before the pass.
     std::vector<std::uint8_t> flags_;                    // per block: BlockFlag
