@@ -8,8 +8,10 @@ Each target converts the files whose source dialect is for the same kind of mach
 the lathe programs, mill targets the mill programs; the source dialect is what `kerf convert`
 resolves: the (DIALECT: ...) header or detection). The results go to a temporary --output-dir.
 Columns: files of that kind; converted cleanly (exit 0 for the file: nothing left as it was, no
-syntax error); with reports; --verify agreeing; --verify differing; constructs left as they were;
-wall time of the whole command.
+syntax error); files whose only reports are syntax errors (converted around them); files with
+constructs left as they were, and how many constructs; --verify agreeing; --verify differing (of
+these, how many converted with nothing left as it was: a difference there would be a converter
+bug); wall time of the whole command.
 """
 import json
 import os
@@ -21,7 +23,8 @@ import time
 LATHE = ["fanuc-lathe-a", "fanuc-lathe-b", "fanuc-lathe-c", "spinner-lathe-a", "spinner-lathe-b", "spinner-lathe-c",
          "adv400-lathe"]
 MILL = ["fanuc-mill", "adv400-mill", "pcnc-mill", "iso-legacy-mill"]
-TARGETS = ["fanuc-lathe-a", "fanuc-lathe-b", "fanuc-lathe-c", "adv400-lathe", "fanuc-mill", "adv400-mill",
+TARGETS = ["fanuc-lathe-a", "fanuc-lathe-b", "fanuc-lathe-c", "spinner-lathe-b", "spinner-lathe-c", "adv400-lathe",
+           "fanuc-mill", "adv400-mill",
            "pcnc-mill", "iso-legacy-mill"]
 
 
@@ -33,7 +36,7 @@ def main():
     kerf = sys.argv[1]
     shared = sys.argv[2] if len(sys.argv) > 2 else os.path.join(os.path.dirname(__file__), "..", "..", "shared")
     sources = [os.path.join(shared, "corpus"), os.path.join(shared, "reference", "examples")]
-    print("| target | source kind | files | clean | with reports | verified | differ | constructs left | wall |")
+    print("| target | source kind | files | clean | syntax errors only | with constructs left (constructs) | verified | differ (of them nothing left) | wall |")
     print("|---|---|---:|---:|---:|---:|---:|---:|---:|")
     for target in TARGETS:
         with tempfile.TemporaryDirectory() as out:
@@ -43,11 +46,17 @@ def main():
             wall = time.time() - start
         doc = json.loads(run.stdout)
         files = [f for f in doc["files"] if kind(f.get("from", "")) == kind(target) and f.get("from") != target]
+        def left(f):
+            return sum(1 for r in f["reports"] if r["kind"] == "not converted")
         clean = sum(1 for f in files if f["clean"])
+        syntax_only = sum(1 for f in files if not f["clean"] and left(f) == 0)
+        with_left = sum(1 for f in files if left(f) > 0)
+        constructs = sum(left(f) for f in files)
         verified = sum(1 for f in files if f.get("verified") is True)
         differ = sum(1 for f in files if f.get("verified") is False)
-        left = sum(1 for f in files for r in f["reports"] if r["kind"] == "not converted")
-        print(f"| {target} | {kind(target)} | {len(files)} | {clean} | {len(files) - clean} | {verified} | {differ} | {left} | {wall:.1f} s |")
+        differ_nothing_left = sum(1 for f in files if f.get("verified") is False and left(f) == 0)
+        print(f"| {target} | {kind(target)} | {len(files)} | {clean} | {syntax_only} | {with_left} ({constructs}) | {verified} | "
+              f"{differ} ({differ_nothing_left}) | {wall:.1f} s |")
 
 
 if __name__ == "__main__":

@@ -229,7 +229,12 @@ int run_convert(const ConvertOptions& o) {
                                  overrides_of(o.from, o.dialect_files, o.machine_file, o.limits));
     ProblemPrinter problems;
     if (!check_target(workspace, o, problems)) return kExitUsage;
-    if (o.paths.size() == 1 && o.paths.front() == "-") return run_stdin(o, workspace, problems);
+    const bool stdin_path = std::find(o.paths.begin(), o.paths.end(), "-") != o.paths.end();
+    if (stdin_path && (o.paths.size() > 1 || o.write || !o.output_dir.empty())) {
+        std::cerr << "kerf: - (standard input) is converted alone, to standard output or -o OUT\n";
+        return kExitUsage;
+    }
+    if (stdin_path) return run_stdin(o, workspace, problems);
     // Folders are walked as `kerf check` walks them ([check] include/exclude of each .kerf.toml).
     const project::WalkResult sources =
         project::collect_program_files({o.paths.begin(), o.paths.end()}, workspace.files(), workspace.check_selector());

@@ -63,6 +63,10 @@ TEST_CASE("kerf convert -: standard input to standard output") {
     const auto r = run_kerf("convert --from fanuc-lathe-a --to fanuc-lathe-c -", runs(dir), kLatheA);
     CHECK(r.code == 0);
     CHECK(r.out.find("N10 G92 S2000\nN20 G95 G97") != std::string::npos);
+    // --write has no file to write for standard input.
+    const auto w = run_kerf("convert --write --from fanuc-lathe-a --to fanuc-lathe-c -", runs(dir), kLatheA);
+    CHECK(w.code == 2);
+    CHECK(w.err.find("standard input") != std::string::npos);
     fs::remove_all(dir);
     fs::remove_all(runs(dir));
 }
