@@ -59,7 +59,7 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
     std::vector<ast::CodeRef> g, m;
     const std::vector<ast::Program>& programs = ctx.typed.programs();
     for (std::size_t p = 0; p < programs.size(); ++p) {
-        ModalState modal(ctx.dialect);
+        ModalState modal(ctx.dialect, ctx.setup.power_on);
         for (StaticRun& c : checks) c.check->begin_program(ctx, p, c.out);
         for (std::uint32_t b = programs[p].first_block; b < programs[p].end_block; ++b) {
             if (cancel && (b & 4095) == 0 && cancel->load(std::memory_order_relaxed)) return;
@@ -147,11 +147,11 @@ bool needs_run(const ActiveRules& rules) {
 bool run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                  const interpreter::Setup& setup, const Registry& registry, const ActiveRules& rules,
                  const CheckOptions& check, Tallies& tallies, std::vector<Finding>& out, const DryRunHooks& hooks = {}) {
-    const std::optional<interpreter::ProgramRef> main = programs.first_program(file);
+    const std::optional<interpreter::ProgramRef> main = check.main ? check.main : programs.first_program(file);
     if (!main || (!needs_run(rules) && !hooks.observer)) return true;
     const RunContext run{programs, file, dialect, setup};
     FanOut sink(run, registry, rules, tallies, out, hooks);
-    interpreter::RunOptions options;
+    interpreter::RunOptions options = check.run;
     options.lenient = true;   // syntax defects are the syntax rules' findings; go on and check the rest
     options.time_limit = check.time_limit;
     options.emit_state = hooks.emit_state;
@@ -348,7 +348,7 @@ std::vector<Finding> check_text(std::string name, std::string text, const dialec
     return check_file(programs, file, dialect, setup, options);
 }
 
-ModalState::ModalState(const dialects::Dialect& dialect) {
+ModalState::ModalState(const dialects::Dialect& dialect, const std::vector<dialects::FunctionId>& power_on) {
     for (const dialects::CodeInfo& c : dialect.codes()) {
         if (!modal_code(c)) continue;
         const auto slot = std::find_if(slots_.begin(), slots_.end(), [&](const Slot& s) { return s.first == c.group; });
@@ -356,6 +356,13 @@ ModalState::ModalState(const dialects::Dialect& dialect) {
         if (slot == slots_.end()) slots_.emplace_back(c.group, active);
         else if (active) slot->second = active;
     }
+    for (const dialects::FunctionId function : power_on)
+        for (const dialects::CodeInfo* c : dialect.codes_with_function(function))
+            if (modal_code(*c)) set(*c);
+}
+
+bool ModalState::has_trait(std::uint32_t trait) const {
+    return std::any_of(slots_.begin(), slots_.end(), [&](const Slot& s) { return s.second && s.second->has(trait); });
 }
 
 void ModalState::set(const dialects::CodeInfo& code) {

@@ -14,6 +14,7 @@
 #include "analyzer/config.hpp"
 #include "analyzer/finding.hpp"
 #include "analyzer/registry.hpp"
+#include "interpreter/interpreter.hpp"
 #include "interpreter/program_set.hpp"
 #include "interpreter/setup.hpp"
 #include "interpreter/sink.hpp"
@@ -33,6 +34,11 @@ struct CheckOptions {
     // severity info (0 = all). Bounds the output and the memory whatever the file.
     std::size_t max_findings_per_rule = 100;
     std::chrono::milliseconds time_limit{0};   // of the dry run (interpreter RunOptions::time_limit)
+    // How the dry run starts (project/start.hpp): its passes and preset variables (the analyzer
+    // sets lenient, time_limit and emit_state), and the main program when it is not the file's
+    // first (a caller's block: a macro run as it is used).
+    interpreter::RunOptions run;
+    std::optional<interpreter::ProgramRef> main;
 };
 
 // Checks file `file` of `programs` (its first program is run as the main program).

@@ -102,7 +102,10 @@ private:
 class ModalState {
 public:
     using Slot = std::pair<std::string_view, const dialects::CodeInfo*>;   // group, active code (or none)
-    explicit ModalState(const dialects::Dialect& dialect);
+    // The power-on state: the dialect table's defaults, then the machine's power-on switches
+    // (interpreter Setup::power_on), as the dry run starts.
+    explicit ModalState(const dialects::Dialect& dialect, const std::vector<dialects::FunctionId>& power_on = {});
+    bool has_trait(std::uint32_t trait) const;   // an active code has it (dialects::traits::inch ...)
     void set(const dialects::CodeInfo& code);   // `code` becomes the active code of its group
     std::vector<Slot>::const_iterator begin() const { return slots_.begin(); }
     std::vector<Slot>::const_iterator end() const { return slots_.end(); }

@@ -49,6 +49,7 @@ inline constexpr std::uint32_t threading = 1u << 21;        // cuts a thread (a 
 inline constexpr std::uint32_t peck = 1u << 22;             // Q is the depth of one peck, more than 0
 inline constexpr std::uint32_t radius_comp_on = 1u << 23;   // G41/G42: the tool left or right of the path
 inline constexpr std::uint32_t not_in_plane_transform = 1u << 24;   // [FANUC] not allowed in G112/G107 mode (reference returns, G53, G50/G92, G52, threads, planes)
+inline constexpr std::uint32_t after_motion = 1u << 25;     // an M code that acts after the block's motion (semantics.md §1.2 step 9: M5, M9, M0, M1, M2, M30, M98, M99); the others act before it (step 3)
 }  // namespace traits
 
 enum class PlaneTrait : std::uint8_t { none, xy, zx, yz };
@@ -115,7 +116,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"coolant-high-pressure-on", 'M', 0, "High-pressure coolant on"},
     {"coolant-high-pressure-valve", 'M', 0, "High-pressure coolant valve"},
     {"coolant-mist-on", 'M', 0, "Coolant 2 / mist on"},
-    {"coolant-off", 'M', 0, "Coolant off (all)"},
+    {"coolant-off", 'M', traits::after_motion, "Coolant off (all)"},
     {"coolant-on", 'M', 0, "Coolant (1) on"},
     {"coolant-over-main-spindle-off", 'M', 0, "Coolant over the main spindle off"},
     {"coolant-over-main-spindle-on", 'M', 0, "Coolant over the main spindle on"},
@@ -163,8 +164,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"live-tool-cw", 'M', 0, "Live tool clockwise (SPINNER M23; thread-exit meaning in §9.1)"},
     {"live-tool-rigid-tapping", 'G', traits::cycle, "SPINNER G384: rigid tapping with a live tool (repeat G384 in every hole block)"},
     {"live-tool-rigid-tapping-cancel", 'G', traits::cycle, "SPINNER G380: cancel G384"},
-    {"live-tool-stop", 'M', 0, "Live tool stop"},
-    {"local-subprogram-call", 'M', 0, "[Haas] M97 P: call a label of this program as a local subroutine (references/references.hpp)"},
+    {"live-tool-stop", 'M', traits::after_motion, "Live tool stop"},
+    {"local-subprogram-call", 'M', traits::after_motion, "[Haas] M97 P: call a label of this program as a local subroutine (references/references.hpp)"},
     {"local-system-cancel", 'G', 0, "Cancel the local coordinate system (pcnc-mill G152)"},
     {"local-system-current-point", 'G', traits::not_in_plane_transform, "Local coordinate system placed so that the current tool point takes the programmed values"},
     {"local-system-shift", 'G', traits::not_in_plane_transform, "FANUC local coordinate system: origin shifted by the programmed vector"},
@@ -183,7 +184,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"modal-macro-call", 'G', traits::takes_arguments, "Modal custom macro call (after every move)"},
     {"modal-macro-call-cancel", 'G', 0, "Modal macro call cancel"},
     {"multiple-threading-cycle", 'G', traits::cycle | traits::threading, "Multi-pass threading cycle (two blocks)"},
-    {"optional-stop", 'M', 0, "Optional stop"},
+    {"optional-stop", 'M', traits::after_motion, "Optional stop"},
     {"part-counter", 'M', 0, "Part counter"},
     {"part-off-control", 'M', 0, "Part-off control"},
     {"parts-catcher-cycle", 'M', traits::cycle, "Parts-catcher cycle"},
@@ -204,9 +205,9 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"position-offset-double-decrease", 'G', traits::position_offset, "One-block position offset: move decreased by 2·D", -2},
     {"position-offset-double-increase", 'G', traits::position_offset, "One-block position offset: move increased by 2·D", 2},
     {"position-offset-increase", 'G', traits::position_offset, "One-block position offset: move increased by D", 1},
-    {"program-end", 'M', 0, "End of program (no rewind)"},
-    {"program-end-rewind", 'M', 0, "End of program and rewind"},
-    {"program-stop", 'M', 0, "Program stop"},
+    {"program-end", 'M', traits::after_motion, "End of program (no rewind)"},
+    {"program-end-rewind", 'M', traits::after_motion, "End of program and rewind"},
+    {"program-stop", 'M', traits::after_motion, "Program stop"},
     {"programmable-data-input", 'G', 0, "Programmable data input: offsets, work shift (G10 P0), parameters"},
     {"programmable-data-input-cancel", 'G', 0, "End of programmable data input mode"},
     {"radius-comp-cancel", 'G', traits::radius_comp, "Tool nose / cutter radius compensation cancel"},
@@ -248,13 +249,13 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"spindle-rigid-tapping-cycle", 'M', traits::cycle, "SPINNER M329: rigid tapping cycle with the work spindle"},
     {"spindle-speed-detect-off", 'G', 0, "ADV400 spindle speed detection off (no wait for the spindle)"},
     {"spindle-speed-detect-on", 'G', 0, "ADV400 spindle speed detection on (next block waits until the spindle is at speed)"},
-    {"spindle-stop", 'M', 0, "Spindle stop"},
+    {"spindle-stop", 'M', traits::after_motion, "Spindle stop"},
     {"spindle-sync-off", 'M', 0, "Synchronisation off"},
     {"spindle-sync-on", 'M', 0, "Main/sub-spindle speed synchronisation on"},
     {"stroke-check-off", 'G', 0, "Stored stroke check off"},
     {"stroke-check-on", 'G', 0, "Stored stroke check on"},
-    {"subprogram-call", 'M', traits::calls_subprogram, "Subprogram call"},
-    {"subprogram-return", 'M', 0, "End of subprogram / return"},
+    {"subprogram-call", 'M', traits::calls_subprogram | traits::after_motion, "Subprogram call"},
+    {"subprogram-return", 'M', traits::after_motion, "End of subprogram / return"},
     {"subspindle-air-off", 'M', 0, "Sub-spindle air off"},
     {"subspindle-air-on", 'M', 0, "Sub-spindle air on"},
     {"subspindle-brake-low-on", 'M', 0, "Sub-spindle brake with reduced force on"},
@@ -267,7 +268,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"subspindle-cw", 'M', 0, "Sub-spindle clockwise"},
     {"subspindle-jaw-blow", 'M', 0, "Sub-spindle jaw blowing"},
     {"subspindle-orientation", 'M', 0, "Sub-spindle orientation"},
-    {"subspindle-stop", 'M', 0, "Sub-spindle stop"},
+    {"subspindle-stop", 'M', traits::after_motion, "Sub-spindle stop"},
     {"subspindle-winding-auto", 'M', 0, "Sub-spindle star/delta automatic"},
     {"subspindle-winding-delta", 'M', 0, "Sub-spindle delta winding"},
     {"subspindle-winding-star", 'M', 0, "Sub-spindle star winding"},
@@ -488,5 +489,6 @@ inline constexpr FunctionId exact_stop_mode = FunctionId::known("exact-stop-mode
 inline constexpr FunctionId continuous_cutting_mode = FunctionId::known("continuous-cutting-mode");
 inline constexpr FunctionId axis_homing = FunctionId::known("axis-homing");                     // ADV400 G74 (cycles.md §11.4)
 // G54–G59 are work-coordinate-1 ... -6: read FunctionDef::work_coordinate, not the id.
+inline constexpr FunctionId work_coordinate_additional = FunctionId::known("work-coordinate-additional");   // G54.1 Pn
 
 }  // namespace kerf::dialects::functions

@@ -46,12 +46,17 @@ const char* to_string(EventKind k) {
 Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const Setup& setup, EventSink& sink,
                    const RunOptions& options)
     : programs_(programs), dialect_(dialect), setup_(setup), sink_(sink), options_(options),
-      guard_(setup.step_limit, setup.move_limit, options.time_limit), work_offsets_(setup.work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
+      guard_(setup.step_limit, setup.move_limit, options.time_limit), work_offsets_(setup.work_offsets),
+      additional_offsets_(setup.additional_work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
       tools_(setup.tools) {
     // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
     modal_.assign(dialect_.groups().size(), nullptr);
     for (const dialects::CodeInfo& c : dialect_.codes())
         if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group_index] = &c;
+    // The machine's power-on switches over the table (machine/SCHEMA.md "Power-on state").
+    for (const dialects::FunctionId function : setup_.power_on)
+        for (const dialects::CodeInfo* c : dialect_.codes_with_function(function))
+            if (c->letter == 'G' && !c->group.empty() && c->group != "00") modal_[c->group_index] = c;
     update_flags();
     for (const SoftLimit& limit : setup_.soft_limits) any_soft_limit_ |= limit.min.has_value() || limit.max.has_value();
     for (char letter = 'A'; letter <= 'Z'; ++letter) {
@@ -152,8 +157,9 @@ void Executor::emit(Event&& e) {
         if (auto limit = guard_.move()) return limit_alarm(e.source, e.start, std::move(*limit));
     }
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
-    const Position offset = machine_offset();
-    for (std::size_t a = 0; a < kAxisCount; ++a) e.machine_end[a] = e.end[a] * axis_scale(a) + offset[a];
+    e.inch = flags_.inch;
+    e.machine_end = machine_position_of(e.end);
+    if (motion) machine_at_ = e.machine_end;
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;
     if (e.time_s > 0) {
@@ -166,6 +172,13 @@ void Executor::emit(Event&& e) {
     sink_.on_event(e);
     if (stopped_ || e.kind == EventKind::alarm) return;
     if (auto limit = guard_.tick()) limit_alarm(e.source, position_, std::move(*limit));
+}
+
+Position Executor::machine_position_of(const Position& work) const {
+    const Position offset = machine_offset();
+    Position m{};
+    for (std::size_t a = 0; a < kAxisCount; ++a) m[a] = work[a] * axis_scale(a) + offset[a];
+    return m;
 }
 
 void Executor::limit_alarm(const SourceRef& where, const Position& at, LimitAlarm limit) {
@@ -212,10 +225,12 @@ RunResult Executor::run(ProgramRef main) {
     first.program = main;
     first.block = program_of(first).first_block;
     frames_.push_back(first);
+    for (const auto& [number, value] : options_.preset) variables_.write(number, macro::Value::of(value));
     // The machine has been homed: the program starts at reference point 1 (semantics.md §2.8).
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a)
         position_[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
+    machine_at_ = machine_position_of(position_);
     while (!frames_.empty() && !stopped_) {
         Frame& f = frames_.back();
         if (!file_of(f).in_program(f.program.program, f.block)) {
@@ -237,6 +252,7 @@ RunResult Executor::run(ProgramRef main) {
         execute_block(f);
     }
     result_.final_position = position_;
+    result_.inch = flags_.inch;
     return result_;
 }
 
@@ -290,6 +306,12 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     remember_words(view, words);
     apply_feed_speed_tool(view, words);
     apply_modal_codes(view);
+    // M codes that act before motion (M03, M08, clamps ...) start the spindle for the block's own
+    // cut: `G99 G01 Z-5. F0.2 S800 M03` cuts with the spindle turning (semantics.md §1.2 step 3).
+    // They run after the block's modal codes (step 4) so that `G96 S200 M03` starts at the surface
+    // speed: nothing an M code of step 3 does depends on the other modes.
+    apply_m_codes(frame, view, words, MPhase::before_motion);
+    if (stopped_) return false;
     if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
     if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
@@ -301,7 +323,7 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     const bool moved = !frame_only && apply_motion(view, words);
     if (stopped_) return moved;
     apply_dwell(view, words);
-    apply_m_codes(frame, view, words);   // may end the program: `frame` is gone after M30
+    apply_m_codes(frame, view, words, MPhase::after_motion);   // may end the program: `frame` is gone after M30
     return moved;
 }
 

@@ -2,8 +2,8 @@
 // mills add G43/G44 length (H) on Z"). G43 adds the H register (length + length wear) to the Z
 // machine position, G44 subtracts it, G49 (and H0) cancel; an H word alone changes the register
 // while G43/G44 is in force ([FANUC]). The programmed (work) coordinates stay what they are: the
-// machine position shifts, which the tool takes up with the next Z move, as a lathe T word does
-// (dialects.md §3.5). The block's event says so; its `code` is the H number and `tool` the
+// machine position shifts, which the tool takes up with the next move, as a lathe T word does
+// (dialects.md §3.5), or at once (machine switch length_offset_motion). The block's event says so; its `code` is the H number and `tool` the
 // spindle tool, so a rule can compare them (an H of another tool: analyzer K5019).
 #include <fmt/format.h>
 
@@ -70,6 +70,10 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
                                      code ? code->spelling : std::string(sign > 0 ? "G43" : "G44"), h,
                                      sign > 0 ? "+" : "-", length);
     emit(e);
+    // With the axis-movement reading of the parameter a block without axis words moves Z by the
+    // change at once; else (the default) the next move takes it up (its length counts it: move()).
+    if (setup_.length_offset_at_once && !(words.words.mask() & axis_letters_) && !words.incremental.mask())
+        move(flags_.motion == fn::linear ? EventKind::linear : EventKind::rapid, position_, *frame_, view);
 }
 
 }  // namespace kerf::interpreter

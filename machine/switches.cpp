@@ -182,6 +182,12 @@ std::vector<SwitchDef> make_defs() {
                                     {{"A", CompStartup::type_a}, {"B", CompStartup::type_b}}, false,
                                     "semantics.md §6 ('type A/B (a parameter, default B)')",
                                     "FANUC cutter compensation start-up and cancel type"));
+    d.push_back(choice<LengthOffsetMotion>("length_offset_motion", &S::length_offset_motion,
+                                           {{"next-move", LengthOffsetMotion::next_move},
+                                            {"at-once", LengthOffsetMotion::at_once}},
+                                           false, "semantics.md §7; [FANUC] tool length compensation parameter",
+                                           "G43/G44 H (or G49) in a block without axis words: the axes take the offset up "
+                                           "with the next move, or Z moves by it at once"));
     d.push_back(choice<CompCorners>("cutter_comp_corners", &S::cutter_comp_corners,
                                     {{"intersection", CompCorners::intersection}, {"arc", CompCorners::arc}}, false,
                                     "semantics.md §6",

@@ -96,6 +96,13 @@ Project::Project(Config config, std::vector<Problem> problems, const Overrides& 
     problems_.insert(problems_.end(), loaded.problems.begin(), loaded.problems.end());
     machine_file_ = !overrides.machine.empty() ? overrides.machine : config_.machine.value_or(fs::path{});
     limits_ = resolve_limits(overrides.limits, config_.limits);
+    run_ = config_.run;
+    if (overrides.run.call) {
+        run_.call = overrides.run.call;
+        run_.call_everywhere = overrides.run.call_everywhere;
+    }
+    if (overrides.run.passes) run_.passes = overrides.run.passes;
+    run_.set.insert(run_.set.end(), overrides.run.set.begin(), overrides.run.set.end());
 }
 
 const Project::SetupEntry& Project::setup(const dialects::Dialect& dialect) const {

@@ -1,7 +1,9 @@
 // Number and word-form rules read from the tokens of each block.
 #include <cmath>
+#include <optional>
 
 #include "analyzer/rules/common.hpp"
+#include "dialects/functions.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -13,7 +15,17 @@ bool is_axis(const ast::Token& t) {
     return t.role() == ast::Role::axis_absolute || t.role() == ast::Role::axis_incremental;
 }
 
-// X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm.
+// The unit the block's words are read in: the block's own G20/G21 (C: G70/G71), else the modal one.
+bool inch_block(const BlockContext& b) {
+    std::optional<bool> own;
+    for (const ast::CodeRef& c : b.g)
+        if (c.info && (c.info->function == dialects::functions::inch_input || c.info->function == dialects::functions::metric_input))
+            own = c.info->has(dialects::traits::inch);
+    return own ? *own : b.modal.has_trait(dialects::traits::inch);
+}
+
+// X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm; under
+// G20 0.0010 in (IS-B 0.0001 in); on a rotary axis 0.010°.
 class MissingDecimalPoint : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
@@ -30,10 +42,15 @@ public:
             const double value = b.tree().number_value(t);
             if (value == 0) continue;   // X0 is zero either way
             const std::string_view spelling = b.tree().spelling(t);
+            const char axis = t.role() == ast::Role::axis_incremental ? b.file.dialect.lexical.incremental_axis_of(t.letter) : t.letter;
+            const bool rotary = axis == 'A' || axis == 'B' || axis == 'C' ? b.file.setup.rotary[static_cast<std::size_t>(3 + axis - 'A')] : false;
+            const bool inch = !rotary && inch_block(b);
+            const char* unit = rotary ? "°" : inch ? " in" : " mm";
+            const double increment = rotary ? b.file.setup.increment_deg() : b.file.setup.increment(inch);
             out.report(t.range(),
-                       fmt::format("'{}' has no decimal point: the control reads {} increments = {:g} mm, not {:g} mm",
-                                   spelling, value, value * b.file.setup.increment_mm, value),
-                       fmt::format("write '{}.' if {:g} mm is meant", spelling, value))
+                       fmt::format("'{}' has no decimal point: the control reads {} increments = {:g}{}, not {:g}{}",
+                                   spelling, value, value * increment, unit, value, unit),
+                       fmt::format("write '{}.' if {:g}{} is meant", spelling, value, unit))
                 .notes.push_back("the machine reads integers as least input increments (calculator-type input off)");
         }
     }

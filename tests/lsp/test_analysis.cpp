@@ -17,7 +17,7 @@ namespace {
 const std::string kDefects =
     "O0001\n"                      // 0
     "N10 G00 X0. Y0. X1.\n"        // 1   X0. 8-11, X1. 16-19: duplicate address (K1021)
-    "N20 G01 X10. Y10.\n"          // 2   a feed move without F (K5001), found by the dry run
+    "N20 G01 X10. Y10. F100.\n"    // 2   a cut with no tool selected (K5008), found by the dry run
     "N30 G02 X20. Y0. R1.\n"       // 3   R1. cannot reach X20 (alarm 020, K5014), the dry run again
     "GOTO 10\n"                    // 4   N10 is on two blocks (K3002)
     "N10 M30\n"                    // 5
@@ -47,7 +47,7 @@ TEST_CASE("diagnostics: static findings first, the dry run's after, with codes, 
     const json::array first = c.diagnostics("file:///w/d.nc", 1, "static");
     CHECK(codes(first) == std::vector<std::string>{"K1021", "K3002", "K3007"});
     const json::array all = c.diagnostics("file:///w/d.nc", 1, "complete");
-    CHECK(codes(all) == std::vector<std::string>{"K1021", "K5001", "K5008", "K5014", "K3002", "K3007"});
+    CHECK(codes(all) == std::vector<std::string>{"K1021", "K5008", "K5014", "K3002", "K3007"});
     const auto d = by_code(all);
     const json::object& dup = *d.at("K1021");
     CHECK(span(dup.at("range")) == "1:16-1:19");
@@ -76,7 +76,7 @@ TEST_CASE("diagnostics follow inline suppressions, .kerf.toml [check.rules] and 
     text.replace(text.find("X1.\n"), 4, "X1. (kerf: ignore K1021)\n");
     c.open(folder.uri("d.nc"), text);
     const json::array all = c.diagnostics(folder.uri("d.nc"), 1);
-    CHECK(codes(all) == std::vector<std::string>{"K5001", "K5008", "K3002"});   // K1021 ignored, K3007 off, K5014 in the baseline
+    CHECK(codes(all) == std::vector<std::string>{"K5008", "K3002"});   // K1021 ignored, K3007 off, K5014 in the baseline
     CHECK(by_code(all).at("K3002")->at("severity").as_int64() == 1);            // raised to error
 }
 
