@@ -81,6 +81,9 @@ Reading reading_of(const dialects::Dialect&, const interpreter::Setup& s) {
     Reading r;
     r.calculator_decimal = s.calculator_decimal;
     r.increment_digits = s.increment_mm < 0.0005 ? 4 : 3;
+    r.rotary.clear();
+    for (std::size_t a = 0; a < interpreter::kAxisCount; ++a)
+        if (s.rotary[a] && s.axis_order.find(interpreter::kAxisLetters[a]) != std::string::npos) r.rotary += interpreter::kAxisLetters[a];
     r.dwell_p_seconds = s.dwell_p_in_seconds;
     r.g52 = !s.g52_current_point ? LocalSystem::vector_shift
                                  : (s.g52_zeros_cancel ? LocalSystem::current_point : LocalSystem::current_point_g152);

@@ -41,7 +41,9 @@ enum class LocalSystem { vector_shift, current_point, current_point_g152 };
 // are the dialect's (`reading_of(dialect)`); the CLI takes them from the resolved Setups.
 struct Reading {
     bool calculator_decimal = false;   // an integer length word is mm (true) or least increments
-    int increment_digits = 3;          // decimal places of one increment: 3 (IS-B) or 4 (IS-C)
+    int increment_digits = 3;          // decimal places of one increment in mm (and degrees): 3 (IS-B) or 4 (IS-C);
+                                       // inch input reads one more (0.0001 in on IS-B, [FANUC] least input increment)
+    std::string rotary = "AC";         // axis letters read in degrees (their increment is the mm one under inch too)
     bool dwell_p_seconds = false;      // G04 P (and a cycle's dwell P) in seconds, else ms
     LocalSystem g52 = LocalSystem::vector_shift;
     bool g54_cancels_g52 = false;      // selecting G54–G59 cancels the local system (pcnc-mill)

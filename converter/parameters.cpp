@@ -110,7 +110,10 @@ void Converter::rewrite_reading(const Token& t, WordUnit) {
     if (!lengths_differ_ || !t.is_number() || t.has(ast::token_flags::has_point)) return;
     auto d = parse_decimal(tree_.value_spelling(t));
     if (!d) return;
-    if (!rf_.calculator_decimal) d = shifted(*d, -rf_.increment_digits);
+    // The source's increment (interpreter/executor_words.cpp increment()): one more digit under
+    // inch input, but for a rotary axis (degrees).
+    const bool rotary = rf_.rotary.find(t.letter) != std::string::npos;
+    if (!rf_.calculator_decimal) d = shifted(*d, -(rf_.increment_digits + (inch_ && !rotary ? 1 : 0)));
     Rewrite& r = rewrite(token_index(t));
     if (!r.value_fixed) r.value = with_point(*d);
 }

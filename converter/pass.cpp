@@ -58,6 +58,7 @@ void Converter::reset_program_state(std::size_t b) {
     tgt_incremental_ = tgt_power_incremental_;
     motion_ = nullptr;
     feed_per_rev_ = power_on(from_, fn::feed_per_revolution);
+    inch_ = power_on(from_, fn::inch_input);
     plane_ = from_.machine == dialects::MachineKind::lathe ? dialects::PlaneTrait::zx : dialects::PlaneTrait::xy;
     for (const CodeInfo& c : from_.codes())
         if (c.power_on_default && c.plane() != dialects::PlaneTrait::none) plane_ = c.plane();
@@ -107,6 +108,11 @@ void Converter::convert_code_block(std::uint32_t b, const ast::BlockView& view, 
     write_power_on(view, tokens, lower);
     report_no_motion_mode(view, group01, tokens, lower);
     convert_distance(b, view, first, tokens, lower);
+    // G20/G21 act before the block's words are read (semantics.md §1.2): the increments of G20 X100.
+    for (const ast::CodeRef& c : g_) {
+        if (c.info && c.info->function == fn::inch_input) inch_ = true;
+        if (c.info && c.info->function == fn::metric_input) inch_ = false;
+    }
     convert_parameters(view, first, tokens);
     convert_call(view);
     check_macro(view, tokens);

@@ -97,6 +97,7 @@ private:
     const CodeInfo* motion_ = nullptr;                  // the source's modal group-01 code
     std::uint32_t motion_at_ = 0;   // where the modal group-01 code is written (its line when reported)
     bool feed_per_rev_ = false;
+    bool inch_ = false;                                 // the source's G20 (inch input): its increments are 0.0001 in
     dialects::PlaneTrait plane_ = dialects::PlaneTrait::xy;
     bool compensating_ = false;
     bool transformed_ = false;
