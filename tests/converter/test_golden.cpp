@@ -30,6 +30,24 @@ std::string describe(const std::string& text, const converter::Report& r) {
            r.construct;
 }
 
+// The built-in dialects and the case's `dialect_file`s (user dialects in tests/golden/convert/dialects).
+dialects::Registry registry_of(const std::string& toml, const fs::path& dir) {
+    dialects::Registry r = dialects::builtin_registry();
+    for (const std::string& file : test::golden_values(toml, "dialect_file")) {
+        const auto errors = r.add_text(test::read_text(dir / "dialects" / file), file);
+        INFO(file << ": " << (errors.empty() ? std::string() : errors.front().message));
+        REQUIRE(errors.empty());
+    }
+    return r;
+}
+
+const dialects::Dialect& find(const dialects::Registry& r, const std::string& id) {
+    const dialects::Dialect* d = r.find(id);
+    INFO("dialect " << id);
+    REQUIRE(d != nullptr);
+    return *d;
+}
+
 converter::Options options_of(const std::string& toml) {
     converter::Options o;
     if (test::golden_value(toml, "incremental") == "letters") o.incremental = converter::IncrementalStyle::letters;
@@ -49,8 +67,9 @@ TEST_CASE("golden convert pairs: every rename, word rule and reported construct"
         INFO(name);
         const std::string toml = test::read_text(fs::path(input).replace_extension(".toml"));
         REQUIRE_FALSE(toml.empty());
-        const dialects::Dialect& from = test::dialect(test::golden_value(toml, "from"));
-        const dialects::Dialect& to = test::dialect(test::golden_value(toml, "to"));
+        const dialects::Registry registry = registry_of(toml, dir);
+        const dialects::Dialect& from = find(registry, test::golden_value(toml, "from"));
+        const dialects::Dialect& to = find(registry, test::golden_value(toml, "to"));
         const std::string text = test::read_text(input);
         const std::string expected = test::read_text(fs::path(input).replace_extension(".expected"));
         const test::Converted out = test::convert_text(text, from, to, options_of(toml));
