@@ -56,8 +56,15 @@ bool Converter::distance_free(FunctionId f) {
 }
 
 bool Converter::dependent(const ast::BlockView& view) const {
-    for (const ast::CodeRef& c : g_)
-        if (!c.info || !distance_free(c.info->function)) return true;
+    for (const ast::CodeRef& c : g_) {
+        if (!c.info || distance_free(c.info->function)) {
+            if (!c.info) return true;
+            continue;
+        }
+        // G50/G92 S alone is the spindle clamp: no position in it (semantics.md §4.1).
+        if (c.info->function == fn::coordinate_system_setting && axes_.empty()) continue;
+        return true;
+    }
     for (const ast::CodeRef& c : m_) {
         if (!c.info) continue;
         const FunctionId f = c.info->function;
