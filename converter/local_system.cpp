@@ -23,7 +23,7 @@ void Converter::convert_return_level(const ast::CodeRef& c) {
         return;
     }
     report_token(t, ReportKind::unconverted,
-                 fmt::format("{} (return to the R level) has no equivalent in {}: {}; left as it is{}", c.info->spelling,
+                 fmt::format("{} (return to the R level) has no equivalent in {}: {}; left as it is{}", spelling(t),
                              to_.id, it->second, hazard(t.letter, c.key)));
 }
 

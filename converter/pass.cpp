@@ -156,7 +156,7 @@ void Converter::convert_code(std::uint32_t b, const ast::BlockView& view, const 
         return;
     }
     report_token(t, ReportKind::unconverted,
-                 fmt::format("{} ({}) has no equivalent in {}: left as it is{}", c.info->spelling, c.info->function,
+                 fmt::format("{} ({}) has no equivalent in {}: left as it is{}", spelling(t), c.info->function,
                              to_.id, hazard(t.letter, c.key)));
     if (moves(*c.info)) expandable_candidates_.insert(b);
 }
