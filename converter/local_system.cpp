@@ -133,4 +133,56 @@ void Converter::write_g52_values(const Token& code, const CodeInfo& g52, const a
                                  to_.id));
 }
 
+// G54–G59 with a local system in force: pcnc-mill's selection cancels it, FANUC's and ADV400's keep
+// it (semantics.md §2.4). Into a reading that keeps it, a zero G52 goes on a line before the block;
+// into one that cancels it, a G52 after the block puts it back (the current point takes where the
+// tool stands in it), unless the block also moves: then it moves in the shifted system in one
+// reading and not the other, which one block cannot say (reported).
+void Converter::convert_work_select(std::uint32_t b, const ast::BlockView& view) {
+    const BlockRun* run = run_ ? run_->block(b) : nullptr;
+    if (!run) return;   // never ran: no local system to worry about there
+    std::string axes;
+    for (std::size_t a = 0; a < 3; ++a)
+        if (std::fabs(run->local_before[a]) > 1e-9 && to_.lexical.is_axis(interpreter::kAxisLetters[a])) axes += interpreter::kAxisLetters[a];
+    if (axes.empty()) return;
+    const CodeInfo* g52 = codes_.target_code(to_.codes_with_function(fn::local_system_shift).empty() ? fn::local_system_current_point
+                                                                                                     : fn::local_system_shift);
+    if (!g52) return;
+    const ast::Range range = view.range();
+    if (rf_.g54_cancels_g52) {
+        std::string line = g52->spelling;
+        for (const char a : axes) line += fmt::format(" {}0", a);
+        edit(range.begin, range.begin, line + line_ending_);
+        report(range, ReportKind::note,
+               block_text(view), fmt::format("{} selecting a work system cancels the local system, {} not: a zero {} "
+                                             "before it (semantics.md §2.4)", from_.id, to_.id, g52->spelling));
+        return;
+    }
+    if (!axes_in(view)) {
+        std::string line = line_ending_ + g52->spelling;
+        for (const char a : axes) {
+            const auto i = static_cast<std::size_t>(a - 'X');
+            line += fmt::format(" {}{}", a, format_value(run->after[i], rt_.increment_digits));
+        }
+        std::uint32_t end = range.end;
+        while (end > range.begin && (tree_.text[end - 1] == '\n' || tree_.text[end - 1] == '\r')) --end;
+        edit(end, end, line);
+        report(range, ReportKind::note, block_text(view),
+               fmt::format("{} keeps the local system over a work-system selection, {} cancels it: a {} after the "
+                           "block puts it back (semantics.md §2.4)",
+                           from_.id, to_.id, g52->spelling));
+        return;
+    }
+    report(range, ReportKind::unconverted, block_text(view),
+           fmt::format("this block selects a work system and moves with a local system in force: {} keeps it, {} "
+                       "cancels it first (semantics.md §2.4); left as it is",
+                       from_.id, to_.id));
+}
+
+bool Converter::axes_in(const ast::BlockView& view) const {
+    for (const Token& t : view.tokens())
+        if (t.kind == TokenKind::word && is_axis_role(t.role())) return true;
+    return false;
+}
+
 }  // namespace kerf::converter::detail

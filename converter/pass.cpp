@@ -136,6 +136,7 @@ void Converter::convert_code(std::uint32_t b, const ast::BlockView& view, const 
         return;
     }
     const CodeMapping& m = codes_(*c.info);
+    if (c.info->work_coordinate() != 0 && rf_.g54_cancels_g52 != rt_.g54_cancels_g52) convert_work_select(b, view);
     switch (m.action) {
     case CodeAction::keep: return;
     case CodeAction::rename:

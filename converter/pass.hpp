@@ -232,6 +232,8 @@ private:
     void convert_return_level(const ast::CodeRef& c);
     void convert_local_system(std::uint32_t b, const ast::BlockView& view, const ast::CodeRef& c, const CodeMapping& m);
     std::vector<std::pair<std::uint32_t, std::size_t>> local_words(const ast::BlockView& view) const;
+    void convert_work_select(std::uint32_t b, const ast::BlockView& view);
+    bool axes_in(const ast::BlockView& view) const;
     const BlockRun* local_run(std::uint32_t b, const Token& code);
     void write_cancel_code(const Token& code, const CodeInfo& cancel_code,
                            const std::vector<std::pair<std::uint32_t, std::size_t>>& words);
