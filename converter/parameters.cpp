@@ -54,6 +54,7 @@ void Converter::convert_parameters(const ast::BlockView& view, std::uint32_t fir
             continue;
         }
         if (r != Role::parameter) continue;
+        if (becomes_drawing(t)) continue;
         const std::size_t reports = out_.reports.size();
         if (drill && drill_target) rename_drill_letter(t, *drill, *drill_target);
         else if (cycle) check_taken(t);
@@ -165,6 +166,23 @@ void Converter::report_repeat(std::uint32_t b, const ast::BlockView& view, bool 
     report(view.range(), ReportKind::unconverted, block_text(view),
            fmt::format("repeats {} of line {}, which has no equivalent in {}", motion_->spelling, line_of(motion_at_), to_.id));
     expandable_candidates_.insert(b);
+}
+
+// A plain A or R in a linear block means a direct-drawing angle or corner radius to a SPINNER
+// target (dialects.md §11.4) and not to a source without that rule: reported, left as it is.
+bool Converter::becomes_drawing(const Token& t) {
+    if (!to_.lexical.plain_direct_drawing || from_.lexical.plain_direct_drawing || (t.letter != 'A' && t.letter != 'R')) return false;
+    bool linear = motion_ && motion_->function == fn::linear;
+    for (const CodeInfo* c : infos_) {
+        if (!c || !c->has(dialects::traits::motion_group)) continue;
+        linear = c->function == fn::linear;
+    }
+    if (!linear || (t.letter == 'A' && to_.lexical.is_axis('A'))) return false;
+    report_token(t, ReportKind::unconverted,
+                 fmt::format("a plain {} in a G01 block is a direct-drawing {} in {} (dialects.md §11.4) and not in {}: "
+                             "left as it is",
+                             t.letter, t.letter == 'A' ? "angle" : "corner radius", to_.id, from_.id));
+    return true;
 }
 
 }  // namespace kerf::converter::detail

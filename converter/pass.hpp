@@ -207,6 +207,7 @@ private:
     // parameters: words: readings, dwell units, drilling letters, direct drawing, G68, constructs
     void negate_rotation(const ast::BlockView& view);
     bool unconverted_motion() const;
+    bool becomes_drawing(const Token& t);
     void convert_parameters(const ast::BlockView& view, std::uint32_t first, std::span<const Token> tokens);
     const CodeInfo* mapped(const CodeInfo& c) const;
     void check_taken(const Token& t);
