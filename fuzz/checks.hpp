@@ -36,6 +36,14 @@ Broken check_analyzer(std::string_view input);
 // formatting it again changes nothing (idempotent); --verify finds the two runs equal.
 Broken check_formatter(std::string_view input);
 
+// kerf convert (issue 16): byte 0 picks the source dialect as above and, above it, the target
+// (one of the same nine), the U/W style and --expand. The edits are in order, inside the text and
+// never overlap; the output parses losslessly in the target; a text without syntax errors that
+// converts cleanly has none in the target and dry-runs to the same motion (the motion profile of
+// --verify, 0.001 mm, on one machine description); a conversion between a lathe and a mill dialect
+// changes nothing.
+Broken check_converter(std::string_view input);
+
 // Machine TOML: the loader returns errors with positions inside the text or a machine; a machine
 // resolves for every dialect and its Setup dry-runs a fixed program with valid events.
 Broken check_machine_toml(std::string_view input);

@@ -2,12 +2,14 @@
 """Seed corpora for the fuzz targets, generated at run time (fuzz/README.md): nothing here is
 committed, the seeds are written under OUT (default build-fuzz/seeds/<target>/).
 
-Program targets (grammar, interpreter, analyzer, formatter): byte 0 picks the dialect, so each
+Program targets (grammar, interpreter, analyzer, formatter, converter): byte 0 picks the dialect, so each
 program becomes one seed per dialect it may be: the dialect of its `(DIALECT: id)` header (the
 reference examples carry one), else the guess of its corpus folder (lathe -> fanuc-lathe-a, the
 others -> fanuc-mill). Programs are cut to SEED_BYTES at a line end: a dry run of a whole CAM
 program would make every execution slow, and libFuzzer mutates the start of a seed most.
 Sources: fuzz/corpus (already in the target format), ../shared/reference/examples, ../shared/corpus.
+The converter's byte 0 also picks the target (fuzz/checks.hpp check_converter): each program becomes
+one seed per other dialect of its machine kind, and one with --expand.
 TOML targets: machine/data/*.toml and dialects/data/*.toml, the examples of the schemas; for
 kerf_toml, the .kerf.toml files of docs/config.md and tests/. The input target (the decoder) gets
 the program seeds in UTF-8 and transcoded to UTF-16LE/BE (BOM or not) and UTF-32LE, behind its two
@@ -55,6 +57,26 @@ def dialect_byte(path, data):
     if m and m.group(1).decode() in DIALECTS:
         return str(DIALECTS.index(m.group(1).decode())).encode()
     return b"0" if os.sep + "lathe" + os.sep in path else b"4"
+
+
+LATHES = {0, 1, 2, 3, 6}
+
+
+def option_byte(source, target, style_expand=0):
+    """byte 0 of a converter seed: (b + 6) % 9 is the source, (b // 9) % 9 the target, b // 81 the
+    U/W style (1: letters) and --expand (2, 3) (fuzz/checks.cpp check_converter)."""
+    for b in range(256):
+        if (b + 6) % 9 == source and (b // 9) % 9 == target and b // 81 == style_expand:
+            return bytes([b])
+    raise ValueError((source, target, style_expand))
+
+
+def converter_seeds(seed):
+    source = (seed[0] + 6) % 9
+    kind = LATHES if source in LATHES else set(range(9)) - LATHES
+    for target in sorted(kind - {source}):
+        yield option_byte(source, target) + seed[1:]
+    yield option_byte(source, min(kind - {source}), 2) + seed[1:]
 
 
 def programs():
@@ -123,6 +145,8 @@ def main():
     for seed in programs():
         for target in ("grammar", "interpreter", "analyzer", "formatter"):
             write(target, seed)
+        for variant in converter_seeds(seed):
+            write("converter", variant)
         count += 1
         if count % 5 == 0:   # a sample of programs as documents of the language server
             for_lsp.append(seed[1:1021])

@@ -571,7 +571,7 @@ struct Server::Impl {
             {"inlayHintProvider", true},
             {"documentSymbolProvider", true},
             {"workspaceSymbolProvider", true},
-            {"codeActionProvider", json::object{{"codeActionKinds", json::array{"quickfix", "source.fixAll.kerf", "refactor.rewrite"}},
+            {"codeActionProvider", json::object{{"codeActionKinds", json::array{"quickfix", "source.fixAll.kerf", "refactor.rewrite", "source.convert.kerf"}},
                                                 {"resolveProvider", true}}},
             {"documentFormattingProvider", true},
             {"documentRangeFormattingProvider", true},

@@ -51,6 +51,13 @@ TEST_CASE("fuzz checks hold on the seed corpus and the examples") {
         CHECK(kerf::fuzz::check_interpreter(input).value_or("") == "");
         CHECK(kerf::fuzz::check_analyzer(input).value_or("") == "");
         CHECK(kerf::fuzz::check_formatter(input).value_or("") == "");
+        // Each seed into every dialect, both U/W styles and --expand (the option bits above the dialect).
+        for (unsigned options = 0; options < 27; ++options) {
+            std::string converted = input;
+            converted[0] = static_cast<char>(static_cast<unsigned char>(input[0]) % 9 + 9 * options);
+            INFO("convert, byte 0 = " << static_cast<int>(static_cast<unsigned char>(converted[0])));
+            CHECK(kerf::fuzz::check_converter(converted).value_or("") == "");
+        }
         // The decoder: no line limit / a 40-byte one, pieces of 1 and of 13 bytes.
         for (const char* options : {"\0\0", "\x28\x0c"})
             CHECK(kerf::fuzz::check_input(std::string(options, 2) + input.substr(1)).value_or("") == "");
@@ -67,10 +74,11 @@ TEST_CASE("fuzz checks hold on the seed corpus and the examples") {
     }
 }
 
-TEST_CASE("fuzz regressions of the interpreter, analyzer, formatter and TOML loaders stay fixed") {
+TEST_CASE("fuzz regressions of the interpreter, analyzer, formatter, converter and TOML loaders stay fixed") {
     run_regressions("interpreter", kerf::fuzz::check_interpreter);
     run_regressions("analyzer", kerf::fuzz::check_analyzer);
     run_regressions("formatter", kerf::fuzz::check_formatter);
+    run_regressions("converter", kerf::fuzz::check_converter);
     run_regressions("machine_toml", kerf::fuzz::check_machine_toml);
     run_regressions("dialect_toml", kerf::fuzz::check_dialect_toml);
     run_regressions("input", kerf::fuzz::check_input);
