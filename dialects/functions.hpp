@@ -485,6 +485,12 @@ inline constexpr FunctionId axial_offset_minus = FunctionId::known("axial-offset
 inline constexpr FunctionId arc_approach = FunctionId::known("arc-approach");
 inline constexpr FunctionId arc_exit = FunctionId::known("arc-exit");
 inline constexpr FunctionId machine_builder_code = FunctionId::known("machine-builder-code");   // user dialects: no behaviour
+inline constexpr FunctionId undocumented = FunctionId::known("undocumented");                   // a seed's code without a usable meaning
+// Modes the converter knows read the same in G90 and G91 (converter/convert.cpp), and ADV400's homing.
+inline constexpr FunctionId exact_stop_check = FunctionId::known("exact-stop-check");
+inline constexpr FunctionId exact_stop_mode = FunctionId::known("exact-stop-mode");
+inline constexpr FunctionId continuous_cutting_mode = FunctionId::known("continuous-cutting-mode");
+inline constexpr FunctionId axis_homing = FunctionId::known("axis-homing");                     // ADV400 G74 (cycles.md §11.4)
 // G54–G59 are work-coordinate-1 ... -6: read FunctionDef::work_coordinate, not the id.
 inline constexpr FunctionId work_coordinate_additional = FunctionId::known("work-coordinate-additional");   // G54.1 Pn
 

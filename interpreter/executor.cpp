@@ -296,6 +296,7 @@ void Executor::execute_block(Frame& frame) {
     const SourceRef where = source(frame, view);
     const bool moved = apply_block_words(frame, view, words);
     if (options_.emit_state && !stopped_) emit_state(where);
+    if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(true));
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
     if (moved && modal_call_ && !stopped_ && frames_.size() == depth && !frame.modal_macro)
         push_macro_frame(frame, view, modal_call_->program, modal_call_->repeats, modal_call_->arguments, true);
@@ -378,12 +379,15 @@ void Executor::emit_state(const SourceRef& where) {
     e.kind = EventKind::state;
     e.source = where;
     e.start = e.end = position_;
+    // Structured (issue 13): the modal codes in `text`, one per group; F, S and T in fields of their own.
     std::string text;
     for (const dialects::CodeInfo* code : modal_)
         if (code) text += (text.empty() ? "" : " ") + code->spelling;
-    text += fmt::format(" F{} S{} T{}", feed_, flags_.css ? css_ : spindle_rpm_, tool_ * 100 + tool_offset_);
     e.text = std::move(text);
     e.feed = feed_;
+    e.spindle_rpm = flags_.css ? css_ : spindle_rpm_;   // the S in force: rpm, or the surface speed under G96
+    e.tool = tool_;
+    e.code = tool_offset_;
     emit(std::move(e));
 }
 

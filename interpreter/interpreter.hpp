@@ -5,11 +5,13 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <utility>
 #include <vector>
 
 #include "dialects/dialect.hpp"
+#include "interpreter/macro/evaluate.hpp"
 #include "interpreter/program_set.hpp"
 #include "interpreter/setup.hpp"
 #include "interpreter/sink.hpp"
@@ -23,6 +25,11 @@ struct RunOptions {
     // words and say so in a message event — for reading damaged listings like the seeds.
     bool lenient = false;
     bool emit_state = false;    // a `state` event after every executed block (hovers, debugging)
+    // Called after every executed block that ran to its end (no call, jump or alarm in it) with the
+    // macro variables as they are then and the options the block's addresses were evaluated with:
+    // the language server shows a variable's value and an expression's value at their block. It
+    // reads only (evaluate takes the variables by reference for the system variables' sake).
+    std::function<void(const SourceRef& block, macro::Variables& variables, const macro::Options& options)> after_block;
     // Wall-clock bound of the run (interpreter/run_guard.hpp): past it the run stops with alarm
     // kerf_alarm::time_limit. 0 = none (the library default: runs stay deterministic; the CLI sets one).
     std::chrono::milliseconds time_limit{0};

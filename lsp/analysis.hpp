@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "analyzer/finding.hpp"
+#include "analyzer/incremental.hpp"
 #include "interpreter/events.hpp"
 #include "lsp/document.hpp"
 #include "lsp/project_seam.hpp"
@@ -29,7 +30,8 @@ struct BlockState {
     interpreter::Position position{};   // work coordinates (lathe X as diameter)
     double feed = 0;
     double spindle = 0;                 // S as the state event gives it (rpm, or the surface speed under G96)
-    std::int32_t tool = 0;              // T as written (tool * 100 + offset)
+    std::int32_t tool = 0;              // the tool
+    std::int32_t tool_offset = 0;       // its offset number (lathe Tmmnn: nn)
     std::uint32_t modal = 0;            // index into DryRun::modal_texts
     std::uint32_t runs = 0;             // how many times the block ran
 };
@@ -50,6 +52,15 @@ struct ProgramRun {
     std::map<int, double> length_per_tool;
 };
 
+// A value the dry run saw at a block the first time it ran: a variable the block names (its value
+// after the block) or a word's expression (X[#1+2.]: the value the block used).
+struct MacroValue {
+    ast::Range range;             // the variable (#1, #[#2+1]) or the word's expression
+    std::int64_t variable = -1;   // the variable's number; -1 for a word's expression
+    bool vacant = false;
+    double value = 0;
+};
+
 struct DryRun {
     std::vector<std::int32_t> state_of_block;   // per block: index into states, -1 when it never ran
     std::vector<BlockState> states;
@@ -58,6 +69,11 @@ struct DryRun {
     std::map<std::uint32_t, ProgramRun> programs;   // program index → its share of the run
     ProgramRun total;                             // the whole run, calls included
     std::vector<std::pair<std::uint32_t, std::string>> alarms;   // block, text
+    std::map<std::uint32_t, std::vector<MacroValue>> macro_values;   // blocks with macro expressions only
+    const std::vector<MacroValue>* values(std::uint32_t block) const {
+        const auto it = macro_values.find(block);
+        return it == macro_values.end() ? nullptr : &it->second;
+    }
     bool completed = false;                       // the run reached its end (not a step limit or alarm)
     const BlockState* state(std::uint32_t block) const {
         if (block >= state_of_block.size() || state_of_block[block] < 0) return nullptr;
@@ -100,6 +116,13 @@ private:
     std::deque<std::string> order_;                                    // uris in arrival order
     std::map<std::string, std::shared_ptr<const Document>> pending_;   // the newest version per uri
     std::map<std::string, std::shared_ptr<const Analysis>> results_;
+    // The static check of each document, kept between its versions (analyzer/incremental.hpp).
+    struct Incremental {
+        analyzer::IncrementalStatic check;
+        std::uint64_t serial = 0;                       // Document::serial() of the version it knows
+        std::shared_ptr<const FileSettings> settings;   // the settings it checked under (kept alive)
+    };
+    std::map<std::string, std::shared_ptr<Incremental>> incremental_;
     std::string running_;                                              // the uri being analysed
     std::atomic<bool> cancel_{false};
     bool stop_ = false;

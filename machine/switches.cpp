@@ -206,9 +206,10 @@ std::vector<SwitchDef> make_defs() {
                                      false, "cycles.md §0, §21.1; dialects.md §11.9",
                                      "unit of the integer P/Q words of G74–G76, G83, G87: the least input increment "
                                      "(0.001 mm IS-B, 0.0001 mm IS-C: the 'tens of microns' machines), or fixed"));
-    d.push_back(choice<DwellUnit>("dwell_p_unit", &S::dwell_p_unit, {{"ms", DwellUnit::ms}, {"s", DwellUnit::s}}, false,
+    d.push_back(choice<DwellUnit>("dwell_p_unit", &S::dwell_p_unit, {{"ms", DwellUnit::ms}, {"s", DwellUnit::s}}, true,
                                   "semantics.md §8.2; gcode-tables.md §2 (ADV400 G04)",
-                                  "G04 P in milliseconds (FANUC) or seconds (ADV400)"));
+                                  "G04 P in milliseconds (FANUC) or seconds (ADV400). dialect: the dialect's "
+                                  "[lexical] dwell_p_unit"));
     d.push_back(choice<ScalingUnit>("scaling_unit", &S::scaling_unit,
                                     {{"0.001", ScalingUnit::thousandth}, {"0.00001", ScalingUnit::hundred_thousandth}},
                                     false, "[FANUC] parameter 5400#7 SCR (gcode-tables.md §338 lists G51 as [FANUC])",

@@ -115,6 +115,17 @@ const Project::SetupEntry& Project::setup(const dialects::Dialect& dialect) cons
     return *entry;
 }
 
+const Project::SetupEntry& Project::setup(const dialects::Dialect& dialect, const dialects::Dialect& machine_of) const {
+    if (!machine_file_.empty() || dialect.id == machine_of.id) return setup(dialect);
+    const std::lock_guard lock(setups_mutex_);
+    std::unique_ptr<SetupEntry>& entry = setups_[machine_of.id + " as " + dialect.id];
+    if (!entry) {
+        const machine::Machine m = machine::resolve_for_dialect(machine::default_machine_for(machine_of), dialect);
+        entry = std::make_unique<SetupEntry>(SetupEntry{interpreter::make_setup(m), {}});
+    }
+    return *entry;
+}
+
 Scope Project::program_scope(const fs::path& file) const {
     Scope scope;
     scope.folders.push_back(normal_path(file).parent_path());

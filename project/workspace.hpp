@@ -101,6 +101,10 @@ public:
     };
     // The Setup for `dialect`, read once per dialect id.
     const SetupEntry& setup(const dialects::Dialect& dialect) const;
+    // The machine `machine_of` runs on (the machine file in force, else its dialect's built-in
+    // machine) read for `dialect`: the same machine description in another dialect's reading
+    // (its "dialect" switches resolved for `dialect`), for `kerf convert --verify`.
+    const SetupEntry& setup(const dialects::Dialect& dialect, const dialects::Dialect& machine_of) const;
     // The folders a call from `file` reaches: the file's own folder, then the library folders.
     Scope program_scope(const std::filesystem::path& file) const;
 

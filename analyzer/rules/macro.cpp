@@ -87,6 +87,8 @@ public:
         block_expressions(b, read, assign);
     }
 
+    void state(StateKey& key) const override { key.add(static_cast<std::int64_t>(assigned_.to_ullong() * 2 + main_)); }
+
 private:
     std::bitset<34> assigned_;
     bool main_ = false;

@@ -1,6 +1,7 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
 #include <algorithm>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -25,8 +26,7 @@ struct Target {
 // M97 P, M98 Q without P. M99 P and M98 P Q name labels of other programs.
 std::vector<Target> local_targets(const BlockContext& b) {
     std::vector<Target> out;
-    const auto block = static_cast<std::uint32_t>(b.view.index());
-    for (const references::Reference& r : references::block_references(b.file.typed, static_cast<std::uint32_t>(b.program), block)) {
+    for (const references::Reference& r : b.references()) {
         const bool local = r.kind == references::Kind::goto_label || r.kind == references::Kind::profile_label ||
                            r.kind == references::Kind::local_call_label ||
                            (r.kind == references::Kind::call_label && !r.label_program && !b.view.word('P'));
@@ -42,37 +42,25 @@ ast::Range block_range(const FileContext& file, std::uint32_t block) {
     return {tokens.front().begin, tokens.back().begin + tokens.back().length};
 }
 
-class LabelCheck : public StaticCheck {
-public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
-        file_ = &file;
-        program_ = program;
-    }
+// The labels of the block's program: built on the first jump that needs them (most CAM programs
+// have none); FileContext shares them between the rules.
+const LabelTable& labels(const BlockContext& b) { return b.file.labels(b.program); }
 
-protected:
-    // Built on the first jump that needs it: most CAM programs have none (FileContext shares it).
-    const LabelTable& labels() const { return file_->labels(program_); }
-
-private:
-    const FileContext* file_ = nullptr;
-    std::size_t program_ = 0;
-};
-
-class LabelNotFound : public LabelCheck {
+class LabelNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (labels().count(t.label) == 0)
+            if (labels(b).count(t.label) == 0)
                 out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
                            fmt::format("add N{} to the block meant, or correct the number", t.label));
     }
 };
 
-class AmbiguousLabel : public LabelCheck {
+class AmbiguousLabel : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (const int n = labels().count(t.label); n > 1) {
+            if (const int n = labels(b).count(t.label); n > 1) {
                 Finding& f = out.report(b.token(t.token).range(),
                                         fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                                         "give each target block a number of its own");
@@ -95,8 +83,7 @@ struct CalledProgram {
 // The programs a block calls by a constant number (M98 P, G65 P, G66 P: references/references.hpp).
 std::vector<CalledProgram> called_programs(const BlockContext& b) {
     std::vector<CalledProgram> out;
-    const auto block = static_cast<std::uint32_t>(b.view.index());
-    for (const references::Reference& r : references::block_references(b.file.typed, static_cast<std::uint32_t>(b.program), block))
+    for (const references::Reference& r : b.references())
         if (!references::is_label(r.kind) && r.value) out.push_back({*r.value, r.token});
     return out;
 }
@@ -147,7 +134,7 @@ public:
     explicit Loops(bool depth) : depth_(depth) {}
     void begin_program(const FileContext&, std::size_t, Reporter&) override { open_.clear(); }
     void block(const BlockContext& b, Reporter& out) override {
-        for (const std::uint32_t s : b.view.statements()) {
+        for (const std::uint32_t s : b.statements()) {
             const ast::Statement& st = b.tree().statements[static_cast<std::size_t>(b.token(s).payload)];
             const bool opens = st.kind == ast::StatementKind::while_do || st.kind == ast::StatementKind::do_;
             if (!opens && st.kind != ast::StatementKind::end) continue;
@@ -156,6 +143,13 @@ public:
             const int label = static_cast<int>(*m);
             if (opens) open(b, s, label, out);
             else close(b, s, label, out);
+        }
+    }
+    void state(StateKey& key) const override {
+        key.add(depth_);
+        for (const auto& [token, label] : open_) {
+            key.token(token);
+            key.add(label);
         }
     }
     void end_program(const FileContext& file, std::size_t, Reporter& out) override {
@@ -214,6 +208,7 @@ public:
         ended_ = ended_ || ends_program(b);
         code_ = code_ || b.view.block().kind == ast::BlockKind::code;
     }
+    void state(StateKey& key) const override { key.add(ended_ * 2 + code_); }
     void end_program(const FileContext& file, std::size_t program, Reporter& out) override {
         const auto& programs = file.typed.programs();
         const ast::Program& p = programs[program];
@@ -254,10 +249,13 @@ private:
 class Unreachable : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t, Reporter&) override {
-        if (!targets_) targets_ = all_targets(file, computed_);   // the same for every program of the file
+        // The same for every program of the file; shared by the copies of incremental checking
+        // (an edit that changes a target is checked whole: static_facts digests them).
+        if (!targets_) targets_ = std::make_shared<const std::vector<std::int64_t>>(jump_targets(file.tree(), computed_));
         dead_ = false;
         reported_ = false;
     }
+    void state(StateKey& key) const override { key.add(computed_ * 4 + dead_ * 2 + reported_); }
     void block(const BlockContext& b, Reporter& out) override {
         if (computed_) return;   // GOTO #1 may reach any label
         const auto n = b.view.sequence_number();
@@ -273,30 +271,11 @@ public:
 private:
     static bool unconditional_goto(const BlockContext& b) {
         if (b.view.block().has(ast::block_flags::deleted)) return false;
-        for (const std::uint32_t s : b.view.statements())
+        for (const std::uint32_t s : b.statements())
             if (b.tree().statements[static_cast<std::size_t>(b.token(s).payload)].kind == ast::StatementKind::goto_) return true;
         return false;
     }
-    // Every N that something in the file can jump to; `computed` when a GOTO target is an expression.
-    static std::vector<std::int64_t> all_targets(const FileContext& file, bool& computed) {
-        std::vector<std::int64_t> out;
-        computed = false;
-        const ast::SyntaxTree& tree = file.tree();
-        for (std::size_t s = 0; s < tree.statements.size(); ++s) {
-            const ast::Statement& st = tree.statements[s];
-            if (st.label < 0) continue;
-            if (const auto v = constant_of(tree, st.label)) out.push_back(static_cast<std::int64_t>(*v));
-            else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
-        }
-        for (std::size_t t = 0; t < tree.tokens.size(); ++t) {   // P/Q/L of calls and cycles: any number
-            const ast::Token& tok = tree.tokens[t];
-            if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
-                out.push_back(static_cast<std::int64_t>(tree.number_value(tok)));
-        }
-        std::sort(out.begin(), out.end());
-        return out;
-    }
-    std::optional<std::vector<std::int64_t>> targets_;   // sorted
+    std::shared_ptr<const std::vector<std::int64_t>> targets_;   // sorted
     bool computed_ = false, dead_ = false, reported_ = false;
 };
 
@@ -332,6 +311,30 @@ public:
 };
 
 }  // namespace
+
+}  // namespace kerf::analyzer::rules
+
+namespace kerf::analyzer {
+
+std::vector<std::int64_t> jump_targets(const ast::SyntaxTree& tree, bool& computed) {
+    using rules::constant_of;
+    std::vector<std::int64_t> out;
+    computed = false;
+    for (const ast::Statement& st : tree.statements) {
+        if (st.label < 0) continue;
+        if (const auto v = constant_of(tree, st.label)) out.push_back(static_cast<std::int64_t>(*v));
+        else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
+    }
+    for (const ast::Token& tok : tree.tokens)   // P/Q of calls and cycles: any number
+        if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
+            out.push_back(static_cast<std::int64_t>(tree.number_value(tok)));
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace kerf::analyzer
+
+namespace kerf::analyzer::rules {
 
 void add_references(Registry& r) {
     const auto rule = rule_maker(Category::references);

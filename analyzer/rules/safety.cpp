@@ -33,6 +33,7 @@ public:
                    "program G50 S<max rpm> in a block before G96: near X0 the rpm climbs to the machine limit");
         clamped_ = true;   // once per file
     }
+    void state(StateKey& key) const override { key.add(clamped_); }
 
 private:
     bool clamped_ = false;
@@ -62,6 +63,7 @@ public:
                        "start or cancel the compensation on a straight move before or after the arc");
         }
     }
+    void state(StateKey&) const override {}   // function_ is the rule's choice, not state
 
 private:
     dialects::FunctionId function_;
@@ -113,6 +115,10 @@ public:
 class LengthOffsetMismatch : public StaticCheck {
 public:
     void begin_program(const FileContext&, std::size_t, Reporter&) override { tool_.reset(); }
+    void state(StateKey& key) const override {
+        key.add(tool_.has_value());
+        key.add(tool_.value_or(0));
+    }
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.dialect.lexical.tool_word != "number") return;
         if (const auto t = number_word(b, 'T')) tool_ = static_cast<std::int64_t>(t->value);
@@ -151,9 +157,9 @@ class SpindleOverLimit : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         const double limit = b.file.setup.max_rpm;
-        if (limit <= 0 || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
-        const auto s = number_word(b, 'S');
-        if (!s || s->value <= limit) return;
+        if (limit <= 0) return;
+        const auto s = number_word(b, 'S');   // first: most blocks have no S
+        if (!s || s->value <= limit || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
         out.report(b.token(s->token).range(), fmt::format("S{:g} rpm is over the machine's spindle limit of {:g} rpm", s->value, limit),
                    "lower the speed; the control clamps it or alarms");
     }
