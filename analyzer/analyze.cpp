@@ -404,6 +404,12 @@ std::vector<std::uint32_t> LabelTable::blocks(std::int64_t n) const {
     return out;
 }
 
+void LabelTable::splice(std::uint32_t first, std::uint32_t old_last, std::int64_t moved) {
+    std::erase_if(sorted_, [&](const Entry& e) { return e.block >= first && e.block < old_last; });
+    for (Entry& e : sorted_)
+        if (e.block >= old_last) e.block = static_cast<std::uint32_t>(e.block + moved);
+}
+
 const LabelTable& FileContext::labels(std::size_t program) const {
     if (const auto it = labels_.find(program); it != labels_.end()) return it->second;
     std::vector<LabelTable::Entry> entries;

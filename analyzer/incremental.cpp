@@ -200,6 +200,7 @@ void IncrementalStatic::apply(const BlockEdit& edit) {
     const std::int64_t moved = static_cast<std::int64_t>(s.added) - static_cast<std::int64_t>(s.removed);
     const std::uint32_t old_last = s.first + s.removed;   // the first old block after the replaced ones
     const auto after = [&](std::uint32_t x) { return static_cast<std::uint32_t>(x + moved); };
+    for (auto& [program, table] : labels_) table.splice(s.first, old_last, moved);
     // Points before the replaced blocks (or right before the first of them) keep their state; those
     // among them are gone; those after moved and hold the last walk's state, to compare with.
     std::erase_if(points_, [&](const Point& p) { return p.block > s.first && p.block < old_last; });

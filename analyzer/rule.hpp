@@ -84,6 +84,11 @@ public:
     // The blocks whose N value is exactly `n`, in block order (references::label_blocks without the
     // walk over the program: AmbiguousLabel asks once per jump, and CAM output repeats N numbers).
     std::vector<std::uint32_t> blocks(std::int64_t n) const;
+    // An edit replaced blocks [first, old_last) and moved the later ones by `moved` (the language
+    // server's incremental check keeps the table while no jump target changed): the replaced
+    // blocks' entries go (their numbers are no jump targets, else the table is rebuilt), the later
+    // ones move.
+    void splice(std::uint32_t first, std::uint32_t old_last, std::int64_t moved);
 
 private:
     std::pair<std::vector<Entry>::const_iterator, std::vector<Entry>::const_iterator> range(std::int64_t n) const;

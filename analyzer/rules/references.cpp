@@ -66,7 +66,7 @@ public:
                                         "give each target block a number of its own");
                 if (!out.kept(f)) continue;   // past the rule's cap: the related blocks would go nowhere
                 bool first = true;
-                for (const std::uint32_t block : labels().blocks(t.label)) {
+                for (const std::uint32_t block : labels(b).blocks(t.label)) {
                     f.related.push_back({block_range(b.file, block), first ? fmt::format("N{}: the block the control jumps to", t.label)
                                                                           : fmt::format("N{} again", t.label)});
                     first = false;

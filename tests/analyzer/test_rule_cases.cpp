@@ -2,6 +2,7 @@
 // showed (fragments, cycle parameters that look like other words, dialect-dependent numbers).
 #include <catch2/catch.hpp>
 
+#include "analyzer/rule.hpp"
 #include "tests/analyzer/check_fixture.hpp"
 
 using namespace kerf;
@@ -71,4 +72,27 @@ TEST_CASE("K1020 missing-decimal-point: by the dialect's decimal mode, and K of 
 TEST_CASE("K5018 tool-without-offset: T0000 in the mmnn form, not the short T0 cancel") {
     CHECK(test::summary(test::check("O0001\nT0000(THREAD)\nG32 Z-10. F1.\nM30\n", "fanuc-lathe-a"), "K5018") == Findings{"2:1 warning K5018"});
     CHECK(test::summary(test::check("O0001\nT0101\nG01 Z-10. F0.2\nG28 U0. W0. T0\nM30\n", "fanuc-lathe-a"), "K5018").empty());
+}
+
+// The label table behind K3001/K3002 (analyzer/rule.hpp): counts by integer label, the blocks of a
+// label exactly (N10.5 is not label 10), in block order even when the numbers are not ascending, and
+// kept true across an edit that replaces and moves blocks (the server's incremental check).
+TEST_CASE("label table: count, blocks in block order, splice after an edit") {
+    using E = analyzer::LabelTable::Entry;
+    analyzer::LabelTable t({E{20, 20.0, 1}, E{10, 10.0, 2}, E{10, 10.5, 3}, E{30, 30.0, 4}, E{10, 10.0, 7}, E{20, 20.0, 9}});
+    CHECK(t.count(10) == 3);   // N10.5 counts as label 10, as before
+    CHECK(t.blocks(10) == std::vector<std::uint32_t>{2, 7});
+    CHECK(t.blocks(20) == std::vector<std::uint32_t>{1, 9});
+    CHECK(t.count(40) == 0);
+    CHECK(t.blocks(40).empty());
+    // Blocks 3 and 4 replaced by three new ones: the later blocks move by one.
+    t.splice(3, 5, 1);
+    CHECK(t.count(10) == 2);
+    CHECK(t.count(30) == 0);
+    CHECK(t.blocks(10) == std::vector<std::uint32_t>{2, 8});
+    CHECK(t.blocks(20) == std::vector<std::uint32_t>{1, 10});
+    // Two blocks inserted before block 2, none removed.
+    t.splice(2, 2, 2);
+    CHECK(t.blocks(10) == std::vector<std::uint32_t>{4, 10});
+    CHECK(t.blocks(20) == std::vector<std::uint32_t>{1, 12});
 }
