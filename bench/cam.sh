@@ -13,8 +13,10 @@
 #      the shared machine spreads over the cases instead of hitting one; every process is timed by
 #      GNU time (wall, user, sys, peak RSS, minor faults), output to /dev/null:
 #        parse   kerf parse F --dialect D --stats
-#        run     kerf run F --dialect D --json
-#        check   kerf check F --dialect D --format json
+#        run     kerf run F --dialect D --json --time-limit 0
+#        check   kerf check F --dialect D --format json --time-limit 0
+#      (--time-limit 0: the dry run's default wall-clock limit of 10 s would cut a run short on a
+#      loaded machine, and the figure would then be of less work)
 #        fmt     kerf fmt F --dialect D
 #        rs274   rs274 -g -t ../shared/tools/linuxcnc-tool.tbl F.ngc /dev/null
 #      for the mill, lathe and macro programs (D = fanuc-mill, fanuc-lathe-a, fanuc-mill); then
@@ -129,8 +131,8 @@ for round in $(seq 1 "$runs"); do
         f="$data/$k/$k-$size.nc"
         d=${dialect[$k]}
         measure "$k/parse" "$round" "$kerf" parse "$f" --dialect "$d" --stats
-        measure "$k/run" "$round" "$kerf" run "$f" --dialect "$d" --json
-        measure "$k/check" "$round" "$kerf" check "$f" --dialect "$d" --format json
+        measure "$k/run" "$round" "$kerf" run "$f" --dialect "$d" --json --time-limit 0
+        measure "$k/check" "$round" "$kerf" check "$f" --dialect "$d" --format json --time-limit 0
         measure "$k/fmt" "$round" "$kerf" fmt "$f" --dialect "$d"
         if [ "$k" = mill ] || [ "$round" = 1 ]; then
             measure "$k/rs274" "$round" "$rs274" -g -t "$tools" "$data/ngc/$k-$size.ngc" /dev/null
