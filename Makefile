@@ -15,7 +15,7 @@ PACKAGES := g++ make cmake libboost1.81-dev libboost-json1.81-dev libfmt-dev cat
             libcli11-dev libtomlplusplus-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: run test build deps editor-deps vsix clean bench fuzz test-sanitize
+.PHONY: run test build deps editor-deps vsix clean bench bench-cam fuzz test-sanitize
 
 run: build
 	@./scripts/run-examples.sh $(BUILD_DIR)/kerf
@@ -78,7 +78,8 @@ vsix: editor-deps
 	  node node_modules/@vscode/vsce/vsce package --allow-missing-repository --skip-license --out ../../$(BUILD_DIR)/kerf.vsix
 
 # The parse benchmark (bench/run.sh), then the dry run against LinuxCNC's rs274
-# (bench/dryrun_vs_rs274.sh; rs274 comes from linuxcnc-uspace, /usr/bin/time from time).
+# (bench/dryrun_vs_rs274.sh; rs274 comes from linuxcnc-uspace, /usr/bin/time from time), then the
+# whole-process figures on short-line CAM output (bench/cam.sh, below).
 BENCH_PACKAGES := libbenchmark-dev linuxcnc-uspace time
 bench: deps
 	$(call install_missing,$(BENCH_PACKAGES))
@@ -86,6 +87,16 @@ bench: deps
 	cmake --build $(BUILD_DIR) -j $(JOBS) --target kerf_bench kerf_bench_dryrun kerf
 	./bench/run.sh $(BUILD_DIR)
 	./bench/dryrun_vs_rs274.sh $(BUILD_DIR)
+	./bench/cam.sh $(BUILD_DIR)
+
+# Whole-process figures of parse, run, check and fmt on gen_program.py's 100 MB mill, lathe and macro
+# programs beside rs274, a folder of 10,000 small programs, the corpus's largest files (issue 18;
+# inputs under /tmp/kerf-bench-data, KERF_BENCH_DATA moves them; bench/cam.sh says the rest).
+bench-cam: deps
+	$(call install_missing,$(BENCH_PACKAGES))
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DKERF_BENCH=ON
+	cmake --build $(BUILD_DIR) -j $(JOBS) --target kerf
+	./bench/cam.sh $(BUILD_DIR)
 
 # clang and its libFuzzer runtime (Debian: clang, libclang-rt-14-dev). The targets and how to run
 # them: fuzz/README.md.
