@@ -113,6 +113,7 @@ Setup make_setup(const machine::Machine& m) {
     s.corner_slowdown_step = sw.corner_slowdown == machine::CornerSlowdown::step;
     s.iso_g43_approach = sw.iso_g43 == machine::IsoG43::approach_shorten;
     s.tool_offset_count = m.tool_offset_count;
+    s.m_codes = m.m_codes;
     for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);
     s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);
     s.move_limit = static_cast<std::uint64_t>(sw.max_moves);

@@ -290,6 +290,7 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     remember_words(view, words);
     apply_feed_speed_tool(view, words);
     apply_modal_codes(view);
+    if (scan_.classes & dialects::traits::not_modelled) warn_not_modelled(view);   // executor_dialect_variables.cpp
     if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
     if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.

@@ -198,6 +198,13 @@ private:
     Position position_{};            // work coordinates as programmed (lathe X diameter)
     int work_system_ = 0;            // 0..5 = G54..G59
     std::array<Position, 6> work_offsets_{};   // G54..G59 (writable by #5221.., G10 L2)
+    // [additional work offsets] G54.1 P / Haas G154 P, G110–G129 (executor_additional_offsets.cpp):
+    // the registers written so far (mm, unset ones are 0) and the one in force (0: G54..G59).
+    std::map<int, Position> additional_offsets_;
+    int additional_system_ = 0;
+    // [dialect variables] the dialect's [[variables]] ranges (executor_dialect_variables.cpp).
+    std::map<std::int64_t, macro::Value> dialect_variables_;
+    bool thread_chamfer_ = true;     // [Haas] M23 / M24: chamfer out of a thread cycle
     Position external_offset_{};
     Position work_shift_{};          // G10 P0 (lathe), subtracted (semantics.md §2.6)
     Position local_shift_{};         // G52
@@ -275,6 +282,20 @@ private:
     double dwell_p_seconds(double p) const { return setup_.dwell_p_in_seconds ? p : p / 1000.0; }
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     void call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    // [local calls] [Haas] M97 P: a label of the running program as a subroutine (executor_local_call.cpp).
+    void call_local_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    // A call to a program the run cannot find that the machine keeps resident (RunOptions::resident):
+    // said in a message and skipped; false when the program is not resident (alarm 078 follows).
+    bool skip_resident_call(const Frame& frame, const ast::BlockView& view, std::int64_t program, std::string_view how);
+    // [additional work offsets] (executor_additional_offsets.cpp)
+    void select_additional_work_offset(const ast::BlockView& view, const BlockWords& words, const dialects::CodeInfo& code);
+    const Position& active_work_offset() const;
+    Position& additional_offset(int number);
+    // [dialect variables] (executor_dialect_variables.cpp): nullopt/undefined when the range says so.
+    std::optional<macro::Value> read_dialect_variable(const dialects::VariableRange& range, int number);
+    macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value);
+    // A code the dry run does not model (traits::not_modelled) says so (kerf warning 90102).
+    void warn_not_modelled(const ast::BlockView& view);
     bool apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     void emit_state(const SourceRef& where);
 
@@ -317,6 +338,8 @@ private:
     void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const;
     void arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view);
     motion::Plane plane() const { return flags_.plane; }
+    // The block a jump to N`n` lands on in the frame's program: the first from the top, or with the
+    // dialect's label_search = forward the first after the frame's current block, wrapping to the top.
     std::optional<std::uint32_t> find_label(const Frame& f, double n) const;
     void pop_frame();
     void change_offsets(const std::function<void()>& change);

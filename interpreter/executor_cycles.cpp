@@ -27,6 +27,7 @@ public:
         : ex_(ex), code_(code), view_(view), words_(words), has_end_(has_end), end_(end) {}
 
     dialects::FunctionId function() const override { return code_.function; }
+    bool thread_chamfer() const override { return ex_.thread_chamfer_; }
     std::string spelling() const override { return code_.spelling; }
     bool has(char letter) const override { return words_.get(letter) != nullptr; }
     bool takes(char letter) const override { return code_.takes_word(std::string_view(&letter, 1)); }

@@ -82,6 +82,7 @@ macro::WriteResult ExecutorSystemVariables::write(int number, macro::Value value
 bool ExecutorSystemVariables::read_only(int number) const { return executor_.system_read_only(number); }
 
 bool Executor::system_read_only(int number) const {
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return range->read_only;
     // Modal information and positions are read-only (#4001-#4330, #5001-#5200); alarm 116.
     return (number >= 4001 && number <= 4330) || (number >= kEndPoint && number < kWorkOffsets) ||
            number == 3007 || number == 3011 || number == 3012;
@@ -89,6 +90,8 @@ bool Executor::system_read_only(int number) const {
 
 std::optional<macro::Value> Executor::read_system(int number) {
     using macro::Value;
+    // The dialect's own ranges first (Haas NGC #10000..: executor_dialect_variables.cpp).
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return read_dialect_variable(*range, number);
     const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
     // Tool offsets.
     for (const OffsetRange& r : lathe ? std::span<const OffsetRange>(kLatheOffsets) : std::span<const OffsetRange>(kMillOffsets)) {
@@ -152,6 +155,7 @@ std::optional<macro::Value> Executor::read_system(int number) {
 
 macro::WriteResult Executor::write_system(int number, macro::Value value) {
     using macro::WriteResult;
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return write_dialect_variable(*range, number, value);
     const double v = value.or_zero();
     const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
     if (number == 3000) {

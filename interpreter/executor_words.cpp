@@ -148,7 +148,7 @@ Position Executor::machine_offset() const {
     const Position tool = tool_offset();
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        p[a] = work_offsets_[static_cast<std::size_t>(work_system_)][a] + external_offset_[a] - work_shift_[a] +
+        p[a] = active_work_offset()[a] + external_offset_[a] - work_shift_[a] +
                local_shift_[a] + setting_shift_[a] + tool[a];
     p[2] += length_mm_;   // [length offsets] G43/G44 H on Z (executor_length.cpp)
     return p;
@@ -173,9 +173,12 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             {
                 change_offsets([&] {
                     work_system_ = n;
+                    additional_system_ = 0;   // [additional work offsets] G54–G59 end G154 / G54.1
                     if (setup_.g54_cancels_g52) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)
                 });
             }
+        } else if (f == fn::work_coordinate_additional) {
+            select_additional_work_offset(view, words, *c.info);   // executor_additional_offsets.cpp
         } else if (f == fn::programmable_data_input) {
             apply_data_input(view, words);
             return false;   // no motion in a G10 block

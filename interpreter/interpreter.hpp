@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -25,6 +26,9 @@ struct RunOptions {
     // Wall-clock bound of the run (interpreter/run_guard.hpp): past it the run stops with alarm
     // kerf_alarm::time_limit. 0 = none (the library default: runs stay deterministic; the CLI sets one).
     std::chrono::milliseconds time_limit{0};
+    // Programs the machine keeps in its memory (.kerf.toml [programs] resident): a call to one the
+    // run cannot find is skipped with a message instead of alarm 078 (issue 15). Empty: none.
+    std::function<bool(std::int64_t)> resident;
 };
 
 struct RunResult {

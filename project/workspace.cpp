@@ -69,6 +69,7 @@ DialectChoice choose_dialect(const Overrides& overrides, const Config& config, s
         c.why = d.evidence ? fmt::format("dialect {} detected (score {})", c.id, d.confidence)
                            : fmt::format("dialect {}: no dialect evidence in the file", c.id);
         c.evidence = d.reasons;
+        c.foreign = d.foreign;
     }
     return c;
 }

@@ -128,35 +128,60 @@ public:
     }
 };
 
-// Mills: a rapid that moves across the part at a depth where the program cut before.
+// Mills: a rapid that moves across the part at a depth where the program cut before. Feed moves
+// before a tool first goes down after a tool change (G1 X Y at the change height, 1006.nc N5895)
+// cut nothing; a sideways rapid of at most 1 mm is a boring bar backing off the wall inside its
+// bore (O0051 'G00 Y-.025 (BACK OFF SIDE OF BORE)'), not a move across the part (issue 15).
 class RapidIntoCut : public DynamicCheck {
 public:
     void event(const RunContext& run, const Event& e, Reporter& out) override {
         if (run.dialect.machine != dialects::MachineKind::mill) return;
         constexpr std::size_t x = 0, y = 1, z = 2;
-        if (is_feed_move(e)) {
-            cut_level_ = std::max(cut_level_, std::min(e.start[z], e.end[z]));
-            for (const auto& p : {e.start, e.end}) {
-                lo_x_ = std::min(lo_x_, p[x]), hi_x_ = std::max(hi_x_, p[x]);
-                lo_y_ = std::min(lo_y_, p[y]), hi_y_ = std::max(hi_y_, p[y]);
-            }
+        if (e.kind == EventKind::tool_change) {
+            approached_ = false;
             return;
         }
-        if (e.kind != EventKind::rapid || e.source.file != run.checked_file || reported_) return;
-        const bool across = std::abs(e.end[x] - e.start[x]) > 1e-6 || std::abs(e.end[y] - e.start[y]) > 1e-6;
+        const bool down = e.end[z] < e.start[z] - 1e-6;
+        if (is_feed_move(e)) {
+            if (approached_ || down) record_cut(e);
+            approached_ = approached_ || down;
+            return;
+        }
+        if (e.kind != EventKind::rapid) return;
+        approached_ = approached_ || down;
+        if (e.source.file != run.checked_file || reported_) return;
+        const double sideways = std::hypot(e.end[x] - e.start[x], e.end[y] - e.start[y]);
         const bool inside = e.end[x] > lo_x_ && e.end[x] < hi_x_ && e.end[y] > lo_y_ && e.end[y] < hi_y_;
-        if (!across || !inside || std::max(e.start[z], e.end[z]) > cut_level_ + 1e-6) return;
+        const double level = std::max(e.start[z], e.end[z]);
+        if (sideways * mm_per_unit(e) <= kBackOffMm || !inside || level > cut_level_ + 1e-6) return;
         reported_ = true;
         out.report(where(run, e),
-                   fmt::format("rapid move across the part at Z{:g}, not above the level Z{:g} where the program cut", e.end[z],
-                               cut_level_),
+                   std::abs(level - cut_level_) <= 1e-6
+                       ? fmt::format("rapid move across the part at Z{:g}, the depth where the program cut", e.end[z])
+                       : fmt::format("rapid move across the part at Z{:g}, below the level Z{:g} where the program cut", e.end[z],
+                                     cut_level_),
                    "retract Z above the part before the rapid move");
     }
 
 private:
+    static constexpr double kBackOffMm = 1.0;
+    void record_cut(const Event& e) {
+        constexpr std::size_t x = 0, y = 1, z = 2;
+        cut_level_ = std::max(cut_level_, std::min(e.start[z], e.end[z]));
+        for (const auto& p : {e.start, e.end}) {
+            lo_x_ = std::min(lo_x_, p[x]), hi_x_ = std::max(hi_x_, p[x]);
+            lo_y_ = std::min(lo_y_, p[y]), hi_y_ = std::max(hi_y_, p[y]);
+        }
+    }
+    // Positions are in program units (inch under G20): the move's length in mm over its length.
+    static double mm_per_unit(const Event& e) {
+        const double programmed = std::hypot(e.end[0] - e.start[0], e.end[1] - e.start[1], e.end[2] - e.start[2]);
+        return programmed > 1e-9 && e.length_mm > 0 ? e.length_mm / programmed : 1.0;
+    }
     double cut_level_ = -1e300;
     double lo_x_ = 1e300, hi_x_ = -1e300, lo_y_ = 1e300, hi_y_ = -1e300;
     bool reported_ = false;
+    bool approached_ = false;   // the tool went down since the last tool change (or the start)
 };
 
 // The interpreter says which codes it could not expand yet (cycles, compensation): those parts

@@ -82,9 +82,17 @@ private:
 };
 
 // M08. T0101. N10.: a decimal point on an address that takes whole numbers.
+// An M code the dialect's table does not list may be a macro call by M code ([FANUC] custom macro
+// call using an M code, parameters 6080–6089: `M165 P9814 D1.415` on the Doosan O1000): the
+// block's other words are its arguments, whatever their letters usually address (issue 15).
+bool unlisted_m_code(const BlockContext& b) {
+    return std::any_of(b.m.begin(), b.m.end(), [](const ast::CodeRef& c) { return !c.info && c.key; });
+}
+
 class PointOnInteger : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
+        if (takes_arguments(b) || unlisted_m_code(b)) return;   // macro arguments: any letter, any value
         for (const ast::Token& t : b.view.tokens()) {
             if (t.kind != ast::TokenKind::word || !t.is_number() || !t.has(ast::token_flags::has_point)) continue;
             const std::string_view spelling = b.tree().spelling(t);
@@ -153,16 +161,30 @@ public:
     void block(const BlockContext&, Reporter&) override {}
 };
 
+// Lower-case addresses, one finding per file (the p2g generator writes every axis letter in lower
+// case: one finding says it, not 64); its fix upper-cases them all.
 class LowerCase : public StaticCheck {
 public:
-    void block(const BlockContext& b, Reporter& out) override {
+    void block(const BlockContext& b, Reporter&) override {
         for (const ast::Token& t : b.view.tokens()) {
             if (t.kind != ast::TokenKind::word || !t.has(ast::token_flags::lower_case)) continue;
-            out.report({t.begin, t.begin + 1}, fmt::format("lower-case address '{}'", b.tree().text[t.begin]),
-                       fmt::format("write '{}'", t.letter))
-                .fix = Fix{"upper-case the address letter", {{{t.begin, t.begin + 1}, std::string(1, t.letter)}}};
+            if (edits_.empty()) first_ = {t.begin, t.begin + 1};
+            edits_.push_back({{t.begin, t.begin + 1}, std::string(1, t.letter)});
         }
     }
+    void end_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        if (edits_.empty() || program + 1 != file.typed.programs().size()) return;
+        const std::string_view first = file.tree().slice(first_);
+        out.report(first_,
+                   edits_.size() == 1 ? fmt::format("lower-case address '{}'", first)
+                                      : fmt::format("{} lower-case addresses in this file, the first '{}'", edits_.size(), first),
+                   "write the addresses in upper case")
+            .fix = Fix{"upper-case the address letters", edits_};
+    }
+
+private:
+    ast::Range first_;
+    std::vector<TextEdit> edits_;
 };
 
 }  // namespace
@@ -193,7 +215,7 @@ void add_numbers(Registry& r) {
          "ISO/EIA tape code has no such characters: some controls reject the block or show garbage (opt-in).",
          "(ТОКАРНЫЙ 90°)", "(TOKARNYJ 90 DEG)", "dialects.md §2 Characters"}))));
     r.add(fixable(static_rule<LowerCase>(rule("K1026", "lower-case-address", S::info,
-        {"An address letter in lower case.", "FANUC ISO code has upper-case addresses; some controls reject lower case.",
+        {"Address letters in lower case (one finding per file).", "FANUC ISO code has upper-case addresses; some controls reject lower case.",
          "g01 z-18.5", "G01 Z-18.5", "dialects.md §2; corpus p2g"}))));
 }
 

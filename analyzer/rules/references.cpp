@@ -1,6 +1,8 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <optional>
 #include <set>
 
@@ -68,9 +70,14 @@ public:
     }
 };
 
+// Where the control searches a label from the top (FANUC, dialects.md §2), a jump to a repeated
+// label lands on the first. Where it searches forward from the jump (Haas, `label_search =
+// "forward"`), repeated labels are the local labels of macro sections (O09985 N4, N77, N78) and each
+// jump has one target: nothing to report.
 class AmbiguousLabel : public LabelCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
+        if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
         for (const Target& t : local_targets(b))
             if (const int n = labels().count(t.label); n > 1) {
                 Finding& f = out.report(b.token(t.token).range(),
@@ -107,17 +114,25 @@ bool in_this_file(const BlockContext& b, std::int64_t number) {
 }
 
 // M98 P / G65 P / G66 P: the program must exist (this file, or a file the program index reaches).
+// One finding per missing program and file (issue 15: O09994 calls O9810 23 times); calls into the
+// programs the machine keeps resident (.kerf.toml [programs] resident) are not findings.
 class ProgramNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const CalledProgram& call : called_programs(b)) {
-            if (b.file.program_exists(call.number)) continue;
+            if (reported_.count(call.number) || b.file.program_exists(call.number)) continue;
+            if (b.file.resident && b.file.resident(call.number)) continue;
+            reported_.insert(call.number);
             out.report(b.token(call.token).range(),
                        fmt::format("program O{:04} is not in this file, the files of its folder or the library folders (alarm 078)", call.number),
-                       fmt::format("put O{:04} into this file or a file of its folder, or name the folder that holds it in "
-                                   ".kerf.toml [programs] library", call.number));
+                       fmt::format("put O{:04} into a file of its folder, name the folder that holds it in .kerf.toml "
+                                   "[programs] library, or, if the machine keeps it in memory (a probe macro), list it in "
+                                   "[programs] resident", call.number));
         }
     }
+
+private:
+    std::set<std::int64_t> reported_;
 };
 
 // A call whose program is in several other files (project/index.hpp): which one runs depends on
@@ -299,6 +314,59 @@ private:
     bool computed_ = false, dead_ = false, reported_ = false;
 };
 
+// The same N on several blocks of one program (the MANIFEST's student programs: O0001 N130–N150,
+// O0005 N30/N70): searching for the block, restarting the program at it or renumbering it finds
+// the first one. Labels that jumps land on are K3002's; in a dialect whose label search goes forward
+// from the jump (Haas), repeated jump labels are local labels on purpose and not reported (issue 15).
+class DuplicateSequenceNumber : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        const ast::Program& p = file.typed.programs()[program];
+        std::map<std::int64_t, std::vector<std::uint32_t>> blocks;
+        std::set<std::int64_t> targets;
+        for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
+            const ast::BlockView view = file.typed.block(b);
+            if (const auto n = view.sequence_number(); n && *n == std::floor(*n)) blocks[static_cast<std::int64_t>(*n)].push_back(b);
+            for (const references::Reference& r : references::block_references(file.typed, static_cast<std::uint32_t>(program), b))
+                if (references::is_label(r.kind) && r.value) targets.insert(*r.value);
+        }
+        // One finding per program: the repeated numbers, each with its blocks.
+        std::vector<std::pair<std::int64_t, const std::vector<std::uint32_t>*>> repeated;
+        for (const auto& [n, at] : blocks)
+            if (at.size() > 1 && !targets.count(n)) repeated.emplace_back(n, &at);
+        if (repeated.empty()) return;
+        std::string numbers;
+        for (const auto& [n, at] : repeated) numbers += fmt::format("{}N{}", numbers.empty() ? "" : ", ", n);
+        Finding& f = out.report(block_range(file, (*repeated.front().second)[1]),
+                                fmt::format("{} {} on several blocks of this program: a search or a restart finds the first",
+                                            numbers, repeated.size() == 1 ? "is" : "are"),
+                                "give each block a number of its own (kerf fmt --block-numbers renumber)");
+        for (const auto& [n, at] : repeated)
+            for (std::size_t i = 0; i < at->size(); ++i)
+                f.related.push_back({block_range(file, (*at)[i]), i == 0 ? fmt::format("N{}: the first", n) : fmt::format("N{} again", n)});
+    }
+    void block(const BlockContext&, Reporter&) override {}
+};
+
+// An O word after the first word of a block (ALL-PROG.TXT: 'M99O0810(Z_AXIS)', the line break
+// before O0810 lost): the program number starts a program only at the start of a block, so the
+// control, like kerf, reads the rest of the file as part of the program before (issue 15).
+class ProgramNumberInsideBlock : public StaticCheck {
+public:
+    void block(const BlockContext& b, Reporter& out) override {
+        bool first = true;
+        for (const ast::Token& t : b.view.tokens()) {
+            if (t.kind != ast::TokenKind::word) continue;
+            if (t.letter == 'O' && t.role() == ast::Role::program && !first)
+                out.report(t.range(),
+                           fmt::format("{} is not at the start of a block: no program starts here, the blocks after it "
+                                       "belong to the program before", b.tree().spelling(t)),
+                           fmt::format("put {} on a line of its own", b.tree().spelling(t)));
+            first = false;
+        }
+    }
+};
+
 class ProgramNumbers : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
@@ -346,7 +414,8 @@ void add_references(Registry& r) {
     // One missing program is one finding: K3003 at the call hides the dry run's alarm 078 (K4009) there.
     r.add(explaining(static_rule<ProgramNotFound>(rule("K3003", "program-not-found", S::error,
         {"M98 P, G65 P or G66 P to a program that is in no file kerf can reach: this file, the files of its "
-         "folder (by the O numbers inside them) and the .kerf.toml's [programs] library folders.",
+         "folder (by the O numbers inside them) and the .kerf.toml's [programs] library folders; once per program "
+         "and file, and not for the [programs] resident ranges.",
          "The control stops with alarm 078 when the call is reached.", "M98 P1234", "M98 P1000 (O1000 in a file of the folder)",
          "dialects.md §3.6"})), {{alarms::program_not_found, alarms::program_not_found}}));
     r.add(with_alarms(static_rule<LoopsPairs>(rule("K3004", "loop-mismatch", S::error,
@@ -371,6 +440,16 @@ void add_references(Registry& r) {
         {"An O number in O8000–O9999, the ranges FANUC parameter 3202 can protect.",
          "A protected program cannot be edited or loaded over; macro makers use these numbers on purpose.",
          "O9001", "O1001", "[FANUC] parameter 3202 NE8/NE9"})));
+    r.add(static_rule<DuplicateSequenceNumber>(rule("K3011", "duplicate-sequence-number", S::warning,
+        {"The same sequence number on several blocks of one program (not a jump target: that is K3002).",
+         "A search for the block, a restart at it or a renumbering finds the first: the operator restarts at the wrong place.",
+         "N130 M06 T02\nN140 G43 H02\nN130 G00 X0 Y0", "N130 M06 T02\nN140 G43 H02\nN250 G00 X0 Y0",
+         "corpus MANIFEST 'duplicate N numbers' (O0001, O0005); dialects.md §2 Sequence number"})));
+    r.add(static_rule<ProgramNumberInsideBlock>(rule("K3012", "program-number-inside-block", S::error,
+        {"An O program number that is not the first word of its block (a line break lost before it).",
+         "No program starts there: the blocks after it belong to the program before (its labels, its M99), and "
+         "calls to that O number do not find it.",
+         "M99O0810(Z_AXIS)", "M99\nO0810(Z_AXIS)", "corpus ALL-PROG.TXT (issue 15); dialects.md §3.4"})));
     r.add(static_rule<ProgramInSeveralFiles>(rule("K3010", "program-in-several-files", S::warning,
         {"M98 P, G65 P or G66 P to a program number that several other files of the folder (or the library "
          "folders) hold.",

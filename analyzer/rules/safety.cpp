@@ -1,5 +1,6 @@
 // Static safety rules read in text order with the modal state of the listing (semantics.md §4–§7).
 #include "analyzer/rules/common.hpp"
+#include "analyzer/rules/expressions.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -109,23 +110,69 @@ public:
     }
 };
 
-// Mill: G43 H2 after T1 M06 applies the length of another tool.
+// Mill: G43 H2 after T1 M06 applies the length of another tool. The tool in the spindle is the
+// one the last tool change (M06) loaded: a T word alone pre-selects the next tool and leaves the
+// spindle's as it is (`T9 M6` then `T1`: T9 still cuts, issue 15), as the interpreter runs it
+// (executor_words.cpp: pending_tool_, M06 changes it in).
 class LengthOffsetMismatch : public StaticCheck {
 public:
-    void begin_program(const FileContext&, std::size_t, Reporter&) override { tool_.reset(); }
+    void begin_program(const FileContext&, std::size_t, Reporter&) override {
+        selected_.reset();
+        spindle_.reset();
+    }
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.dialect.lexical.tool_word != "number") return;
-        if (const auto t = number_word(b, 'T')) tool_ = static_cast<std::int64_t>(t->value);
+        if (const auto t = number_word(b, 'T')) selected_ = static_cast<std::int64_t>(t->value);
+        if (b.has_function(fn::tool_change)) spindle_ = selected_;
         if (!b.has_function(fn::tool_length_comp_plus) && !b.has_function(fn::tool_length_comp_minus)) return;
         const auto h = number_word(b, 'H');
-        if (!h || !tool_ || static_cast<std::int64_t>(h->value) == *tool_) return;
+        if (!h || !spindle_ || static_cast<std::int64_t>(h->value) == *spindle_) return;
         out.report(b.token(h->token).range(),
-                   fmt::format("H{} is not the length of the tool T{} in the spindle", static_cast<std::int64_t>(h->value), *tool_),
-                   fmt::format("write H{} unless the offset numbering differs on purpose", *tool_));
+                   fmt::format("H{} is not the length of the tool T{} in the spindle", static_cast<std::int64_t>(h->value), *spindle_),
+                   fmt::format("write H{} unless the offset numbering differs on purpose", *spindle_));
     }
 
 private:
-    std::optional<std::int64_t> tool_;
+    std::optional<std::int64_t> selected_;   // the last T word: the tool the next M06 loads
+    std::optional<std::int64_t> spindle_;    // the tool the last M06 loaded
+};
+
+// A main program that moves without G20 or G21 runs in whatever unit the control was left in (its
+// power-on parameter, or the last program's G20/G21): CGIP09902.NC of the corpus is an inch program
+// (T02 DIA 0.5000, 1/2 ENDMILL) with no G20, read in mm by a machine left in G21 (issue 15). A
+// subprogram (M99) takes its caller's unit; a program that reads the unit (#4006, or a variable the
+// dialect marks `units`, Haas Setting 9 #20009) adapts on purpose.
+class UnitsNotSet : public StaticCheck {
+public:
+    void begin_program(const FileContext&, std::size_t, Reporter&) override {
+        first_move_.reset();
+        unit_set_ = reads_unit_ = main_ = false;
+    }
+    void block(const BlockContext& b, Reporter&) override {
+        unit_set_ = unit_set_ || b.has_function(fn::inch_input) || b.has_function(fn::metric_input);
+        main_ = main_ || b.has_function(fn::program_end) || b.has_function(fn::program_end_rewind);
+        if (!first_move_ && !b.view.axis_words().empty()) first_move_ = block_text_range(b);
+        const ast::SyntaxTree& tree = b.tree();
+        block_expressions(tree, b.view, [&](std::int32_t root) {
+            walk(tree, root, false, [&](std::int32_t i, bool) {
+                const ast::Expr& e = tree.exprs[static_cast<std::size_t>(i)];
+                if (e.kind != ast::ExprKind::variable) return;
+                const auto n = constant_of(tree, e.a);
+                const dialects::VariableRange* range = n ? b.file.dialect.variable_range(static_cast<std::int64_t>(*n)) : nullptr;
+                reads_unit_ = reads_unit_ || (n && *n == kUnitModal) || (range && range->units);
+            });
+        }, [](std::int32_t) {});
+    }
+    void end_program(const FileContext&, std::size_t, Reporter& out) override {
+        if (!main_ || unit_set_ || reads_unit_ || !first_move_) return;
+        out.report(*first_move_, "the program moves without G20 or G21: it runs in the unit the control was left in",
+                   "program G21 (mm) or G20 (inch) in the safe-start block");
+    }
+
+private:
+    static constexpr int kUnitModal = 4006;   // [FANUC] #4006: the G20/G21 of modal group 06
+    std::optional<ast::Range> first_move_;
+    bool unit_set_ = false, reads_unit_ = false, main_ = false;
 };
 
 // G28 X0 Z0 in absolute mode goes through the work zero (the part) on its way home.
@@ -202,6 +249,12 @@ void add_safety(Registry& r) {
     r.add(static_rule<ToolWithoutOffset>(rule("K5018", "tool-without-offset", S::warning,
         {"A lathe tool word with offset 00 (T0100).", "The tool cuts with no geometry or wear offset: off by the tool's length.",
          "T0100", "T0101", "dialects.md §3.5"})));
+    r.add(static_rule<UnitsNotSet>(rule("K5024", "units-not-set", S::warning,
+        {"A main program that moves without ever programming G20 or G21 (and does not read the unit, #4006).",
+         "The control keeps the unit it was left in: an inch program runs 25.4 times too small on a machine left in "
+         "G21, and the dry run reads it in the machine's power-on unit.",
+         "G90 G54 G00 X1.5 Y2.\nM30", "G20 G90 G54 G00 X1.5 Y2.\nM30",
+         "corpus CGIP09902.NC (issue 15); semantics.md §1.3 power-on state"})));
     r.add(static_rule<LengthOffsetMismatch>(rule("K5019", "length-offset-mismatch", S::warning,
         {"G43 H with a number other than the tool in the spindle (mills).",
          "The length of another tool is applied: the tool goes too deep or cuts air.", "T1 M06\nG43 H2 Z50.",

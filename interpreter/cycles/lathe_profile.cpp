@@ -285,20 +285,38 @@ bool first_block(Context& ctx, dialects::FunctionId f) {
 
 }  // namespace
 
-void lathe_profile(Context& ctx) {
-    const dialects::FunctionId f = ctx.function();
-    if (f != fn::finishing_cycle && first_block(ctx, f)) return;
+void rough_profile(Context& ctx, const Profile& profile, bool facing, double depth, double retract) {
+    rough(ctx, profile, {facing ? Coord::z : Coord::x, depth, retract});
+}
+
+void repeat_pattern(Context& ctx, const Profile& profile, double relief_x, double relief_z, int divisions) {
+    Parameters p;
+    p.g73_relief_x = relief_x;
+    p.g73_relief_z = relief_z;
+    p.g73_divisions = divisions;
+    pattern(ctx, profile, p);
+}
+
+std::optional<Profile> profile_of_block(Context& ctx) {
     const auto p = ctx.raw('P'), q = ctx.raw('Q');
     if (!p || !q) {
         ctx.alarm(62, fmt::format("{} without P and Q: no profile to run (FANUC alarm 062)", ctx.spelling()));
-        return;
+        return std::nullopt;
     }
-    const auto profile = ctx.profile(*p, *q);
-    if (!profile) return;
+    auto profile = ctx.profile(*p, *q);
+    if (!profile) return std::nullopt;
     if (profile->moves.empty()) {
         ctx.alarm(65, fmt::format("{} P{} Q{}: the profile has no move (FANUC alarm 065)", ctx.spelling(), *p, *q));
-        return;
+        return std::nullopt;
     }
+    return profile;
+}
+
+void lathe_profile(Context& ctx) {
+    const dialects::FunctionId f = ctx.function();
+    if (f != fn::finishing_cycle && first_block(ctx, f)) return;
+    const auto profile = profile_of_block(ctx);
+    if (!profile) return;
     const Parameters& params = ctx.parameters();
     if (f == fn::finishing_cycle) finishing(ctx, *profile);
     else if (f == fn::rough_turning_cycle) rough(ctx, *profile, {Coord::x, params.g71_depth, params.g71_retract});

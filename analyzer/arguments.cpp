@@ -1,0 +1,123 @@
+#include "analyzer/arguments.hpp"
+
+#include <cctype>
+#include <string>
+
+#include "analyzer/rules/common.hpp"
+#include "analyzer/rules/expressions.hpp"
+#include "dialects/functions.hpp"
+#include "interpreter/macro/arguments.hpp"
+
+namespace kerf::analyzer {
+
+namespace {
+
+// "( G65 P9994 A B C )" → the locals of A, B, C when P names `number`; the letters may carry values
+// ("A1." "B#2"): each word's first character counts. Stops at the first word that is no letter.
+LocalSet arguments_in_comment(std::string_view text, std::int64_t number) {
+    LocalSet out;
+    std::string upper(text);
+    for (char& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    std::size_t at = upper.find("G65");
+    while (at != std::string::npos) {
+        std::size_t i = at + 3;
+        while (i < upper.size() && upper[i] == ' ') ++i;
+        if (i < upper.size() && upper[i] == 'P') {
+            std::size_t j = i + 1;
+            std::int64_t p = 0;
+            while (j < upper.size() && std::isdigit(static_cast<unsigned char>(upper[j]))) p = p * 10 + (upper[j++] - '0');
+            if (j > i + 1 && p == number) {
+                interpreter::macro::ArgumentMapper mapper;
+                while (j < upper.size()) {
+                    while (j < upper.size() && upper[j] == ' ') ++j;
+                    if (j >= upper.size() || !std::isalpha(static_cast<unsigned char>(upper[j]))) break;
+                    if (const int local = mapper.variable(upper[j]); local > 0 && local <= 33) out.set(static_cast<std::size_t>(local));
+                    while (j < upper.size() && upper[j] != ' ' && upper[j] != ')') ++j;
+                }
+                return out;
+            }
+        }
+        at = upper.find("G65", at + 3);
+    }
+    return out;
+}
+
+}  // namespace
+
+LocalSet documented_arguments(const ast::TypedFile& file, std::size_t program) {
+    const ast::Program& p = file.programs()[program];
+    if (!p.number) return {};
+    const ast::SyntaxTree& tree = file.tree();
+    LocalSet out;
+    for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
+        bool words = false;
+        for (const ast::Token& t : tree.block_tokens(b)) {
+            if (t.kind == ast::TokenKind::comment) out |= arguments_in_comment(tree.spelling(t), *p.number);
+            words |= t.kind == ast::TokenKind::statement ||
+                     (t.kind == ast::TokenKind::word && t.letter != 'O' && t.letter != 'N');
+        }
+        if (words) break;   // the header ends at the first word of the program
+    }
+    return out;
+}
+
+LocalSet file_caller_arguments(const ast::TypedFile& file, std::int64_t number, bool& called) {
+    LocalSet out;
+    called = false;
+    const ast::SyntaxTree& tree = file.tree();
+    for (std::uint32_t b = 0; b < tree.block_count(); ++b) {
+        const ast::BlockView view = file.block(b);
+        const auto call = view.macro_call();
+        if (!call || call->program != number) continue;
+        called = true;
+        interpreter::macro::ArgumentMapper mapper;
+        for (const std::uint32_t ti : call->arguments)
+            if (const int local = mapper.variable(tree.tokens[ti].letter); local > 0 && local <= 33)
+                out.set(static_cast<std::size_t>(local));
+    }
+    return out;
+}
+
+LocalSet argument_reads(const ast::TypedFile& file, std::size_t program) {
+    const ast::Program& p = file.programs()[program];
+    const ast::SyntaxTree& tree = file.tree();
+    LocalSet assigned, read_first;
+    for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
+        const ast::BlockView view = file.block(b);
+        const auto read = [&](std::int32_t root) {
+            rules::walk(tree, root, false, [&](std::int32_t i, bool) {
+                const ast::Expr& e = tree.exprs[static_cast<std::size_t>(i)];
+                if (e.kind != ast::ExprKind::variable) return;
+                const auto n = rules::constant_of(tree, e.a);
+                if (n && *n >= 1 && *n <= 33 && !assigned[static_cast<std::size_t>(*n)]) read_first.set(static_cast<std::size_t>(*n));
+            });
+        };
+        const auto assign = [&](std::int32_t target) {
+            if (const auto n = rules::constant_of(tree, tree.exprs[static_cast<std::size_t>(target)].a); n && *n >= 1 && *n <= 33)
+                assigned.set(static_cast<std::size_t>(*n));
+        };
+        rules::block_expressions(tree, view, read, assign);
+    }
+    return read_first;
+}
+
+ProgramArguments program_arguments(const ast::TypedFile& file, std::size_t program,
+                                   const std::function<std::vector<int>(std::int64_t)>& index_callers) {
+    ProgramArguments out;
+    out.locals = documented_arguments(file, program);
+    out.documented = out.locals.any();
+    const auto number = file.programs()[program].number;
+    if (!number) return out;
+    bool called = false;
+    out.locals |= file_caller_arguments(file, *number, called);
+    out.caller_known = called;
+    if (index_callers) {
+        const std::vector<int> locals = index_callers(*number);
+        out.caller_known |= !locals.empty();
+        for (const int l : locals)
+            if (l >= 1 && l <= 33) out.locals.set(static_cast<std::size_t>(l));
+    }
+    return out;
+}
+
+}  // namespace kerf::analyzer

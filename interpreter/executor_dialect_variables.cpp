@@ -1,0 +1,97 @@
+// [dialect variables] The macro variables a dialect defines beyond FANUC Custom Macro B
+// (`[[variables]]`, dialects/SCHEMA.md): the Haas NGC numbers #10000+n of the legacy #n, its own
+// general-purpose ranges, the additional work offsets of G154 (#14001 + 20·(n−1)), the settings and
+// parameters a macro reads (#20000 + n, #30000 + n), the tool in the spindle (#3026) and the spindle
+// speed (#3027). The interpreter asks the dialect before its own system variables
+// (executor_system.cpp), so a control with other numbers is a data file, not code.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "interpreter/executor.hpp"
+
+namespace kerf::interpreter {
+
+namespace {
+
+// The additional work offset and axis of a work-offset variable: #from is axis 0 of offset first_set.
+struct OffsetSlot {
+    int number;
+    std::size_t axis_index;   // into the machine's axis order
+};
+OffsetSlot offset_slot(const dialects::VariableRange& range, int number) {
+    const std::int64_t i = number - range.from;
+    return {range.first_set + static_cast<int>(i / range.stride), static_cast<std::size_t>(i % range.stride)};
+}
+
+}  // namespace
+
+std::optional<macro::Value> Executor::read_dialect_variable(const dialects::VariableRange& range, int number) {
+    using macro::Value;
+    switch (range.kind) {
+        case dialects::VariableKind::alias:
+            return variables_.read(static_cast<int>(range.alias_of + (number - range.from)));
+        case dialects::VariableKind::common:
+        case dialects::VariableKind::setting:
+        case dialects::VariableKind::parameter: {
+            // Settings and parameters are the machine's: a dry run knows none (vacant) unless the
+            // program wrote them first.
+            const auto it = dialect_variables_.find(number);
+            return it == dialect_variables_.end() ? Value::vacant_value() : it->second;
+        }
+        case dialects::VariableKind::work_offsets: {
+            const OffsetSlot slot = offset_slot(range, number);
+            if (slot.axis_index >= setup_.axis_order.size()) return Value::vacant_value();
+            const auto axis = axis_of_letter(setup_.axis_order[slot.axis_index]);
+            if (!axis) return Value::vacant_value();
+            const auto it = additional_offsets_.find(slot.number);
+            return Value::of(it == additional_offsets_.end() ? 0.0 : it->second[static_cast<std::size_t>(*axis)]);
+        }
+        case dialects::VariableKind::tool_in_spindle:
+            return Value::of(static_cast<double>(tool_));
+        case dialects::VariableKind::spindle_rpm:
+            return Value::of(spindle_on_ ? current_rpm(position_[0]) : 0.0);
+    }
+    return std::nullopt;
+}
+
+macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value) {
+    using macro::WriteResult;
+    if (range.read_only) return WriteResult::read_only;
+    switch (range.kind) {
+        case dialects::VariableKind::alias:
+            return variables_.write(static_cast<int>(range.alias_of + (number - range.from)), value);
+        case dialects::VariableKind::common:
+        case dialects::VariableKind::setting:
+        case dialects::VariableKind::parameter:
+            dialect_variables_[number] = value;
+            return WriteResult::ok;
+        case dialects::VariableKind::work_offsets: {
+            const OffsetSlot slot = offset_slot(range, number);
+            if (slot.axis_index >= setup_.axis_order.size()) return WriteResult::undefined;
+            const auto axis = axis_of_letter(setup_.axis_order[slot.axis_index]);
+            if (!axis) return WriteResult::undefined;
+            // The tool stays where it is; its work coordinates follow the new offset.
+            change_offsets([&] { additional_offset(slot.number)[static_cast<std::size_t>(*axis)] = value.or_zero(); });
+            return WriteResult::ok;
+        }
+        case dialects::VariableKind::tool_in_spindle:
+        case dialects::VariableKind::spindle_rpm:
+            return WriteResult::read_only;
+    }
+    return WriteResult::undefined;
+}
+
+void Executor::warn_not_modelled(const ast::BlockView& view) {
+    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+        for (const ast::CodeRef& c : *codes) {
+            if (!c.info || !c.info->has(dialects::traits::not_modelled)) continue;
+            Event e = event_at(EventKind::message, *frame_, view);
+            e.code = kerf_warning::not_modelled;
+            e.text = fmt::format("{} ({}) is not modelled by the dry run: positions after it may differ from the machine's",
+                                 c.info->spelling, c.info->function);
+            emit(e);
+        }
+}
+
+}  // namespace kerf::interpreter
