@@ -101,11 +101,38 @@ LocalSet argument_reads(const ast::TypedFile& file, std::size_t program) {
     return read_first;
 }
 
+LocalSet vacancy_tested(const ast::TypedFile& file, std::size_t program) {
+    const ast::Program& p = file.programs()[program];
+    const ast::SyntaxTree& tree = file.tree();
+    LocalSet out;
+    const auto local_of = [&](std::int32_t e) -> std::optional<int> {
+        if (e < 0 || tree.exprs[static_cast<std::size_t>(e)].kind != ast::ExprKind::variable) return std::nullopt;
+        const auto n = rules::constant_of(tree, tree.exprs[static_cast<std::size_t>(e)].a);
+        if (!n) return std::nullopt;
+        return static_cast<int>(*n);
+    };
+    for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
+        const auto read = [&](std::int32_t root) {
+            rules::walk(tree, root, false, [&](std::int32_t i, bool) {
+                const ast::Expr& e = tree.exprs[static_cast<std::size_t>(i)];
+                if (e.kind != ast::ExprKind::binary) return;
+                if (e.binary_op() != ast::BinaryOp::eq && e.binary_op() != ast::BinaryOp::ne) return;
+                const auto a = local_of(e.a), c = local_of(e.b);
+                if (a == 0 && c && *c >= 1 && *c <= 33) out.set(static_cast<std::size_t>(*c));
+                if (c == 0 && a && *a >= 1 && *a <= 33) out.set(static_cast<std::size_t>(*a));
+            });
+        };
+        rules::block_expressions(tree, file.block(b), read, [](std::int32_t) {});
+    }
+    return out;
+}
+
 ProgramArguments program_arguments(const ast::TypedFile& file, std::size_t program,
                                    const std::function<std::vector<int>(std::int64_t)>& index_callers) {
     ProgramArguments out;
     out.locals = documented_arguments(file, program);
     out.documented = out.locals.any();
+    out.locals |= vacancy_tested(file, program);
     const auto number = file.programs()[program].number;
     if (!number) return out;
     bool called = false;

@@ -26,11 +26,15 @@ LocalSet file_caller_arguments(const ast::TypedFile& file, std::int64_t number, 
 // empty: the program is a macro that expects arguments.
 LocalSet argument_reads(const ast::TypedFile& file, std::size_t program);
 
+// The locals a program tests for vacancy (`#2 EQ #0`, `#7 NE #0`): arguments it knows may be
+// missing and checks (O09985 "IF [ #2 EQ #0 ] GOTO104 ( B CALL CHECK )").
+LocalSet vacancy_tested(const ast::TypedFile& file, std::size_t program);
+
 // The arguments program `program` of `file` may be called with, from its header, the calls of its
 // file and `index_callers` (the letters callers elsewhere pass, as locals; may be empty); `known`
 // says whether any caller or documentation was found.
 struct ProgramArguments {
-    LocalSet locals;
+    LocalSet locals;             // documented, passed by a caller, or tested for vacancy
     bool caller_known = false;   // a caller in the file or the index
     bool documented = false;
 };

@@ -84,6 +84,7 @@ struct LexicalRules {
     bool macro_b = true;
     int max_m_per_block = 1;
     LabelSearch label_search = LabelSearch::from_top;
+    bool if_words = false;   // [Haas] IF [...] may be followed by the block's words (IF [#1 NE 1.] G65 P9725)
 
     bool is_axis(char letter) const { return axes.find(letter) != std::string::npos; }
     bool is_diameter(char letter) const { return diameter_letters.find(letter) != std::string::npos; }
@@ -130,6 +131,7 @@ struct VariableRange {
     std::int64_t alias_of = 0;   // alias: the variable #from stands for
     int first_set = 1;           // work_offsets: the offset number of #from (G154 P1)
     int stride = 20;             // work_offsets: variables from one offset to the next
+    std::string axes;            // work_offsets: the axis of each variable of an offset ("XYZABC"); empty: the machine's order
     bool read_only = false;
     bool units = false;          // reading it tells a program its unit (Haas #20009, Setting 9 inch/mm)
     std::string en, ru, reference;

@@ -171,7 +171,7 @@ LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, s
     const std::string where = "lexical";
     r.check_keys(t, {"semicolon", "paren_comments", "line_comments", "incremental_letters", "axes", "diameter_letters",
                      "comma_words", "plain_direct_drawing", "subprogram_call", "decimal_comma", "calculator_decimal",
-                     "tool_word", "macro_b", "max_m_per_block", "label_search"},
+                     "tool_word", "macro_b", "max_m_per_block", "label_search", "if_words"},
                  where);
     for (const auto& [key, node] : t) set.emplace_back(key.str());
     if (t.contains("semicolon")) {
@@ -221,6 +221,7 @@ LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, s
             r.error(t.get("tool_word"), fmt::format("lexical.tool_word: unknown value '{}' (mmnn or number)", rules.tool_word));
     }
     rules.macro_b = r.boolean(t, "macro_b", where, rules.macro_b);
+    rules.if_words = r.boolean(t, "if_words", where, rules.if_words);
     if (t.contains("label_search")) {
         const std::string s = r.string(t, "label_search", where, false);
         if (s == "from-top") rules.label_search = LabelSearch::from_top;
@@ -483,7 +484,7 @@ void read_detect(Reader& r, const toml::table& root, DialectFile& file) {
 void read_variables(Reader& r, const toml::table& root, DialectFile& file) {
     file.variables_set = root.contains("variables");
     each_table(r, root, "variables", "top level", [&](const toml::table& e, const std::string& where) {
-        r.check_keys(e, {"from", "to", "kind", "alias_of", "first_set", "stride", "read_only", "units", "en", "ru", "reference"}, where);
+        r.check_keys(e, {"from", "to", "kind", "alias_of", "first_set", "stride", "axes", "read_only", "units", "en", "ru", "reference"}, where);
         VariableRange v;
         const auto integer = [&](std::string_view key) -> std::optional<std::int64_t> {
             const toml::node* n = e.get(key);
@@ -520,6 +521,7 @@ void read_variables(Reader& r, const toml::table& root, DialectFile& file) {
         if (const auto s = integer("first_set")) v.first_set = static_cast<int>(*s);
         if (const auto s = integer("stride")) v.stride = static_cast<int>(*s);
         if (v.stride < 1 || v.stride > 100) r.error(e.get("stride"), fmt::format("{}.stride: expected 1..100", where));
+        if (e.contains("axes")) v.axes = r.letters(e, "axes", where);
         v.read_only = r.boolean(e, "read_only", where, false);
         v.units = r.boolean(e, "units", where, false);
         v.en = r.string(e, "en", where, true);
@@ -626,6 +628,7 @@ void override_lexical(LexicalRules& lex, const DialectFile& file) {
         else if (key == "macro_b") lex.macro_b = o.macro_b;
         else if (key == "max_m_per_block") lex.max_m_per_block = o.max_m_per_block;
         else if (key == "label_search") lex.label_search = o.label_search;
+        else if (key == "if_words") lex.if_words = o.if_words;
     }
 }
 

@@ -22,6 +22,7 @@ dialects::LexicalRules permissive_rules() {
     r.line_comments = {"::", ";;"};
     r.comma_words = "ACR";
     r.macro_b = true;
+    r.if_words = true;   // Haas IF [...] G65: its words are evidence too
     return r;
 }
 

@@ -294,6 +294,7 @@ private:
     // [dialect variables] (executor_dialect_variables.cpp): nullopt/undefined when the range says so.
     std::optional<macro::Value> read_dialect_variable(const dialects::VariableRange& range, int number);
     macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value);
+    std::string machine_axes() const;   // the machine's axis letters in order (Setup::axis_order)
     // A code the dry run does not model (traits::not_modelled) says so (kerf warning 90102).
     void warn_not_modelled(const ast::BlockView& view);
     bool apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words);

@@ -34,12 +34,12 @@ void Executor::select_additional_work_offset(const ast::BlockView& view, const B
     for (const auto& [letter, value] : code.implied)
         if (letter == 'P' && !p) p = value;
     if (!p) {
-        alarm(*frame_, view, 33, fmt::format("{} without P: which additional work offset is meant (alarm 033)", code.spelling));
+        alarm(*frame_, view, 10, fmt::format("{} without P: which additional work offset is meant (alarm 010)", code.spelling));
         return;
     }
     const long n = std::lround(*p);
     if (n < 1 || n > kMaxAdditional || *p != static_cast<double>(n)) {
-        alarm(*frame_, view, 33, fmt::format("{} P{}: no additional work offset with that number (alarm 033)", code.spelling, *p));
+        alarm(*frame_, view, 10, fmt::format("{} P{}: no additional work offset with that number (alarm 010)", code.spelling, *p));
         return;
     }
     change_offsets([&] { additional_system_ = static_cast<int>(n); });

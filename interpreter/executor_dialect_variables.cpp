@@ -17,11 +17,19 @@ namespace {
 // The additional work offset and axis of a work-offset variable: #from is axis 0 of offset first_set.
 struct OffsetSlot {
     int number;
-    std::size_t axis_index;   // into the machine's axis order
+    std::size_t axis_index;   // into the range's axis letters, else the machine's axis order
 };
 OffsetSlot offset_slot(const dialects::VariableRange& range, int number) {
     const std::int64_t i = number - range.from;
     return {range.first_set + static_cast<int>(i / range.stride), static_cast<std::size_t>(i % range.stride)};
+}
+
+// The axis of a slot: the range's own letters (Haas: X Y Z A B C whatever the machine has), else
+// the machine's axis order (FANUC #5221..: the machine's axes).
+std::optional<Axis> slot_axis(const dialects::VariableRange& range, const OffsetSlot& slot, const std::string& machine_order) {
+    const std::string& letters = range.axes.empty() ? machine_order : range.axes;
+    if (slot.axis_index >= letters.size()) return std::nullopt;
+    return axis_of_letter(letters[slot.axis_index]);
 }
 
 }  // namespace
@@ -41,8 +49,7 @@ std::optional<macro::Value> Executor::read_dialect_variable(const dialects::Vari
         }
         case dialects::VariableKind::work_offsets: {
             const OffsetSlot slot = offset_slot(range, number);
-            if (slot.axis_index >= setup_.axis_order.size()) return Value::vacant_value();
-            const auto axis = axis_of_letter(setup_.axis_order[slot.axis_index]);
+            const auto axis = slot_axis(range, slot, machine_axes());
             if (!axis) return Value::vacant_value();
             const auto it = additional_offsets_.find(slot.number);
             return Value::of(it == additional_offsets_.end() ? 0.0 : it->second[static_cast<std::size_t>(*axis)]);
@@ -54,6 +61,8 @@ std::optional<macro::Value> Executor::read_dialect_variable(const dialects::Vari
     }
     return std::nullopt;
 }
+
+std::string Executor::machine_axes() const { return setup_.axis_order; }
 
 macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value) {
     using macro::WriteResult;
@@ -68,8 +77,7 @@ macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRang
             return WriteResult::ok;
         case dialects::VariableKind::work_offsets: {
             const OffsetSlot slot = offset_slot(range, number);
-            if (slot.axis_index >= setup_.axis_order.size()) return WriteResult::undefined;
-            const auto axis = axis_of_letter(setup_.axis_order[slot.axis_index]);
+            const auto axis = slot_axis(range, slot, machine_axes());
             if (!axis) return WriteResult::undefined;
             // The tool stays where it is; its work coordinates follow the new offset.
             change_offsets([&] { additional_offset(slot.number)[static_cast<std::size_t>(*axis)] = value.or_zero(); });

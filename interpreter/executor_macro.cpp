@@ -95,6 +95,11 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
             if (*c) return execute_statement(frame, view, tree.statements[static_cast<std::size_t>(s.then_statement)]);
             return true;
         }
+        case ast::StatementKind::if_words: {
+            // [Haas] IF [...] G65 P9725: the block's words run only when the condition holds.
+            const auto c = condition();
+            return c.value_or(false);
+        }
         case ast::StatementKind::if_goto:
         case ast::StatementKind::goto_: {
             if (s.kind == ast::StatementKind::if_goto) {

@@ -41,6 +41,7 @@ Project::SetupEntry load_setup(const fs::path& file, const dialects::Dialect& di
                                   fmt::format("machine '{}' is a {} but dialect '{}' is for {}s", m.id, kind_name(m.kind),
                                               dialect.id, kind_name(dialect.machine))});
     entry.setup = interpreter::make_setup(m);
+    entry.setup->machine_given = true;
     return entry;
 }
 

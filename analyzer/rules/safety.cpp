@@ -137,21 +137,33 @@ private:
     std::optional<std::int64_t> spindle_;    // the tool the last M06 loaded
 };
 
-// A main program that moves without G20 or G21 runs in whatever unit the control was left in (its
-// power-on parameter, or the last program's G20/G21): CGIP09902.NC of the corpus is an inch program
-// (T02 DIA 0.5000, 1/2 ENDMILL) with no G20, read in mm by a machine left in G21 (issue 15). A
-// subprogram (M99) takes its caller's unit; a program that reads the unit (#4006, or a variable the
-// dialect marks `units`, Haas Setting 9 #20009) adapts on purpose.
+// A main program that moves without G20 or G21 runs in whatever unit the control was left in. That
+// matters when the program is written in the other unit than the machine's power-on one: an inch
+// program (coordinates to 0.0001, the resolution inch posts write) on a machine that starts in mm,
+// as CGIP09902.NC and CGIP11719.NC of the corpus (T02 DIA 0.5000 1/2 ENDMILL, X-0.1522; no G20),
+// which the dry run and a machine left in G21 read 25.4 times too small (issue 15). A metric program
+// on a metric machine is left alone (the seeds never write G21), as is a subprogram (M99: its
+// caller's unit) and a program that reads the unit (#4006, or a variable the dialect marks `units`,
+// Haas Setting 9 #20009).
 class UnitsNotSet : public StaticCheck {
 public:
     void begin_program(const FileContext&, std::size_t, Reporter&) override {
         first_move_.reset();
         unit_set_ = reads_unit_ = main_ = false;
+        fractional_ = four_places_ = 0;
     }
     void block(const BlockContext& b, Reporter&) override {
         unit_set_ = unit_set_ || b.has_function(fn::inch_input) || b.has_function(fn::metric_input);
         main_ = main_ || b.has_function(fn::program_end) || b.has_function(fn::program_end_rewind);
-        if (!first_move_ && !b.view.axis_words().empty()) first_move_ = block_text_range(b);
+        const auto axes = b.view.axis_words();
+        if (!first_move_ && !axes.empty()) first_move_ = block_text_range(b);
+        for (const ast::AxisWord& a : axes) {
+            const std::string_view spelling = b.tree().spelling(b.token(a.token));
+            const std::size_t point = spelling.find('.');
+            if (point == std::string_view::npos || point + 1 == spelling.size()) continue;
+            ++fractional_;
+            four_places_ += spelling.size() - point - 1 == 4;
+        }
         const ast::SyntaxTree& tree = b.tree();
         block_expressions(tree, b.view, [&](std::int32_t root) {
             walk(tree, root, false, [&](std::int32_t i, bool) {
@@ -163,16 +175,29 @@ public:
             });
         }, [](std::int32_t) {});
     }
-    void end_program(const FileContext&, std::size_t, Reporter& out) override {
-        if (!main_ || unit_set_ || reads_unit_ || !first_move_) return;
-        out.report(*first_move_, "the program moves without G20 or G21: it runs in the unit the control was left in",
-                   "program G21 (mm) or G20 (inch) in the safe-start block");
+    void end_program(const FileContext& file, std::size_t, Reporter& out) override {
+        if (reported_ || !main_ || unit_set_ || reads_unit_ || !first_move_ || inch_at_power_on(file.dialect)) return;
+        // Inch resolution: at least 5 coordinates, a quarter of those with decimals, to 0.0001.
+        if (four_places_ < 5 || four_places_ * 4 < fractional_) return;
+        reported_ = true;   // once per file
+        out.report(*first_move_,
+                   fmt::format("the program moves without G20 or G21 and writes {} coordinates to 0.0001, the resolution of "
+                               "inch programs: a machine that starts in mm (as this one) reads them 25.4 times too small",
+                               four_places_),
+                   "program G20 (inch) or G21 (mm) in the safe-start block");
     }
 
 private:
     static constexpr int kUnitModal = 4006;   // [FANUC] #4006: the G20/G21 of modal group 06
+    // The power-on unit: the dialect's default code of the unit group (G21 on FANUC, semantics.md §1.3).
+    static bool inch_at_power_on(const dialects::Dialect& d) {
+        for (const dialects::CodeInfo* c : d.codes_with_function(fn::inch_input))
+            if (c->power_on_default) return true;
+        return false;
+    }
     std::optional<ast::Range> first_move_;
-    bool unit_set_ = false, reads_unit_ = false, main_ = false;
+    bool unit_set_ = false, reads_unit_ = false, main_ = false, reported_ = false;
+    std::size_t fractional_ = 0, four_places_ = 0;
 };
 
 // G28 X0 Z0 in absolute mode goes through the work zero (the part) on its way home.
@@ -198,7 +223,8 @@ class SpindleOverLimit : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         const double limit = b.file.setup.max_rpm;
-        if (limit <= 0 || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
+        // A built-in machine's limit is a guess (machine/data: [inference]): only a machine file's counts.
+        if (!b.file.setup.machine_given || limit <= 0 || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
         const auto s = number_word(b, 'S');
         if (!s || s->value <= limit) return;
         out.report(b.token(s->token).range(), fmt::format("S{:g} rpm is over the machine's spindle limit of {:g} rpm", s->value, limit),
@@ -250,10 +276,12 @@ void add_safety(Registry& r) {
         {"A lathe tool word with offset 00 (T0100).", "The tool cuts with no geometry or wear offset: off by the tool's length.",
          "T0100", "T0101", "dialects.md §3.5"})));
     r.add(static_rule<UnitsNotSet>(rule("K5024", "units-not-set", S::warning,
-        {"A main program that moves without ever programming G20 or G21 (and does not read the unit, #4006).",
+        {"A main program that moves without ever programming G20 or G21 (nor reading the unit, #4006) and writes its "
+         "coordinates to 0.0001, the resolution of inch programs, for a machine that starts in mm.",
          "The control keeps the unit it was left in: an inch program runs 25.4 times too small on a machine left in "
          "G21, and the dry run reads it in the machine's power-on unit.",
-         "G90 G54 G00 X1.5 Y2.\nM30", "G20 G90 G54 G00 X1.5 Y2.\nM30",
+         "G90 G54 G00 X1.5234 Y2.1250\nG01 Z-0.1250 F10.\nX2.5000 Y3.0625\nX0.5000\nM30",
+         "G20 G90 G54 G00 X1.5234 Y2.1250\nG01 Z-0.1250 F10.\nX2.5000 Y3.0625\nX0.5000\nM30",
          "corpus CGIP09902.NC (issue 15); semantics.md §1.3 power-on state"})));
     r.add(static_rule<LengthOffsetMismatch>(rule("K5019", "length-offset-mismatch", S::warning,
         {"G43 H with a number other than the tool in the spindle (mills).",
