@@ -138,6 +138,7 @@ public:
     std::optional<macro::Value> read(int number) override;
     macro::WriteResult write(int number, macro::Value value) override;
     bool read_only(int number) const override;
+    bool modelled(int number) const override;
 
 private:
     Executor& executor_;
@@ -349,6 +350,7 @@ private:
 
     // System variables (executor_system.cpp).
     std::optional<macro::Value> read_system(int number);
+    bool system_modelled(int number) const;
     macro::WriteResult write_system(int number, macro::Value value);
     bool system_read_only(int number) const;
 
