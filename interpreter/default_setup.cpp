@@ -108,6 +108,7 @@ Setup make_setup(const machine::Machine& m) {
                                                                                   : compensation::StartType::b;
     s.radius_comp.corners = sw.cutter_comp_corners == machine::CompCorners::arc ? compensation::CornerStyle::arc
                                                                                 : compensation::CornerStyle::intersection;
+    s.radius_comp.end_tolerance = sw.arc_tolerance;
     s.comp_shift_without_motion = sw.comp_shift_without_motion;
     s.g41_g42_swapped = sw.g41_g42_swapped;
     s.corner_slowdown_step = sw.corner_slowdown == machine::CornerSlowdown::step;
