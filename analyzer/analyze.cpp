@@ -105,7 +105,7 @@ public:
         : run_(run), registry_(registry), rules_(rules), tallies_(tallies), out_(out), hooks_(hooks) {
         for (const Rule* r : rules)
             if (r->make_dynamic) checks_.push_back({r->make_dynamic(), Reporter(*r, out, tallies.of(*r))});
-        own_guards_ = guards_own_arguments(check);
+        own_guards_ = guards_own_inputs(check);
     }
     void on_event(const interpreter::Event& e) override {
         if (hooks_.cancel && hooks_.cancel->load(std::memory_order_relaxed)) throw RunCancelled{};
@@ -137,15 +137,19 @@ private:
         Finding& f = reporter.report(trim_range(tree, e.source.range), e.text);
         f.notes.push_back("found by the dry run: the control stops here with an alarm");
     }
-    // The bytes of the checked program when it is a macro run without a caller: a #3000 alarm it
-    // raises there is its guard for a missing argument (IF [#1 EQ #0] THEN #3000=...), the macro's
-    // own check, not a defect (issue 15). nullopt: the program takes no arguments, or a caller is known.
-    std::optional<std::pair<std::uint32_t, std::uint32_t>> guards_own_arguments(const CheckOptions& check) const {
+    // The bytes of the checked program when it is a macro run without a caller, or a program whose
+    // inputs are common variables set elsewhere: a #3000 alarm it raises there is its guard for a
+    // missing argument or input (IF [#1 EQ #0] THEN #3000=...; 01000.nc's dispatcher when #101 is
+    // none of its cases), the program's own check, not a defect (issue 15). nullopt: the program
+    // takes no arguments or inputs, or a caller is known.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> guards_own_inputs(const CheckOptions& check) const {
         const interpreter::LoadedFile& loaded = run_.programs.file(run_.checked_file);
         const ast::TypedFile& typed = *loaded.whole_typed();
         if (typed.programs().empty()) return std::nullopt;
         const ProgramArguments arguments = program_arguments(typed, 0, check.caller_arguments);
-        if (arguments.caller_known || (!arguments.documented && argument_reads(typed, 0).none())) return std::nullopt;
+        if (arguments.caller_known ||
+            (!arguments.documented && argument_reads(typed, 0).none() && !reads_common_inputs(typed, 0)))
+            return std::nullopt;
         const ast::Program& p = typed.programs()[0];
         const ast::SyntaxTree& tree = typed.tree();
         const std::uint32_t end = p.end_block < tree.block_count() ? tree.blocks[p.end_block].begin

@@ -1,6 +1,9 @@
 #include "analyzer/arguments.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <optional>
+#include <set>
 #include <string>
 
 #include "analyzer/rules/common.hpp"
@@ -78,27 +81,50 @@ LocalSet file_caller_arguments(const ast::TypedFile& file, std::int64_t number, 
     return out;
 }
 
-LocalSet argument_reads(const ast::TypedFile& file, std::size_t program) {
+namespace {
+
+// Calls `first_read(n)` for each variable number in [lo, hi] that the program reads before anything
+// in it assigns it (text order, constant numbers only).
+void reads_before_assigned(const ast::TypedFile& file, std::size_t program, double lo, double hi,
+                           const std::function<void(int)>& first_read) {
     const ast::Program& p = file.programs()[program];
     const ast::SyntaxTree& tree = file.tree();
-    LocalSet assigned, read_first;
+    std::set<int> assigned;
+    const auto number = [&](std::int32_t name) -> std::optional<int> {
+        const auto n = rules::constant_of(tree, name);
+        if (!n || *n < lo || *n > hi || *n != std::floor(*n)) return std::nullopt;
+        return static_cast<int>(*n);
+    };
     for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
         const ast::BlockView view = file.block(b);
         const auto read = [&](std::int32_t root) {
             rules::walk(tree, root, false, [&](std::int32_t i, bool) {
                 const ast::Expr& e = tree.exprs[static_cast<std::size_t>(i)];
                 if (e.kind != ast::ExprKind::variable) return;
-                const auto n = rules::constant_of(tree, e.a);
-                if (n && *n >= 1 && *n <= 33 && !assigned[static_cast<std::size_t>(*n)]) read_first.set(static_cast<std::size_t>(*n));
+                if (const auto n = number(e.a); n && !assigned.count(*n)) first_read(*n);
             });
         };
         const auto assign = [&](std::int32_t target) {
-            if (const auto n = rules::constant_of(tree, tree.exprs[static_cast<std::size_t>(target)].a); n && *n >= 1 && *n <= 33)
-                assigned.set(static_cast<std::size_t>(*n));
+            if (const auto n = number(tree.exprs[static_cast<std::size_t>(target)].a)) assigned.insert(*n);
         };
         rules::block_expressions(tree, view, read, assign);
     }
+}
+
+}  // namespace
+
+LocalSet argument_reads(const ast::TypedFile& file, std::size_t program) {
+    LocalSet read_first;
+    reads_before_assigned(file, program, 1, 33, [&](int n) { read_first.set(static_cast<std::size_t>(n)); });
     return read_first;
+}
+
+bool reads_common_inputs(const ast::TypedFile& file, std::size_t program) {
+    bool found = false;
+    const auto seen = [&](int) { found = true; };
+    reads_before_assigned(file, program, 100, 199, seen);
+    reads_before_assigned(file, program, 500, 999, seen);
+    return found;
 }
 
 LocalSet vacancy_tested(const ast::TypedFile& file, std::size_t program) {

@@ -26,6 +26,11 @@ LocalSet file_caller_arguments(const ast::TypedFile& file, std::int64_t number, 
 // empty: the program is a macro that expects arguments.
 LocalSet argument_reads(const ast::TypedFile& file, std::size_t program);
 
+// Whether a program reads a common variable (#100–#199, #500–#999) before anything in it assigns
+// it: an input the operator or another program sets (versabuilt 01000.nc "#101 is our op cycle
+// count and must be initialized to 1").
+bool reads_common_inputs(const ast::TypedFile& file, std::size_t program);
+
 // The locals a program tests for vacancy (`#2 EQ #0`, `#7 NE #0`): arguments it knows may be
 // missing and checks (O09985 "IF [ #2 EQ #0 ] GOTO104 ( B CALL CHECK )").
 LocalSet vacancy_tested(const ast::TypedFile& file, std::size_t program);

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "analyzer/rules/common.hpp"
+#include "interpreter/events.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -15,6 +16,15 @@ bool is_axis(const ast::Token& t) {
 
 // X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm.
 class MissingDecimalPoint : public StaticCheck {
+    static constexpr double kDeliberateIncrements = 10000;
+
+    // Degrees on a rotary axis of the machine (A B C by default), mm elsewhere.
+    static const char* unit_of(const BlockContext& b, const ast::Token& t) {
+        if (!is_axis(t)) return "mm";
+        const auto axis = interpreter::axis_of_letter(t.letter);
+        return axis && b.file.setup.rotary[static_cast<std::size_t>(*axis)] ? "°" : "mm";
+    }
+
 public:
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.setup.calculator_decimal) return;
@@ -29,11 +39,15 @@ public:
             if (!is_axis(t) && !arc_word) continue;
             const double value = b.tree().number_value(t);
             if (value == 0) continue;   // X0 is zero either way
+            // Five digits and more are increments on purpose: nobody forgets the point of a 10 m
+            // move (ALL-PROG's C_RUN "G91 G01 C360000": one turn in 0.001° increments).
+            if (std::fabs(value) >= kDeliberateIncrements) continue;
             const std::string_view spelling = b.tree().spelling(t);
+            const char* unit = unit_of(b, t);
             out.report(t.range(),
-                       fmt::format("'{}' has no decimal point: the control reads {} increments = {:g} mm, not {:g} mm",
-                                   spelling, value, value * b.file.setup.increment_mm, value),
-                       fmt::format("write '{}.' if {:g} mm is meant", spelling, value))
+                       fmt::format("'{}' has no decimal point: the control reads {} increments = {:g} {}, not {:g} {}",
+                                   spelling, value, value * b.file.setup.increment_mm, unit, value, unit),
+                       fmt::format("write '{}.' if {:g} {} is meant", spelling, value, unit))
                 .notes.push_back("the machine reads integers as least input increments (calculator-type input off)");
         }
     }

@@ -44,6 +44,22 @@ ast::Range block_range(const FileContext& file, std::uint32_t block) {
     return {tokens.front().begin, tokens.back().begin + tokens.back().length};
 }
 
+// An O word after the first word of a block ('M99O0810(Z_AXIS)', K3012): kerf reads the blocks
+// after it as the program before, but they may be another program whose N numbers repeat the first
+// one's. Duplicate labels in such a merged program are the merge's, reported once by K3012.
+bool merges_programs(const FileContext& file, std::size_t program) {
+    const ast::Program& p = file.typed.programs()[program];
+    for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
+        bool first = true;
+        for (const ast::Token& t : file.tree().block_tokens(b)) {
+            if (t.kind != ast::TokenKind::word) continue;
+            if (t.letter == 'O' && t.role() == ast::Role::program && !first) return true;
+            first = false;
+        }
+    }
+    return false;
+}
+
 class LabelCheck : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
@@ -76,8 +92,12 @@ public:
 // jump has one target: nothing to report.
 class AmbiguousLabel : public LabelCheck {
 public:
+    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        LabelCheck::begin_program(file, program, out);
+        merged_ = merges_programs(file, program);
+    }
     void block(const BlockContext& b, Reporter& out) override {
-        if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
+        if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward || merged_) return;
         for (const Target& t : local_targets(b))
             if (const int n = labels().count(t.label); n > 1) {
                 Finding& f = out.report(b.token(t.token).range(),
@@ -91,6 +111,9 @@ public:
                 }
             }
     }
+
+private:
+    bool merged_ = false;
 };
 
 struct CalledProgram {
@@ -276,7 +299,8 @@ public:
         if (computed_) return;   // GOTO #1 may reach any label
         const auto n = b.view.sequence_number();
         if (n && std::binary_search(targets_->begin(), targets_->end(), static_cast<std::int64_t>(*n))) dead_ = false;
-        if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted)) {
+        if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted) &&
+            !heading(b)) {
             out.report(block_text_range(b), "no path reaches this block: it follows the end of the program or a GOTO",
                        "remove the dead blocks, or give them a label that a GOTO or M98 Q jumps to");
             reported_ = true;
@@ -285,6 +309,14 @@ public:
     }
 
 private:
+    // "N900 ( ALARMS )" between a GOTO and the labels below it (Renishaw O09994): a heading that
+    // does nothing when it is not run, not dead code worth a finding.
+    static bool heading(const BlockContext& b) {
+        const auto tokens = b.view.tokens();
+        return std::all_of(tokens.begin(), tokens.end(), [](const ast::Token& t) {
+            return t.kind == ast::TokenKind::comment || t.kind == ast::TokenKind::eob || (t.kind == ast::TokenKind::word && t.letter == 'N');
+        });
+    }
     static bool unconditional_goto(const BlockContext& b) {
         if (b.view.block().has(ast::block_flags::deleted)) return false;
         for (const std::uint32_t s : b.view.statements())
@@ -317,10 +349,13 @@ private:
 // The same N on several blocks of one program (the MANIFEST's student programs: O0001 N130–N150,
 // O0005 N30/N70): searching for the block, restarting the program at it or renumbering it finds
 // the first one. Labels that jumps land on are K3002's; in a dialect whose label search goes forward
-// from the jump (Haas), repeated jump labels are local labels on purpose and not reported (issue 15).
+// from the jump (Haas), repeated labels are local labels on purpose and not reported (issue 15).
 class DuplicateSequenceNumber : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+        // Where labels are searched forward from the jump (Haas), N numbers are local labels: the
+        // Renishaw macros repeat N76 (INCH) / N77 (METRIC) in each section on purpose (issue 15).
+        if (merges_programs(file, program) || file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
         const ast::Program& p = file.typed.programs()[program];
         std::map<std::int64_t, std::vector<std::uint32_t>> blocks;
         std::set<std::int64_t> targets;
@@ -349,8 +384,9 @@ public:
 };
 
 // An O word after the first word of a block (ALL-PROG.TXT: 'M99O0810(Z_AXIS)', the line break
-// before O0810 lost): the program number starts a program only at the start of a block, so the
-// control, like kerf, reads the rest of the file as part of the program before (issue 15).
+// before O0810 lost). The program number starts a program at the start of a block (dialects.md
+// §3.4); what a control makes of one in the middle of a block is not written down anywhere kerf
+// has read [inference], so kerf says how it reads it: as part of the program before (issue 15).
 class ProgramNumberInsideBlock : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
@@ -359,8 +395,8 @@ public:
             if (t.kind != ast::TokenKind::word) continue;
             if (t.letter == 'O' && t.role() == ast::Role::program && !first)
                 out.report(t.range(),
-                           fmt::format("{} is not at the start of a block: no program starts here, the blocks after it "
-                                       "belong to the program before", b.tree().spelling(t)),
+                           fmt::format("{} is not at the start of a block: a program starts at the start of a block, so kerf "
+                                       "reads the blocks after it as part of the program before", b.tree().spelling(t)),
                            fmt::format("put {} on a line of its own", b.tree().spelling(t)));
             first = false;
         }
@@ -447,8 +483,9 @@ void add_references(Registry& r) {
          "corpus MANIFEST 'duplicate N numbers' (O0001, O0005); dialects.md §2 Sequence number"})));
     r.add(static_rule<ProgramNumberInsideBlock>(rule("K3012", "program-number-inside-block", S::error,
         {"An O program number that is not the first word of its block (a line break lost before it).",
-         "No program starts there: the blocks after it belong to the program before (its labels, its M99), and "
-         "calls to that O number do not find it.",
+         "A program starts with its O number at the start of a block: kerf reads the blocks after it as part of the "
+         "program before (its labels, its M99) and calls to that O number do not find it; what a control does with "
+         "it is not documented [inference].",
          "M99O0810(Z_AXIS)", "M99\nO0810(Z_AXIS)", "corpus ALL-PROG.TXT (issue 15); dialects.md §3.4"})));
     r.add(static_rule<ProgramInSeveralFiles>(rule("K3010", "program-in-several-files", S::warning,
         {"M98 P, G65 P or G66 P to a program number that several other files of the folder (or the library "

@@ -1,6 +1,7 @@
 // Static safety rules read in text order with the modal state of the listing (semantics.md §4–§7).
 #include "analyzer/rules/common.hpp"
 #include "analyzer/rules/expressions.hpp"
+#include "interpreter/events.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -208,6 +209,8 @@ public:
         for (const ast::AxisWord& a : b.view.axis_words()) {
             if (a.incremental) continue;
             const ast::Token& t = b.token(a.token);
+            // A table turning to B0 on its way home moves no tool through the part (O09994 "G28 B0.").
+            if (const auto axis = interpreter::axis_of_letter(t.letter); axis && b.file.setup.rotary[static_cast<std::size_t>(*axis)]) continue;
             out.report(t.range(),
                        fmt::format("G28 in absolute mode moves first to the work position {}: through the part if it is in the way",
                                    b.tree().spelling(t)),
