@@ -90,8 +90,8 @@ bench: deps
 # clang and its libFuzzer runtime (Debian: clang, libclang-rt-14-dev). The targets and how to run
 # them: fuzz/README.md.
 FUZZ_PACKAGES := clang libclang-rt-14-dev
-FUZZ_TARGETS := fuzz_grammar fuzz_interpreter fuzz_analyzer fuzz_formatter fuzz_machine_toml fuzz_dialect_toml \
-                fuzz_input fuzz_kerf_toml
+FUZZ_TARGETS := fuzz_grammar fuzz_interpreter fuzz_analyzer fuzz_formatter fuzz_converter fuzz_machine_toml fuzz_dialect_toml \
+                fuzz_input fuzz_kerf_toml fuzz_lsp
 fuzz: deps
 	$(call install_missing,$(FUZZ_PACKAGES))
 	cmake -S . -B build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DKERF_FUZZ=ON -DKERF_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo

@@ -10,27 +10,52 @@
 #include <fmt/format.h>
 
 #include "analyzer/arguments.hpp"
+#include "analyzer/static_walk.hpp"
 #include "analyzer/suppress.hpp"
 #include "dialects/alarms.hpp"
 #include "interpreter/interpreter.hpp"
 
 namespace kerf::analyzer {
 
+namespace detail {
+
 namespace {
+bool active(const ActiveRules& rules, const Rule* r) { return r && std::find(rules.begin(), rules.end(), r) != rules.end(); }
+}  // namespace
 
-using ActiveRules = std::vector<const Rule*>;
-
-bool modal_code(const dialects::CodeInfo& c) { return c.modal && !c.group.empty() && c.group != "00"; }
-
-void update_modal(ModalState& modal, std::span<const ast::CodeRef> g) {
-    for (const ast::CodeRef& ref : g)
-        if (ref.info && modal_code(*ref.info)) modal.set(*ref.info);
+void map_diagnostics(const ast::SyntaxTree& tree, const std::vector<ast::Diagnostic>& diagnostics, const Registry& registry,
+                     const ActiveRules& rules, const std::function<RuleTally*(const Rule&)>& tally_of, std::vector<Finding>& out) {
+    for (const ast::Diagnostic& d : diagnostics) {
+        const Rule* rule = registry.for_diagnostic(d.code);
+        if (!active(rules, rule)) continue;
+        Reporter reporter(*rule, out, tally_of(*rule));
+        Finding& f = reporter.report(d.range, d.message, d.hint);
+        f.notes.push_back("parser diagnostic " + d.code + " (docs/diagnostics.md)");
+        if (rule->diagnostic_fix) f.fix = rule->diagnostic_fix(tree, d);
+    }
 }
 
-struct StaticRun {
-    std::unique_ptr<StaticCheck> check;
-    Reporter out;
-};
+ActiveRules active_rules(const Registry& registry, const CheckConfig& config) {
+    ActiveRules rules;
+    for (const Rule& r : registry.rules())
+        if (config.enabled(r)) rules.push_back(&r);
+    return rules;
+}
+
+const Registry& registry_of(const CheckOptions& options) { return options.registry ? *options.registry : builtin_rules(); }
+
+}  // namespace detail
+
+namespace {
+
+using detail::active;
+using detail::active_rules;
+using detail::map_diagnostics;
+using detail::registry_of;
+
+using detail::ActiveRules;
+using detail::modal_code;
+using detail::StaticRun;
 
 // One tally per rule for one side of the check (the static rules and the parser's diagnostics on
 // the calling thread, the dry run on its own): see RuleTally.
@@ -51,43 +76,27 @@ private:
     std::map<const Rule*, RuleTally> tallies_;
 };
 
+std::function<RuleTally*(const Rule&)> tally_of(Tallies& tallies) {
+    return [&tallies](const Rule& rule) { return tallies.of(rule); };
+}
+
 // Every static check sees every code block once, in text order, with the codes computed once.
 void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& tallies, std::vector<Finding>& out,
                 const std::atomic<bool>* cancel = nullptr) {
     std::vector<StaticRun> checks;
     for (const Rule* r : rules)
-        if (r->make_static) checks.push_back({r->make_static(), Reporter(*r, out, tallies.of(*r))});
+        if (r->make_static) checks.push_back({r, r->make_static(), Reporter(*r, out, tallies.of(*r))});
     if (checks.empty()) return;
-    std::vector<ast::CodeRef> g, m;
+    detail::BlockStep step;
     const std::vector<ast::Program>& programs = ctx.typed.programs();
     for (std::size_t p = 0; p < programs.size(); ++p) {
-        ModalState modal(ctx.dialect);
+        ModalState modal(ctx.dialect, ctx.setup.power_on);
         for (StaticRun& c : checks) c.check->begin_program(ctx, p, c.out);
         for (std::uint32_t b = programs[p].first_block; b < programs[p].end_block; ++b) {
             if (cancel && (b & 4095) == 0 && cancel->load(std::memory_order_relaxed)) return;
-            const ast::BlockView view = ctx.typed.block(b);
-            const ast::BlockKind kind = view.block().kind;
-            if (kind != ast::BlockKind::code && kind != ast::BlockKind::program_start) continue;
-            view.collect_codes(g, m);
-            const BlockContext block{ctx, view, g, m, modal, p};
-            for (StaticRun& c : checks) c.check->block(block, c.out);
-            update_modal(modal, g);
+            step(ctx, checks, modal, p, b);
         }
         for (StaticRun& c : checks) c.check->end_program(ctx, p, c.out);
-    }
-}
-
-bool active(const ActiveRules& rules, const Rule* r) { return r && std::find(rules.begin(), rules.end(), r) != rules.end(); }
-
-void map_diagnostics(const ast::SyntaxTree& tree, const std::vector<ast::Diagnostic>& diagnostics,
-                     const Registry& registry, const ActiveRules& rules, Tallies& tallies, std::vector<Finding>& out) {
-    for (const ast::Diagnostic& d : diagnostics) {
-        const Rule* rule = registry.for_diagnostic(d.code);
-        if (!active(rules, rule)) continue;
-        Reporter reporter(*rule, out, tallies.of(*rule));
-        Finding& f = reporter.report(d.range, d.message, d.hint);
-        f.notes.push_back("parser diagnostic " + d.code + " (docs/diagnostics.md)");
-        if (rule->diagnostic_fix) f.fix = rule->diagnostic_fix(tree, d);
     }
 }
 
@@ -174,14 +183,15 @@ bool needs_run(const ActiveRules& rules) {
 bool run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                  const interpreter::Setup& setup, const Registry& registry, const ActiveRules& rules,
                  const CheckOptions& check, Tallies& tallies, std::vector<Finding>& out, const DryRunHooks& hooks = {}) {
-    const std::optional<interpreter::ProgramRef> main = programs.first_program(file);
+    const std::optional<interpreter::ProgramRef> main = check.main ? check.main : programs.first_program(file);
     if (!main || (!needs_run(rules) && !hooks.observer)) return true;
     const RunContext run{programs, file, dialect, setup};
     FanOut sink(run, registry, rules, tallies, out, hooks, check);
-    interpreter::RunOptions options;
+    interpreter::RunOptions options = check.run;
     options.lenient = true;   // syntax defects are the syntax rules' findings; go on and check the rest
     options.time_limit = check.time_limit;
     options.emit_state = hooks.emit_state;
+    options.after_block = hooks.after_block;
     options.resident = check.resident;
     try {
         interpreter::run(programs, *main, dialect, setup, sink, options);
@@ -224,15 +234,6 @@ void cap_per_rule(std::vector<Finding>& findings, std::size_t limit, const std::
     }
 }
 
-
-ActiveRules active_rules(const Registry& registry, const CheckConfig& config) {
-    ActiveRules rules;
-    for (const Rule& r : registry.rules())
-        if (config.enabled(r)) rules.push_back(&r);
-    return rules;
-}
-
-const Registry& registry_of(const CheckOptions& options) { return options.registry ? *options.registry : builtin_rules(); }
 
 // Suppressed findings out, configured severities in, one finding per rule and line (a static rule
 // and the dry run may both see the same defect), sorted by position.
@@ -303,8 +304,8 @@ std::vector<Finding> check_static(const interpreter::ProgramSet& programs, std::
     ctx.resident = options.resident;
     ctx.caller_arguments = options.caller_arguments;
     run_static(ctx, rules, tallies, out, cancel);
-    map_diagnostics(tree, tree.diagnostics, registry, rules, tallies, out);
-    map_diagnostics(tree, typed.diagnostics(), registry, rules, tallies, out);
+    map_diagnostics(tree, tree.diagnostics, registry, rules, tally_of(tallies), out);
+    map_diagnostics(tree, typed.diagnostics(), registry, rules, tally_of(tallies), out);
     return out;
 }
 
@@ -397,8 +398,8 @@ std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t
     ctx.resident = options.resident;
     ctx.caller_arguments = options.caller_arguments;
     run_static(ctx, rules, static_tallies, out);
-    map_diagnostics(tree, tree.diagnostics, registry, rules, static_tallies, out);
-    map_diagnostics(tree, typed.diagnostics(), registry, rules, static_tallies, out);
+    map_diagnostics(tree, tree.diagnostics, registry, rules, tally_of(static_tallies), out);
+    map_diagnostics(tree, typed.diagnostics(), registry, rules, tally_of(static_tallies), out);
     if (parallel) run_thread.join();
     else if (options.dry_run) dry_run();
     out.insert(out.end(), std::make_move_iterator(dynamic.begin()), std::make_move_iterator(dynamic.end()));
@@ -414,7 +415,7 @@ std::vector<Finding> check_text(std::string name, std::string text, const dialec
     return check_file(programs, file, dialect, setup, options);
 }
 
-ModalState::ModalState(const dialects::Dialect& dialect) {
+ModalState::ModalState(const dialects::Dialect& dialect, const std::vector<dialects::FunctionId>& power_on) {
     for (const dialects::CodeInfo& c : dialect.codes()) {
         if (!modal_code(c)) continue;
         const auto slot = std::find_if(slots_.begin(), slots_.end(), [&](const Slot& s) { return s.first == c.group; });
@@ -422,6 +423,13 @@ ModalState::ModalState(const dialects::Dialect& dialect) {
         if (slot == slots_.end()) slots_.emplace_back(c.group, active);
         else if (active) slot->second = active;
     }
+    for (const dialects::FunctionId function : power_on)
+        for (const dialects::CodeInfo* c : dialect.codes_with_function(function))
+            if (modal_code(*c)) set(*c);
+}
+
+bool ModalState::has_trait(std::uint32_t trait) const {
+    return std::any_of(slots_.begin(), slots_.end(), [&](const Slot& s) { return s.second && s.second->has(trait); });
 }
 
 void ModalState::set(const dialects::CodeInfo& code) {

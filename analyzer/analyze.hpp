@@ -14,6 +14,7 @@
 #include "analyzer/config.hpp"
 #include "analyzer/finding.hpp"
 #include "analyzer/registry.hpp"
+#include "interpreter/interpreter.hpp"
 #include "interpreter/program_set.hpp"
 #include "interpreter/setup.hpp"
 #include "interpreter/sink.hpp"
@@ -49,6 +50,11 @@ struct CheckOptions {
     // The argument letters the callers found by the program index pass to program O`number` (as local
     // variable numbers, #1 A ... #26 Z); empty or unset: no caller known (K4001).
     std::function<std::vector<int>(std::int64_t number)> caller_arguments;
+    // How the dry run starts (project/start.hpp): its passes and preset variables (the analyzer
+    // sets lenient, time_limit and emit_state), and the main program when it is not the file's
+    // first (a caller's block: a macro run as it is used).
+    interpreter::RunOptions run;
+    std::optional<interpreter::ProgramRef> main;
 };
 
 // Checks file `file` of `programs` (its first program is run as the main program).
@@ -70,6 +76,7 @@ std::vector<Finding> check_static(const interpreter::ProgramSet& programs, std::
 struct DryRunHooks {
     interpreter::EventSink* observer = nullptr;   // also sees every event of the run (with state events)
     bool emit_state = false;                       // RunOptions::emit_state, for the observer only
+    decltype(interpreter::RunOptions::after_block) after_block;   // RunOptions::after_block
     const std::atomic<bool>* cancel = nullptr;     // once set, the run stops at its next event
 };
 // The dry run's findings (dynamic rules and alarms); nullopt when `hooks.cancel` stopped it.

@@ -5,9 +5,11 @@
 // by the rules that list their codes, so a defect the grammar already found is not detected twice.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -20,6 +22,7 @@
 #include "interpreter/events.hpp"
 #include "interpreter/program_set.hpp"
 #include "interpreter/setup.hpp"
+#include "references/references.hpp"
 
 namespace kerf::analyzer {
 
@@ -74,6 +77,12 @@ public:
 private:
     std::vector<std::int64_t> sorted_;
 };
+using LabelTables = std::map<std::size_t, LabelTable>;   // program index → its labels
+
+// Every N number something in the file can jump to, sorted: the constant labels of macro statements
+// and the numbers of P and Q words (calls, cycles, returns); `computed` when a GOTO's target is an
+// expression (K3007; incremental checking: a label that is no target matters to no rule).
+std::vector<std::int64_t> jump_targets(const ast::SyntaxTree& tree, bool& computed);
 
 // What a static check sees of the whole file.
 struct FileContext {
@@ -98,9 +107,13 @@ struct FileContext {
     const ast::SyntaxTree& tree() const { return typed.tree(); }
     // The labels of program `program` (typed.programs() index), computed on first use.
     const LabelTable& labels(std::size_t program) const;
+    // The tables computed so far, and tables computed by an earlier walk of the same labels
+    // (incremental checking carries them over edits that change no N number: incremental.hpp).
+    LabelTables take_labels() const { return std::move(labels_); }
+    void adopt_labels(LabelTables labels) const { labels_ = std::move(labels); }
 
 private:
-    mutable std::map<std::size_t, LabelTable> labels_;
+    mutable LabelTables labels_;
 };
 
 // The text-order modal state before a block: one slot per modal group (power-on defaults first),
@@ -109,10 +122,14 @@ private:
 class ModalState {
 public:
     using Slot = std::pair<std::string_view, const dialects::CodeInfo*>;   // group, active code (or none)
-    explicit ModalState(const dialects::Dialect& dialect);
+    // The power-on state: the dialect table's defaults, then the machine's power-on switches
+    // (interpreter Setup::power_on), as the dry run starts.
+    explicit ModalState(const dialects::Dialect& dialect, const std::vector<dialects::FunctionId>& power_on = {});
+    bool has_trait(std::uint32_t trait) const;   // an active code has it (dialects::traits::inch ...)
     void set(const dialects::CodeInfo& code);   // `code` becomes the active code of its group
     std::vector<Slot>::const_iterator begin() const { return slots_.begin(); }
     std::vector<Slot>::const_iterator end() const { return slots_.end(); }
+    friend bool operator==(const ModalState&, const ModalState&) = default;
 
 private:
     std::vector<Slot> slots_;
@@ -136,14 +153,53 @@ struct BlockContext {
     }
     bool modal_function(dialects::FunctionId function) const; // active before the block
     const ast::Token& token(std::uint32_t i) const { return tree().tokens[i]; }
+    // What several rules of every block ask, computed once per block on first use.
+    const std::vector<references::Reference>& references() const {   // references::block_references
+        if (!references_) references_ = references::block_references(file.typed, static_cast<std::uint32_t>(program), static_cast<std::uint32_t>(view.index()));
+        return *references_;
+    }
+    const std::vector<std::uint32_t>& statements() const {   // ast::BlockView::statements
+        if (!statements_) statements_ = view.statements();
+        return *statements_;
+    }
+    mutable std::optional<std::vector<references::Reference>> references_{};
+    mutable std::optional<std::vector<std::uint32_t>> statements_{};
 };
 
+// The state a static check carries from one block to the next, written as numbers. Incremental
+// checking (analyzer/incremental.hpp, the language server) resumes a walk after an edit from a copy
+// of the checks taken before it, and stops once every check writes the same state as the last walk
+// wrote at the same place: from there on that walk's findings hold. A token index is written
+// relative to the first token of the block where the state is taken, so that an edit before both
+// leaves equal states equal (and one between them makes them differ, which only costs a longer walk).
+class StateKey {
+public:
+    explicit StateKey(std::uint32_t first_token) : first_token_(first_token) {}
+    void add(std::int64_t value) { values_.push_back(value); }
+    void token(std::uint32_t index) { values_.push_back(static_cast<std::int64_t>(index) - first_token_); }
+    void separate() { values_.push_back(INT64_MIN); }   // between the checks' parts
+    const std::vector<std::int64_t>& values() const { return values_; }
+
+private:
+    std::int64_t first_token_;
+    std::vector<std::int64_t> values_;
+};
+
+// A static check sees the blocks of each program in text order. Contract of incremental checking:
+// what a check reports about a block depends on that block, the modal state, FileContext and the
+// state the check carries (written by state()); what it reads of other blocks (in begin_program,
+// end_program or through the tree: labels, jump targets, program numbers, comments, M codes) must
+// be among the facts analyzer::static_facts digests (incremental.hpp), so that an edit that changes
+// them is checked whole. tests/analyzer/test_incremental.cpp compares both ways on every example.
 class StaticCheck {
 public:
     virtual ~StaticCheck() = default;
     virtual void begin_program(const FileContext&, std::size_t program, Reporter&) {}
     virtual void block(const BlockContext& b, Reporter& out) = 0;
     virtual void end_program(const FileContext&, std::size_t program, Reporter&) {}
+    // The state carried between blocks (none for a check without data members; static_rule<C> in
+    // rules/common.hpp refuses to compile a check with members that does not write them).
+    virtual void state(StateKey&) const {}
 };
 
 // What a dynamic check sees: the run's files (events point into them) and the checked file.
@@ -177,6 +233,8 @@ struct Rule {
     // A fix for a mapped diagnostic (the letter O of "MO6" becomes 0), or nullopt.
     std::function<std::optional<Fix>(const ast::SyntaxTree&, const ast::Diagnostic&)> diagnostic_fix;
     std::function<std::unique_ptr<StaticCheck>()> make_static;
+    // A copy of a check made by make_static, its state included (incremental checking's checkpoints).
+    std::function<std::unique_ptr<StaticCheck>(const StaticCheck&)> clone_static;
     std::function<std::unique_ptr<DynamicCheck>()> make_dynamic;
 };
 

@@ -34,17 +34,31 @@ std::optional<std::vector<std::string>> parse(std::string_view comment) {
 }  // namespace
 
 std::vector<Suppression> find_suppressions(const ast::SyntaxTree& tree) {
+    // Every suppression holds the marker: search the text for it (memchr speed, as the language
+    // server finishes its findings on every keystroke of a million-line file) and look at the
+    // comment around each one.
     std::vector<Suppression> out;
-    bool header = true;   // no code block yet
-    for (std::size_t b = 0; b < tree.block_count(); ++b) {
-        const ast::BlockKind kind = tree.blocks[b].kind;
-        if (kind == ast::BlockKind::code) header = false;
+    const std::string_view text = tree.text;
+    std::size_t first_code = tree.block_count();   // the blocks before it are the header
+    for (std::size_t b = 0; b < tree.block_count(); ++b)
+        if (tree.blocks[b].kind == ast::BlockKind::code) {
+            first_code = b;
+            break;
+        }
+    for (std::size_t at = text.find(kMarker); at != std::string_view::npos; at = text.find(kMarker, at + 1)) {
+        const auto block = std::upper_bound(tree.blocks.begin(), tree.blocks.end(), at,
+                                            [](std::size_t offset, const ast::Block& b) { return offset < b.begin; });
+        if (block == tree.blocks.begin()) continue;
+        const auto b = static_cast<std::size_t>(block - tree.blocks.begin() - 1);
         for (const ast::Token& t : tree.block_tokens(b)) {
-            if (t.kind != ast::TokenKind::comment) continue;
+            if (t.kind != ast::TokenKind::comment || !t.range().contains(static_cast<std::uint32_t>(at))) continue;
+            // The first marker of the comment decides (parse), once.
+            if (tree.spelling(t).find(kMarker) != at - t.begin) break;
             if (auto ids = parse(tree.spelling(t))) {
                 const ast::Range all{0, UINT32_MAX};   // also findings at the very end of the text
-                out.push_back({header ? all : tree.block_range(b), std::move(*ids)});
+                out.push_back({b < first_code ? all : tree.block_range(b), std::move(*ids)});
             }
+            break;
         }
     }
     return out;

@@ -74,15 +74,47 @@ LineIndex::LineIndex(std::string_view text) : text_(text) {
     // are ASCII throughout: one pass eight bytes at a time says so.
     ascii_.assign(starts_.size(), true);
     if (all_ascii(text)) return;
-    for (std::size_t line = 0; line < starts_.size(); ++line) {
-        const std::size_t end = line + 1 < starts_.size() ? starts_[line + 1] : text.size();
-        for (std::size_t i = starts_[line]; i < end; ++i) {
-            if (static_cast<unsigned char>(text[i]) >= 0x80) {
-                ascii_[line] = false;
-                break;
-            }
+    for (std::size_t line = 0; line < starts_.size(); ++line) ascii_[line] = line_is_ascii(line);
+}
+
+bool LineIndex::line_is_ascii(std::size_t line) const {
+    const std::size_t end = line + 1 < starts_.size() ? starts_[line + 1] : text_.size();
+    return all_ascii(text_.substr(starts_[line], end - starts_[line]));
+}
+
+void LineIndex::edit(std::string_view text, std::uint32_t begin, std::uint32_t old_end, std::uint32_t new_end) {
+    // A line starts at p when text[p - 1] ends a line ('\n', or a '\r' that text[p] does not
+    // follow with '\n'): a start before `begin` reads only bytes before it and stays; one past
+    // new_end reads only moved bytes, so it is an old start moved. The lines between are read again
+    // from the start of the line that holds begin - 1.
+    const std::int64_t delta = static_cast<std::int64_t>(new_end) - static_cast<std::int64_t>(old_end);
+    const std::uint32_t first = begin == 0 ? 0 : line_of(begin - 1);
+    std::vector<std::uint32_t> starts(starts_.begin(), starts_.begin() + first + 1);
+    text_ = text;
+    LineBreaks breaks(text);
+    std::uint32_t resumed = 0;   // the first old start (moved) past the edited lines, 0 when none
+    for (std::size_t pos = starts.back(); pos < text.size();) {
+        const LineBreaks::Line line = breaks.line_from(pos);
+        if (line.end >= text.size()) break;
+        pos = line.next;
+        starts.push_back(static_cast<std::uint32_t>(pos));
+        if (pos > new_end) {
+            resumed = static_cast<std::uint32_t>(pos);
+            break;
         }
     }
+    const std::size_t edited_end = starts.size();   // the lines [first, edited_end) were read again
+    if (resumed) {
+        const auto old_at = std::upper_bound(starts_.begin(), starts_.end(), static_cast<std::uint32_t>(resumed - delta));
+        for (auto it = old_at; it != starts_.end(); ++it) starts.push_back(static_cast<std::uint32_t>(*it + delta));
+    }
+    // The flags: those of the lines before, read again for the edited lines, moved for the rest.
+    std::vector<bool> ascii(ascii_.begin(), ascii_.begin() + first);
+    const std::size_t moved_from = ascii_.size() - (starts.size() - edited_end);
+    starts_ = std::move(starts);
+    for (std::size_t line = first; line < edited_end; ++line) ascii.push_back(line_is_ascii(line));
+    ascii.insert(ascii.end(), ascii_.begin() + static_cast<std::ptrdiff_t>(moved_from), ascii_.end());
+    ascii_ = std::move(ascii);
 }
 
 std::uint32_t LineIndex::line_of(std::uint32_t offset) const {

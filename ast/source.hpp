@@ -56,6 +56,10 @@ std::size_t count_line_breaks(std::string_view text);
 class LineIndex {
 public:
     explicit LineIndex(std::string_view text);
+    // The index of `text`, an edit of the indexed text whose bytes [begin, old_end) became
+    // [begin, new_end): only the edited lines are read again, the lines after them move (the
+    // language server's edits of a million-line document).
+    void edit(std::string_view text, std::uint32_t begin, std::uint32_t old_end, std::uint32_t new_end);
     Position utf8(std::uint32_t offset) const;     // column in bytes
     Position utf16(std::uint32_t offset) const;    // column in UTF-16 code units
     std::uint32_t offset_of_utf16(Position p) const;
@@ -70,6 +74,7 @@ private:
     std::vector<std::uint32_t> starts_;
     std::vector<bool> ascii_;   // per line: no byte >= 0x80, so UTF-16 columns are byte columns
     std::uint32_t line_of(std::uint32_t offset) const;
+    bool line_is_ascii(std::size_t line) const;
 };
 
 }  // namespace kerf::ast

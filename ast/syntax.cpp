@@ -92,14 +92,6 @@ Range SyntaxTree::block_range(std::size_t i) const {
     return {blocks[i].begin, end};
 }
 
-std::uint32_t SyntaxTree::block_token_end(std::size_t i) const {
-    return i + 1 < blocks.size() ? blocks[i + 1].first_token : static_cast<std::uint32_t>(tokens.size());
-}
-
-std::span<const Token> SyntaxTree::block_tokens(std::size_t i) const {
-    const std::uint32_t first = blocks[i].first_token;
-    return std::span<const Token>(tokens.data() + first, block_token_end(i) - first);
-}
 
 std::string_view SyntaxTree::value_spelling(const Token& t) const {
     std::string_view s = spelling(t);

@@ -164,9 +164,15 @@ struct SyntaxTree {
 
     std::size_t block_count() const { return blocks.size(); }
     Range block_range(std::size_t i) const;
-    std::span<const Token> block_tokens(std::size_t i) const;
+    // Inline: every rule asks for the tokens of every block.
+    std::span<const Token> block_tokens(std::size_t i) const {
+        const std::uint32_t first = blocks[i].first_token;
+        return std::span<const Token>(tokens.data() + first, block_token_end(i) - first);
+    }
     std::uint32_t block_first_token(std::size_t i) const { return blocks[i].first_token; }
-    std::uint32_t block_token_end(std::size_t i) const;
+    std::uint32_t block_token_end(std::size_t i) const {
+        return i + 1 < blocks.size() ? blocks[i + 1].first_token : static_cast<std::uint32_t>(tokens.size());
+    }
     std::string_view slice(Range r) const { return std::string_view(text).substr(r.begin, r.size()); }
     std::string_view spelling(const Token& t) const { return slice(t.range()); }
     // The text of a word's value ("-12.5" of "X-12.5"), after the letter and any spaces.

@@ -16,7 +16,9 @@ The session:
      analysis runs;
   4. the server's peak and current resident memory (/proc/PID/status VmHWM, VmRSS) against the
      document's size.
-Times are wall-clock on the client side, including the pipe and JSON of both sides.
+Times are wall-clock on the client side, including the pipe and JSON of both sides. Beside them, the
+CPU time the server's threads used in the same span (/proc/PID/task/*/schedstat, nanoseconds): on a
+shared machine the wall time grows with the load, the CPU time much less.
 """
 import argparse
 import json
@@ -92,6 +94,17 @@ def diagnostics_of(uri, version, phase):
     return match
 
 
+def cpu_seconds(pid):
+    total = 0
+    for task in os.listdir(f'/proc/{pid}/task'):
+        try:
+            with open(f'/proc/{pid}/task/{task}/schedstat') as f:
+                total += int(f.read().split()[0])
+        except (FileNotFoundError, ProcessLookupError):
+            pass   # a thread that ended: its time is in the process's, not read here
+    return total / 1e9
+
+
 def memory(pid):
     out = {}
     with open(f'/proc/{pid}/status') as f:
@@ -135,10 +148,12 @@ def main():
     # 1. didOpen
     body = json.dumps({'jsonrpc': '2.0', 'method': 'textDocument/didOpen',
                        'params': {'textDocument': {'uri': uri, 'languageId': 'gcode', 'version': 1, 'text': text}}}).encode()
+    cpu0 = cpu_seconds(c.proc.pid)
     start = time.perf_counter()
     c.proc.stdin.write(b'Content-Length: %d\r\n\r\n' % len(body) + body)
     c.proc.stdin.flush()
     t_static, m = c.wait(diagnostics_of(uri, 1, 'static'))
+    result['open_static_cpu_s'] = cpu_seconds(c.proc.pid) - cpu0
     result['open_static_s'] = t_static - start
     result['open_static_count'] = len(m['params']['diagnostics'])
     t_complete, m = c.wait(diagnostics_of(uri, 1, 'complete'))
@@ -148,7 +163,7 @@ def main():
 
     # 2. one-character edits
     version = 1
-    statics, completes = [], []
+    statics, completes, static_cpu = [], [], []
     for i in range(a.edits):
         version += 1
         line = rng.randrange(len(lines))
@@ -162,13 +177,16 @@ def main():
             col = rng.choice(digits) if digits else len(s)   # type a digit into a number
             change = {'range': {'start': {'line': line, 'character': col}, 'end': {'line': line, 'character': col}}, 'text': '7'}
             lines[line] = s[:col] + '7' + s[col:]
+        cpu0 = cpu_seconds(c.proc.pid)
         start = time.perf_counter()
         c.notify('textDocument/didChange', {'textDocument': {'uri': uri, 'version': version}, 'contentChanges': [change]})
         t1, _ = c.wait(diagnostics_of(uri, version, 'static'))
+        static_cpu.append(cpu_seconds(c.proc.pid) - cpu0)
         t2, _ = c.wait(diagnostics_of(uri, version, 'complete'))
         statics.append(t1 - start)
         completes.append(t2 - start)
     result['edit_static'] = percentiles(statics)
+    result['edit_static_cpu'] = percentiles(static_cpu)
     result['edit_complete'] = percentiles(completes)
 
     # 3. hovers and completions at random positions, the server idle
@@ -202,8 +220,10 @@ def main():
     mb = result['bytes'] / 1e6
     print(json.dumps(result, indent=1))
     print(f"\n{result['program']}: {result['lines']} lines, {mb:.1f} MB")
-    print(f"  didOpen -> static diagnostics {result['open_static_s']*1e3:.0f} ms, complete (dry run) {result['open_complete_s']*1e3:.0f} ms")
+    print(f"  didOpen -> static diagnostics {result['open_static_s']*1e3:.0f} ms (server CPU {result['open_static_cpu_s']*1e3:.0f} ms), "
+          f"complete (dry run) {result['open_complete_s']*1e3:.0f} ms")
     print(f"  one-character edit -> static: {fmt(result['edit_static'])}")
+    print(f"    server CPU in that span: {fmt(result['edit_static_cpu'])}")
     print(f"  one-character edit -> complete: {fmt(result['edit_complete'])}")
     print(f"  hover (idle): {fmt(result['hover_idle'])}")
     print(f"  completion (idle): {fmt(result['completion_idle'])}")

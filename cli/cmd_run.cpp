@@ -47,6 +47,11 @@ private:
     fmt::memory_buffer buffer_;
 };
 
+// A distance in mm, and in inches too for a program that works in inches.
+std::string distance(double mm, bool inch) {
+    return inch ? fmt::format("{:.1f} mm ({:.3f} in)", mm, mm / 25.4) : fmt::format("{:.1f} mm", mm);
+}
+
 void print_summary(const project::DryRun& run, const interpreter::RunResult& result, const std::string& axes) {
     std::string final_position;
     for (std::size_t a = 0; a < interpreter::kAxisCount; ++a)
@@ -54,10 +59,16 @@ void print_summary(const project::DryRun& run, const interpreter::RunResult& res
             final_position += fmt::format(" {}{:.3f}", interpreter::kAxisLetters[a], result.final_position[a]);
     std::cout << fmt::format("dialect {}\nblocks executed {}\ncycle time {:.1f} s ({:.2f} min)\n", run.choice.id,
                              result.blocks, result.total_time_s, result.total_time_s / 60);
-    std::cout << fmt::format("feed distance {:.1f} mm, rapid distance {:.1f} mm\nfinal position{}\n",
-                             result.feed_distance_mm, result.rapid_distance_mm, final_position);
+    std::cout << fmt::format("feed distance {}, rapid distance {}\nfinal position{} ({})\n",
+                             distance(result.feed_distance_mm, result.inch), distance(result.rapid_distance_mm, result.inch),
+                             final_position, result.inch ? "inch" : "mm");
     for (const auto& [tool, seconds] : result.time_per_tool_s) std::cout << fmt::format("tool {:>3}: {:.1f} s\n", tool, seconds);
-    std::cout << (result.completed ? "ended normally\n" : "did not reach its end\n");
+    if (result.repeats)
+        std::cout << fmt::format("ended normally; the program repeats (M99 in the main program): {} pass{} run, times "
+                                 "are for {} (--passes N)\n",
+                                 result.passes, result.passes == 1 ? "" : "es", result.passes == 1 ? "one pass" : "them");
+    else
+        std::cout << (result.completed ? "ended normally\n" : "did not reach its end\n");
 }
 
 int run_run(const RunCliOptions& o) {

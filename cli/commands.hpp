@@ -22,6 +22,7 @@ Command add_run_command(CLI::App& app);
 Command add_plot_command(CLI::App& app);
 Command add_check_command(CLI::App& app);
 Command add_fmt_command(CLI::App& app);
+Command add_convert_command(CLI::App& app);
 Command add_lsp_command(CLI::App& app);
 
 }  // namespace kerf::cli

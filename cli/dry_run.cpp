@@ -16,6 +16,12 @@ void add_dry_run_options(CLI::App& command, DryRunOptions& o) {
     command.add_option("--dialect-file", o.dialect_files, "load a dialect data file (TOML)");
     command.add_option("--machine", o.machine_file, "machine configuration file (TOML, machine/SCHEMA.md)");
     command.add_flag("--lenient", o.lenient, "run blocks with syntax errors without their defective words");
+    command.add_option("--call", o.call,
+                       "run the program as this block calls it: --call \"G65 P9010 A1. B2.\" (a macro with its arguments)");
+    command.add_option("--set", o.set, "set a macro variable before the run: --set \"#100=5\" (repeatable)");
+    command.add_option("--passes", o.passes,
+                       "passes of a main program that ends in M99 (a bar-feed loop; default 1, or .kerf.toml [run] passes)")
+        ->check(CLI::Range(1, 1000000));
     add_limit_options(command, o.limits);
 }
 
@@ -30,8 +36,12 @@ project::Overrides overrides_of(const std::string& dialect, const std::vector<st
 }
 
 std::variant<std::unique_ptr<project::DryRun>, int> prepare(const DryRunOptions& o) {
-    auto workspace = std::make_shared<project::Workspace>(std::make_shared<project::DiskFileSystem>(),
-                                                          overrides_of(o.dialect, o.dialect_files, o.machine_file, o.limits));
+    project::Overrides overrides = overrides_of(o.dialect, o.dialect_files, o.machine_file, o.limits);
+    if (!o.call.empty()) overrides.run.call = o.call;
+    overrides.run.call_everywhere = true;
+    overrides.run.set = o.set;
+    if (o.passes > 0) overrides.run.passes = o.passes;
+    auto workspace = std::make_shared<project::Workspace>(std::make_shared<project::DiskFileSystem>(), std::move(overrides));
     project::PreparedRun prepared = project::prepare_dry_run(std::move(workspace), o.file);
     ProblemPrinter().print(prepared.problems);
     switch (prepared.outcome) {

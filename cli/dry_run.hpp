@@ -21,9 +21,13 @@ struct DryRunOptions {
     std::string machine_file;   // "" = .kerf.toml's `machine`, else the dialect's built-in machine
     bool lenient = false;
     project::LimitSettings limits;   // --max-file-bytes, --max-line-bytes, --time-limit
+    std::string call;                // --call "G65 P9010 A1.": the caller's block (project/start.hpp)
+    std::vector<std::string> set;    // --set "#100=5"
+    int passes = 0;                  // --passes N (0: [run] passes, else 1)
 };
 
-// FILE, --dialect, --dialect-file, --machine, --lenient and the limits (cli/limits.hpp).
+// FILE, --dialect, --dialect-file, --machine, --lenient, --call, --set, --passes and the limits
+// (cli/limits.hpp).
 void add_dry_run_options(CLI::App& command, DryRunOptions& options);
 
 // The flags as the workspace's overrides.

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     add("plot", kerf::cli::add_plot_command(app));
     add("check", kerf::cli::add_check_command(app));
     add("fmt", kerf::cli::add_fmt_command(app));
+    add("convert", kerf::cli::add_convert_command(app));
     add("lsp", kerf::cli::add_lsp_command(app));
     try {
         app.parse(argc, argv);

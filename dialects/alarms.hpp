@@ -13,7 +13,9 @@ namespace kerf::alarms {
 // [FANUC] alarm numbers (FANUC 0i/30i operator's manual alarm list; the reference cites them where
 // it relies on one).
 inline constexpr int improper_command = 10;         // G10 without a valid P / register (alarm 010)
+inline constexpr int feed_zero = 11;                // a feed move with no feed rate commanded (PS011)
 inline constexpr int arc_radius_mismatch = 20;      // arc end off its circle, R too small (semantics.md §3)
+inline constexpr int offset_number = 30;            // an offset number the machine does not have (PS0030: G54.1 P, G10 L10–L13/L20 P)
 inline constexpr int comp_in_arc = 34;              // compensation started or cancelled in G02/G03 (semantics.md §5)
 inline constexpr int comp_interference = 41;        // over-cut in cutter / nose radius compensation (semantics.md §6)
 inline constexpr int reference_point_number = 46;   // G30 P not 1–4
@@ -63,6 +65,7 @@ inline constexpr int unknown_variable = 90006;   // a system variable kerf's tab
 // ... and warnings (`message` events that do not stop the run; docs/trace.md).
 inline constexpr int thread_speed_over_limit = 90101;   // lead × rpm over the machine's maximum cutting feed
 inline constexpr int not_modelled = 90102;              // the dry run does not model what the block does (K5009)
+inline constexpr int program_repeats = 90103;           // M99 ended a pass of the main program (a bar-feed loop)
 
 struct AlarmDef {
     int number;
@@ -73,7 +76,9 @@ struct AlarmDef {
 // Every number above, in order (docs/diagnostics.md "Alarms the dry run raises").
 inline constexpr AlarmDef kAlarms[] = {
     {improper_command, "improper_command", "G10 without a valid P or register number"},
+    {feed_zero, "feed_zero", "a feed move (G01/G02/G03) with no feed rate commanded (F0, or no F yet)"},
     {arc_radius_mismatch, "arc_radius_mismatch", "arc end point off its circle, or R too small for the chord"},
+    {offset_number, "offset_number", "an offset number the machine does not have (G54.1 P, G10 L10–L13/L20 P)"},
     {comp_in_arc, "comp_in_arc", "radius compensation started or cancelled in a G02/G03 block"},
     {comp_interference, "comp_interference", "over-cut in cutter / nose radius compensation"},
     {reference_point_number, "reference_point_number", "G30 P not 1 to 4"},
@@ -119,6 +124,7 @@ inline constexpr AlarmDef kAlarms[] = {
     {unknown_variable, "unknown_variable", "kerf: a system variable kerf's tables do not have (the control may have it; the run stops)"},
     {thread_speed_over_limit, "thread_speed_over_limit", "kerf warning: a thread's lead × rpm over the maximum cutting feed"},
     {not_modelled, "not_modelled", "kerf warning: the dry run does not model what the block does"},
+    {program_repeats, "program_repeats", "kerf note: M99 ended a pass of the main program; the control starts it again (bar feeder)"},
 };
 
 }  // namespace kerf::alarms

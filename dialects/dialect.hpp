@@ -80,6 +80,12 @@ struct LexicalRules {
     SubprogramCall subprogram_call = SubprogramCall::packed;
     bool decimal_comma_lenient = true;               // "warn": read F0,25 as 0.25 (with a diagnostic)
     bool calculator_decimal = false;
+    // Default of the machine switch dwell_p_unit: G04 P (and a drilling cycle's dwell P) in
+    // milliseconds (FANUC) or seconds (ADV400), semantics.md §8.2.
+    bool dwell_p_seconds = false;
+    // Digits of a program number (O word, the program part of a packed M98 P): FANUC 4
+    // (dialects.md §2, §3.6); 0 = no fixed width (the seed does not say).
+    int program_digits = 4;
     std::string tool_word = "mmnn";
     bool macro_b = true;
     int max_m_per_block = 1;

@@ -48,8 +48,9 @@ inline constexpr std::uint32_t calls_subprogram = 1u << 20; // M98
 inline constexpr std::uint32_t threading = 1u << 21;        // cuts a thread (a block or a cycle): the lead needs a fixed rpm
 inline constexpr std::uint32_t peck = 1u << 22;             // Q is the depth of one peck, more than 0
 inline constexpr std::uint32_t radius_comp_on = 1u << 23;   // G41/G42: the tool left or right of the path
-inline constexpr std::uint32_t not_modelled = 1u << 25;     // the dry run does not model what the code does: it says so (kerf warning 90102)
 inline constexpr std::uint32_t not_in_plane_transform = 1u << 24;   // [FANUC] not allowed in G112/G107 mode (reference returns, G53, G50/G92, G52, threads, planes)
+inline constexpr std::uint32_t not_modelled = 1u << 26;     // moves the machine in a way the dry run does not reproduce: a warning (kerf_warning::not_modelled, K5009)
+inline constexpr std::uint32_t after_motion = 1u << 25;     // an M code that acts after the block's motion (semantics.md §1.2 step 9: M5, M9, M0, M1, M2, M30, M98, M99); the others act before it (step 3)
 }  // namespace traits
 
 enum class PlaneTrait : std::uint8_t { none, xy, zx, yz };
@@ -73,11 +74,11 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"arc-approach", 'G', traits::arc_approach, "Seed-004 G12: tangential arc approach to the contour"},
     {"arc-exit", 'G', traits::arc_approach, "Seed-004 G13: tangential arc exit from the contour"},
     {"automatic-corner-override", 'G', 0, "Automatic feed override at inside corners"},
-    {"automatic-tool-comp-x", 'G', 0, "Automatic tool compensation, X axis (lathe)"},
-    {"automatic-tool-comp-z", 'G', 0, "Automatic tool compensation, Z axis (lathe)"},
+    {"automatic-tool-comp-x", 'G', traits::not_modelled, "Automatic tool compensation, X axis (lathe)"},
+    {"automatic-tool-comp-z", 'G', traits::not_modelled, "Automatic tool compensation, Z axis (lathe)"},
     {"axial-offset-direction-minus", 'G', traits::length_comp | traits::approach_offset, "Seed-004 'direction of axial offset' (−)"},
     {"axial-offset-direction-plus", 'G', traits::length_comp | traits::approach_offset, "Seed-004 'direction of axial offset' (+), used as a one-block approach offset by D – not FANUC length compensation"},
-    {"axis-homing", 'G', 0, "Home (machine-zero search) of the named axes (ADV400 G74)"},
+    {"axis-homing", 'G', traits::not_modelled, "Home (machine-zero search) of the named axes (ADV400 G74)"},
     {"b-axis-torque-limit-off", 'M', 0, "B-axis torque limitation off"},
     {"b-axis-torque-limit-on", 'M', 0, "B-axis torque limitation on"},
     {"back-boring-cycle", 'G', traits::cycle, "Back boring cycle"},
@@ -120,7 +121,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"coolant-high-pressure-on", 'M', 0, "High-pressure coolant on"},
     {"coolant-high-pressure-valve", 'M', 0, "High-pressure coolant valve"},
     {"coolant-mist-on", 'M', 0, "Coolant 2 / mist on"},
-    {"coolant-off", 'M', 0, "Coolant off (all)"},
+    {"coolant-off", 'M', traits::after_motion, "Coolant off (all)"},
     {"coolant-on", 'M', 0, "Coolant (1) on"},
     {"coolant-over-main-spindle-off", 'M', 0, "Coolant over the main spindle off"},
     {"coolant-over-main-spindle-on", 'M', 0, "Coolant over the main spindle on"},
@@ -134,13 +135,13 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"coordinate-rotation-cancel", 'G', 0, "Coordinate system rotation cancel"},
     {"coordinate-rotation-cw", 'G', 0, "Coordinate system rotation, + = CLOCKWISE (ADV400; negate R when converting)"},
     {"coordinate-system-setting", 'G', traits::not_in_plane_transform, "Coordinate system setting: the current position takes the programmed values (lathes: S = max rpm clamp)"},
-    {"corner-circular-interpolation", 'G', 0, "Corner offset circular interpolation (cutter compensation)"},
+    {"corner-circular-interpolation", 'G', traits::not_modelled, "Corner offset circular interpolation (cutter compensation)"},
     {"corner-slowdown", 'G', traits::corner_slowdown, "Seed-004 G28: feed reduced by F % over the last K mm before each G01 end point"},
     {"corner-slowdown-cancel", 'G', traits::corner_slowdown, "Seed-004 G29: cancel the corner slow-down"},
     {"cylindrical-interpolation", 'G', traits::plane_transform, "Cylindrical interpolation on/off (G07.1 C<r> / C0)"},
     {"door-open", 'M', 0, "Automatic door opening"},
-    {"double-turret-mirror-off", 'G', 0, "FANUC T mirror image for double turrets / balance cut off"},
-    {"double-turret-mirror-on", 'G', 0, "FANUC T mirror image for double turrets / balance cut on"},
+    {"double-turret-mirror-off", 'G', traits::not_modelled, "FANUC T mirror image for double turrets / balance cut off"},
+    {"double-turret-mirror-on", 'G', traits::not_modelled, "FANUC T mirror image for double turrets / balance cut on"},
     {"drilling-cycle", 'G', traits::cycle, "Drilling cycle (feed in, rapid out)"},
     {"drilling-dwell-cycle", 'G', traits::cycle, "Drilling cycle with dwell at the bottom"},
     {"dwell", 'G', 0, "Dwell (units differ: FANUC X/U s, P ms; ADV400 X/P s)"},
@@ -158,7 +159,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"feed-per-revolution", 'G', traits::per_revolution, "Feed per revolution (mm/rev)"},
     {"fine-boring-cycle", 'G', traits::cycle, "Mill fine boring cycle"},
     {"finishing-cycle", 'G', traits::cycle | traits::profile_cycle, "Lathe finishing cycle over profile P..Q"},
-    {"floating-reference-return", 'G', 0, "Floating reference point return"},
+    {"floating-reference-return", 'G', traits::not_modelled, "Floating reference point return"},
     {"grooving-cycle", 'G', traits::cycle, "Lathe OD/ID grooving (X peck) cycle"},
     {"high-speed-peck-drilling-cycle", 'G', traits::cycle | traits::peck, "Mill high-speed peck drilling cycle"},
     {"inch-input", 'G', traits::inch, "Inch input"},
@@ -171,8 +172,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"live-tool-cw", 'M', 0, "Live tool clockwise (SPINNER M23; thread-exit meaning in §9.1)"},
     {"live-tool-rigid-tapping", 'G', traits::cycle, "SPINNER G384: rigid tapping with a live tool (repeat G384 in every hole block)"},
     {"live-tool-rigid-tapping-cancel", 'G', traits::cycle, "SPINNER G380: cancel G384"},
-    {"live-tool-stop", 'M', 0, "Live tool stop"},
-    {"local-subprogram-call", 'M', 0, "[Haas] M97 P: call a label of this program as a local subroutine (references/references.hpp)"},
+    {"live-tool-stop", 'M', traits::after_motion, "Live tool stop"},
+    {"local-subprogram-call", 'M', traits::after_motion, "[Haas] M97 P: call a label of this program as a local subroutine (references/references.hpp)"},
     {"local-system-cancel", 'G', 0, "Cancel the local coordinate system (pcnc-mill G152)"},
     {"local-system-current-point", 'G', traits::not_in_plane_transform, "Local coordinate system placed so that the current tool point takes the programmed values"},
     {"local-system-shift", 'G', traits::not_in_plane_transform, "FANUC local coordinate system: origin shifted by the programmed vector"},
@@ -199,7 +200,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"one-block-rough-facing-cycle", 'G', traits::cycle | traits::profile_cycle, "[Haas] lathe G72 P Q U W D: end-face stock removal in one block (D depth of cut)"},
     {"one-block-rough-turning-cycle", 'G', traits::cycle | traits::profile_cycle, "[Haas] lathe G71 P Q U W D: O.D./I.D. stock removal in one block (D depth of cut)"},
     {"one-block-threading-cycle", 'G', traits::cycle | traits::threading, "[Haas] lathe G76 X Z K D A: multiple pass threading in one block (K thread height, D first depth)"},
-    {"optional-stop", 'M', 0, "Optional stop"},
+    {"optional-stop", 'M', traits::after_motion, "Optional stop"},
     {"part-counter", 'M', 0, "Part counter"},
     {"part-off-control", 'M', 0, "Part-off control"},
     {"parts-catcher-cycle", 'M', traits::cycle, "Parts-catcher cycle"},
@@ -215,15 +216,15 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"polar-coordinate-command-cancel", 'G', traits::program_transform, "Polar coordinate command cancel"},
     {"polar-interpolation-off", 'G', traits::plane_transform, "Polar coordinate interpolation cancel"},
     {"polar-interpolation-on", 'G', traits::plane_transform, "Polar coordinate interpolation mode (Cartesian programming with a rotary axis)"},
-    {"polygon-turning-off", 'G', 0, "Polygon turning cancel"},
-    {"polygon-turning-on", 'G', 0, "Polygon turning"},
+    {"polygon-turning-off", 'G', traits::not_modelled, "Polygon turning cancel"},
+    {"polygon-turning-on", 'G', traits::not_modelled, "Polygon turning"},
     {"position-offset-decrease", 'G', traits::position_offset, "One-block position offset: move decreased by D", -1},
     {"position-offset-double-decrease", 'G', traits::position_offset, "One-block position offset: move decreased by 2·D", -2},
     {"position-offset-double-increase", 'G', traits::position_offset, "One-block position offset: move increased by 2·D", 2},
     {"position-offset-increase", 'G', traits::position_offset, "One-block position offset: move increased by D", 1},
-    {"program-end", 'M', 0, "End of program (no rewind)"},
-    {"program-end-rewind", 'M', 0, "End of program and rewind"},
-    {"program-stop", 'M', 0, "Program stop"},
+    {"program-end", 'M', traits::after_motion, "End of program (no rewind)"},
+    {"program-end-rewind", 'M', traits::after_motion, "End of program and rewind"},
+    {"program-stop", 'M', traits::after_motion, "Program stop"},
     {"programmable-data-input", 'G', 0, "Programmable data input: offsets, work shift (G10 P0), parameters"},
     {"programmable-data-input-cancel", 'G', 0, "End of programmable data input mode"},
     {"radius-comp-cancel", 'G', traits::radius_comp, "Tool nose / cutter radius compensation cancel"},
@@ -244,8 +245,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"side-boring-cycle", 'G', traits::cycle, "Lathe side (radial) boring cycle"},
     {"side-drilling-cycle", 'G', traits::cycle, "Lathe side (radial) drilling cycle"},
     {"side-tapping-cycle", 'G', traits::cycle, "Lathe side (radial) tapping cycle"},
-    {"single-direction-positioning", 'G', 0, "Single-direction positioning (backlash removal)"},
-    {"skip-function", 'G', 0, "Skip function (move until the skip signal)"},
+    {"single-direction-positioning", 'G', traits::not_modelled, "Single-direction positioning (backlash removal)"},
+    {"skip-function", 'G', traits::not_modelled, "Skip function (move until the skip signal)"},
     {"spindle-brake-low-off", 'M', 0, "Low brake pressure / brake off (TC82-108)"},
     {"spindle-brake-low-on", 'M', 0, "Main spindle brake with reduced force / low pressure on"},
     {"spindle-brake-off", 'M', 0, "Main spindle brake off"},
@@ -265,13 +266,13 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"spindle-rigid-tapping-cycle", 'M', traits::cycle, "SPINNER M329: rigid tapping cycle with the work spindle"},
     {"spindle-speed-detect-off", 'G', 0, "ADV400 spindle speed detection off (no wait for the spindle)"},
     {"spindle-speed-detect-on", 'G', 0, "ADV400 spindle speed detection on (next block waits until the spindle is at speed)"},
-    {"spindle-stop", 'M', 0, "Spindle stop"},
+    {"spindle-stop", 'M', traits::after_motion, "Spindle stop"},
     {"spindle-sync-off", 'M', 0, "Synchronisation off"},
     {"spindle-sync-on", 'M', 0, "Main/sub-spindle speed synchronisation on"},
     {"stroke-check-off", 'G', 0, "Stored stroke check off"},
     {"stroke-check-on", 'G', 0, "Stored stroke check on"},
-    {"subprogram-call", 'M', traits::calls_subprogram, "Subprogram call"},
-    {"subprogram-return", 'M', 0, "End of subprogram / return"},
+    {"subprogram-call", 'M', traits::calls_subprogram | traits::after_motion, "Subprogram call"},
+    {"subprogram-return", 'M', traits::after_motion, "End of subprogram / return"},
     {"subspindle-air-off", 'M', 0, "Sub-spindle air off"},
     {"subspindle-air-on", 'M', 0, "Sub-spindle air on"},
     {"subspindle-brake-low-on", 'M', 0, "Sub-spindle brake with reduced force on"},
@@ -284,7 +285,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"subspindle-cw", 'M', 0, "Sub-spindle clockwise"},
     {"subspindle-jaw-blow", 'M', 0, "Sub-spindle jaw blowing"},
     {"subspindle-orientation", 'M', 0, "Sub-spindle orientation"},
-    {"subspindle-stop", 'M', 0, "Sub-spindle stop"},
+    {"subspindle-stop", 'M', traits::after_motion, "Sub-spindle stop"},
     {"subspindle-winding-auto", 'M', 0, "Sub-spindle star/delta automatic"},
     {"subspindle-winding-delta", 'M', 0, "Sub-spindle delta winding"},
     {"subspindle-winding-star", 'M', 0, "Sub-spindle star winding"},
@@ -323,7 +324,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"work-coordinate-4", 'G', 0, "Work coordinate system 4", 0, 4},
     {"work-coordinate-5", 'G', 0, "Work coordinate system 5", 0, 5},
     {"work-coordinate-6", 'G', 0, "Work coordinate system 6", 0, 6},
-    {"work-coordinate-additional", 'G', 0, "Additional work coordinate systems (G54.1 P1–P48)"},
+    {"work-coordinate-additional", 'G', 0, "Additional work coordinate systems (G54.1 P1–P48, [Haas] G154 P1–P99 and G110–G129)"},
     {"workpiece-transfer-cycle", 'G', traits::cycle, "SPINNER G38: push the part into the sub-spindle (torque limited), check position, clamp"},
 };
 
@@ -421,6 +422,8 @@ inline constexpr FunctionId optional_stop = FunctionId::known("optional-stop");
 inline constexpr FunctionId program_end = FunctionId::known("program-end");
 inline constexpr FunctionId program_end_rewind = FunctionId::known("program-end-rewind");
 inline constexpr FunctionId tool_change = FunctionId::known("tool-change");
+inline constexpr FunctionId skip_function = FunctionId::known("skip-function");   // G31
+inline constexpr FunctionId reference_return_check = FunctionId::known("reference-return-check");   // G27
 inline constexpr FunctionId reference_return_nth = FunctionId::known("reference-return-nth");
 inline constexpr FunctionId return_from_reference = FunctionId::known("return-from-reference");
 inline constexpr FunctionId coordinate_rotation = FunctionId::known("coordinate-rotation");
@@ -510,6 +513,12 @@ inline constexpr FunctionId thread_chamfer_off = FunctionId::known("thread-chamf
 inline constexpr FunctionId work_coordinate_additional = FunctionId::known("work-coordinate-additional");           // G54.1 P, [Haas] G154 P, G110–G129
 inline constexpr FunctionId dynamic_work_offset = FunctionId::known("dynamic-work-offset");                         // [Haas] G254
 inline constexpr FunctionId machine_builder_code = FunctionId::known("machine-builder-code");   // user dialects: no behaviour
+inline constexpr FunctionId undocumented = FunctionId::known("undocumented");                   // a seed's code without a usable meaning
+// Modes the converter knows read the same in G90 and G91 (converter/convert.cpp), and ADV400's homing.
+inline constexpr FunctionId exact_stop_check = FunctionId::known("exact-stop-check");
+inline constexpr FunctionId exact_stop_mode = FunctionId::known("exact-stop-mode");
+inline constexpr FunctionId continuous_cutting_mode = FunctionId::known("continuous-cutting-mode");
+inline constexpr FunctionId axis_homing = FunctionId::known("axis-homing");                     // ADV400 G74 (cycles.md §11.4)
 // G54–G59 are work-coordinate-1 ... -6: read FunctionDef::work_coordinate, not the id.
 
 }  // namespace kerf::dialects::functions

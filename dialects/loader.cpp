@@ -171,7 +171,7 @@ LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, s
     const std::string where = "lexical";
     r.check_keys(t, {"semicolon", "paren_comments", "line_comments", "incremental_letters", "axes", "diameter_letters",
                      "comma_words", "plain_direct_drawing", "subprogram_call", "decimal_comma", "calculator_decimal",
-                     "tool_word", "macro_b", "max_m_per_block", "label_search", "if_words"},
+                     "dwell_p_unit", "program_digits", "tool_word", "macro_b", "max_m_per_block", "label_search", "if_words"},
                  where);
     for (const auto& [key, node] : t) set.emplace_back(key.str());
     if (t.contains("semicolon")) {
@@ -215,6 +215,18 @@ LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, s
         else r.error(t.get("decimal_comma"), fmt::format("lexical.decimal_comma: unknown value '{}'", s));
     }
     rules.calculator_decimal = r.boolean(t, "calculator_decimal", where, rules.calculator_decimal);
+    if (t.contains("dwell_p_unit")) {
+        const std::string s = r.string(t, "dwell_p_unit", where, false);
+        if (s == "ms") rules.dwell_p_seconds = false;
+        else if (s == "s") rules.dwell_p_seconds = true;
+        else r.error(t.get("dwell_p_unit"), fmt::format("lexical.dwell_p_unit: unknown value '{}' (ms or s)", s));
+    }
+    if (const toml::node* n = t.get("program_digits")) {
+        if (const auto v = n->value<std::int64_t>(); v && *v >= 0 && *v <= 9)
+            rules.program_digits = static_cast<int>(*v);
+        else
+            r.error(n, "lexical.program_digits: expected an integer 0..9 (0: no fixed width)");
+    }
     if (t.contains("tool_word")) {
         rules.tool_word = r.string(t, "tool_word", where, false);
         if (rules.tool_word != "mmnn" && rules.tool_word != "number")
@@ -624,6 +636,8 @@ void override_lexical(LexicalRules& lex, const DialectFile& file) {
         else if (key == "subprogram_call") lex.subprogram_call = o.subprogram_call;
         else if (key == "decimal_comma") lex.decimal_comma_lenient = o.decimal_comma_lenient;
         else if (key == "calculator_decimal") lex.calculator_decimal = o.calculator_decimal;
+        else if (key == "dwell_p_unit") lex.dwell_p_seconds = o.dwell_p_seconds;
+        else if (key == "program_digits") lex.program_digits = o.program_digits;
         else if (key == "tool_word") lex.tool_word = o.tool_word;
         else if (key == "macro_b") lex.macro_b = o.macro_b;
         else if (key == "max_m_per_block") lex.max_m_per_block = o.max_m_per_block;

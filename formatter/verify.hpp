@@ -1,5 +1,6 @@
 // The formatter's proof: the interpreter runs the program before and after formatting and the two
-// traces must be the same event for event — same kinds, codes, tools and texts, positions, centres,
+// traces must be the same event for event (the comparison is interpreter/trace_compare.hpp, which
+// `kerf convert --verify` shares) — same kinds, codes, tools and texts, positions, centres,
 // lengths, times, feeds and speeds equal to 1e-9 (issue 6, "meaning-preserving"). Events carry
 // source lines, which formatting may move, so sources are not compared; alarm and call texts quote
 // sequence numbers, which renumbering changes, so their codes are compared instead. Two endless

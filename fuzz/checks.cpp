@@ -11,6 +11,7 @@
 #include "analyzer/analyze.hpp"
 #include "analyzer/fix.hpp"
 #include "analyzer/registry.hpp"
+#include "converter/convert.hpp"
 #include "ast/input.hpp"
 #include "ast/printer.hpp"
 #include "ast/typed.hpp"
@@ -21,6 +22,7 @@
 #include "grammar/parse.hpp"
 #include "interpreter/default_setup.hpp"
 #include "interpreter/interpreter.hpp"
+#include "interpreter/trace_compare.hpp"
 #include "interpreter/trace_json.hpp"
 #include "machine/machine.hpp"
 #include "project/config.hpp"
@@ -275,6 +277,55 @@ Broken check_formatter(std::string_view input) {
     if (result.difference)
         return fmt::format("--verify: event {} (input line {}, output line {}): {}", result.difference->event,
                            result.difference->input_line, result.difference->output_line, result.difference->what);
+    return std::nullopt;
+}
+
+Broken check_converter(std::string_view input) {
+    if (input.size() < 2 || input.size() > kMaxProgramInput) return std::nullopt;
+    const std::uint8_t byte = static_cast<std::uint8_t>(input[0]);
+    const dialects::Dialect& from = dialect_of(byte);
+    const unsigned options = options_of(byte);
+    const dialects::Dialect& to = *dialects::builtin_registry().find(kDialects[options % 9]);
+    const std::string text(input.substr(1));
+    ast::SyntaxTree tree = grammar::parse(text, from.lexical);
+    const ast::TypedFile typed = ast::TypedFile::bind(tree, from);
+    // One machine description, each side in its dialect's reading (project::Project::setup).
+    const machine::Machine m = machine::default_machine_for(from);
+    const interpreter::Setup source = small_setup(interpreter::make_setup(machine::resolve_for_dialect(m, from)));
+    const interpreter::Setup target = small_setup(interpreter::make_setup(machine::resolve_for_dialect(m, to)));
+    converter::Options o;
+    o.incremental = (options / 9) % 2 ? converter::IncrementalStyle::letters : converter::IncrementalStyle::g91;
+    o.expand = options / 18 > 0;
+    o.from = converter::reading_of(from, source);
+    o.to = converter::reading_of(to, target);
+    o.setup = source;
+    const converter::Conversion c = converter::convert(typed, to, o);
+    std::uint32_t at = 0;
+    for (std::size_t i = 0; i < c.edits.size(); ++i) {
+        const converter::Edit e = c.edits[i];
+        if (e.range.begin < at || e.range.end < e.range.begin || e.range.end > tree.text.size())
+            return fmt::format("edit {} ({}..{}) out of order, overlapping or outside the text ({} bytes)", i, e.range.begin,
+                               e.range.end, tree.text.size());
+        at = e.range.end;
+    }
+    const std::string out = converter::apply(tree.text, c.edits);
+    if (from.machine != to.machine) {
+        if (out != tree.text) return std::string("a conversion between a lathe and a mill dialect changed the text");
+        return std::nullopt;
+    }
+    const ast::SyntaxTree converted = grammar::parse(out, to.lexical);
+    if (auto broken = lossless(converted, out, "the converted text")) return broken;
+    if (error_count(tree) > 0 || !c.clean()) return std::nullopt;
+    if (error_count(converted) > 0)
+        return fmt::format("a clean conversion {} → {} has {} syntax errors in the target", from.id, to.id, error_count(converted));
+    interpreter::CompareOptions compare;
+    compare.profile = interpreter::CompareProfile::motion;
+    compare.tolerance = 0.001;
+    const interpreter::TraceComparison r = interpreter::compare_runs({"fuzz.nc", text, &from, source, {}},
+                                                                     {"fuzz.nc", out, &to, target, {}}, compare);
+    if (r.difference)
+        return fmt::format("{} → {}: motion event {} (input line {}, output line {}): {}", from.id, to.id, r.difference->event,
+                           r.difference->input_line, r.difference->output_line, r.difference->what);
     return std::nullopt;
 }
 

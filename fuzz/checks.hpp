@@ -36,6 +36,14 @@ Broken check_analyzer(std::string_view input);
 // formatting it again changes nothing (idempotent); --verify finds the two runs equal.
 Broken check_formatter(std::string_view input);
 
+// kerf convert (issue 16): byte 0 picks the source dialect as above and, above it, the target
+// (one of the same nine), the U/W style and --expand. The edits are in order, inside the text and
+// never overlap; the output parses losslessly in the target; a text without syntax errors that
+// converts cleanly has none in the target and dry-runs to the same motion (the motion profile of
+// --verify, 0.001 mm, on one machine description); a conversion between a lathe and a mill dialect
+// changes nothing.
+Broken check_converter(std::string_view input);
+
 // Machine TOML: the loader returns errors with positions inside the text or a machine; a machine
 // resolves for every dialect and its Setup dry-runs a fixed program with valid events.
 Broken check_machine_toml(std::string_view input);
@@ -54,5 +62,14 @@ Broken check_input(std::string_view input);
 // .kerf.toml (project/config.hpp): parse_config never throws, every problem has a message and a
 // position inside the text (or none), and its text names the file.
 Broken check_kerf_toml(std::string_view input);
+
+// The language server's message loop (`kerf lsp`: lsp::Server reading a pipe as it reads stdin):
+// the input is a script of messages (fuzz/check_lsp.cpp): raw bytes, frames with a wrong
+// Content-Length or a body that is not JSON-RPC, and the requests and notifications of every
+// feature with document texts, edits, positions and ranges taken from the input. The server ends
+// once the input does (or at `exit`), with 0 after shutdown and exit, else 1; every frame it writes
+// is a JSON-RPC 2.0 message; a response answers a request that was sent, once; when the script
+// has no broken framing, every request before `exit` is answered.
+Broken check_lsp(std::string_view input);
 
 }  // namespace kerf::fuzz

@@ -3,6 +3,7 @@
 #include "grammar/parse.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 
 #include "ast/diagnostic_ids.hpp"
@@ -101,7 +102,7 @@ public:
                     ended_by_eob = true;
                 }
                 const bool rest_blank = only_blanks(p, line_end);
-                finish_block(block_index, ended_by_eob);
+                split_at_program_word(block_index, ended_by_eob);
                 if (rest_blank) break;
                 // Another block follows on the same line (G0 X0; G1 Z5;).
             }
@@ -202,19 +203,83 @@ private:
         builder_.merged_diagnostics.clear();
     }
 
-    void finish_block(std::size_t index, bool ended_by_eob) {
+    // `M99O0810`: an O word after the block's first word starts the next program on the same line
+    // ([FANUC] punched tapes and DNC files run programs together so): the block ends before it, and
+    // the O word begins a program_start block of its own. Blocks stay contiguous (lossless).
+    void split_at_program_word(std::size_t index, bool ended_by_eob) {
         write_merged_messages();
+        const std::size_t end = tree_.tokens.size();
+        std::uint32_t from = 0;   // the error diagnostics from here on belong to the block being finished
+        for (std::size_t first = tree_.blocks[index].first_token;;) {
+            const std::size_t split = program_word_after_first(first, end);
+            if (!split) return finish_block(index, ended_by_eob, end, {from, ~0u});
+            const std::uint32_t at = tree_.tokens[split].begin;
+            finish_block(index, false, split, {from, at});
+            ast::Block b;
+            b.begin = at;
+            b.first_token = static_cast<std::uint32_t>(split);
+            tree_.blocks.push_back(b);
+            index = tree_.blocks.size() - 1;
+            first = split;
+            from = at;
+        }
+    }
+
+    // The O word with a number that follows plain words (`M99O0810`, `M30 O1234`: a letter other
+    // than O and a number, nothing else but comments) in tokens [first, end); 0 when there is none
+    // or anything else comes first (an error, a statement, an expression): then nothing is split,
+    // which project/scan.cpp tells the same way from the bytes.
+    std::size_t program_word_after_first(std::size_t first, std::size_t end) const {
+        bool words_before = false;
+        for (std::size_t i = first; i < end; ++i) {
+            const ast::Token& t = tree_.tokens[i];
+            if (t.kind == TokenKind::comment || t.kind == TokenKind::bom || (i == first && t.kind == TokenKind::block_delete)) continue;
+            if (t.kind != TokenKind::word) return 0;
+            if ((t.letter == 'O' || t.letter == 'o') && digits_follow(t)) return words_before ? i : 0;
+            if (!is_plain_word(tree_.spelling(t))) return 0;
+            words_before = true;
+        }
+        return 0;
+    }
+
+    // O0810, O 810: a digit after the letter (and blanks) — the test project/scan.cpp makes too.
+    bool digits_follow(const ast::Token& t) const {
+        const std::string_view s = tree_.spelling(t);
+        std::size_t i = 1;
+        while (i < s.size() && block_detail::is_blank(s[i])) ++i;
+        return i < s.size() && s[i] >= '0' && s[i] <= '9';
+    }
+
+    // The block's kind and flags from its tokens up to `end_token`; the error diagnostics of the
+    // line that start in `errors` mark it.
+    void finish_block(std::size_t index, bool ended_by_eob, std::size_t end_token, ast::Range errors) {
         ast::Block& b = tree_.blocks[index];
-        classify(tree_, b, b.first_token, tree_.tokens.size());
+        classify(tree_, b, b.first_token, end_token);
         if (ended_by_eob) b.flags |= ast::block_flags::has_eob;
-        for (std::size_t i = diagnostics_at_start_; i < tree_.diagnostics.size(); ++i)
-            if (tree_.diagnostics[i].severity == ast::Severity::error) b.flags |= ast::block_flags::has_error;
+        for (std::size_t i = diagnostics_at_start_; i < tree_.diagnostics.size(); ++i) {
+            const ast::Diagnostic& d = tree_.diagnostics[i];
+            if (d.severity == ast::Severity::error && d.range.begin >= errors.begin && d.range.begin < errors.end)
+                b.flags |= ast::block_flags::has_error;
+        }
     }
 
     std::size_t diagnostics_at_start_ = 0;
 };
 
 }  // namespace
+
+bool is_plain_word(std::string_view s) {
+    if (s.empty() || !std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == 'O' || s[0] == 'o') return false;
+    std::size_t i = 1;
+    if (i < s.size() && (s[i] == '+' || s[i] == '-')) ++i;
+    bool digits = false, point = false;
+    for (; i < s.size(); ++i) {
+        if (s[i] >= '0' && s[i] <= '9') digits = true;
+        else if (s[i] == '.' && !point) point = true;
+        else return false;
+    }
+    return digits;
+}
 
 ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules) {
     ast::SyntaxTree tree;

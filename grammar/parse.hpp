@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "ast/syntax.hpp"
 #include "dialects/dialect.hpp"
@@ -12,6 +13,11 @@ namespace kerf::grammar {
 // `rules` are the dialect's lexical switches (what ';' means, line comments, comma words,
 // decimal comma, macro B). The text is moved into the tree, which owns it.
 ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules);
+
+// A letter other than O, an optional sign, digits with at most one point (X1., M99, g-0.5): the
+// words an O word may follow to start the next program on the same line (`M99O0810`). The program
+// index's byte scan (project/scan.cpp) splits blocks by the same test.
+bool is_plain_word(std::string_view spelling);
 
 // Reading a long file in pieces (interpreter/loaded_file.hpp): a piece is a run of whole lines,
 // and this is what the parse of one piece hands to the next.

@@ -74,6 +74,17 @@ cycles::Settings cycle_settings(const machine::Machine& m) {
     s.spinner.home_b = m.tailstock.home_b;
     return s;
 }
+// The power-on switches as the functions of the codes active at power-on (Setup::power_on).
+std::vector<dialects::FunctionId> power_on_functions(const machine::Switches& sw) {
+    namespace fn = dialects::functions;
+    return {sw.power_on_units == machine::Units::inch ? fn::inch_input : fn::metric_input,
+            sw.power_on_plane == machine::Plane::xy   ? fn::plane_xy
+            : sw.power_on_plane == machine::Plane::zx ? fn::plane_zx
+                                                      : fn::plane_yz,
+            sw.power_on_distance == machine::Distance::incremental ? fn::incremental_programming : fn::absolute_programming,
+            sw.power_on_return_level == machine::ReturnLevel::r_point ? fn::return_r_level : fn::return_initial_level};
+}
+
 }  // namespace
 
 Setup make_setup(const machine::Machine& m) {
@@ -82,8 +93,11 @@ Setup make_setup(const machine::Machine& m) {
     s.increment_mm = m.increment_mm();
     s.calculator_decimal = m.calculator_decimal;
     for (std::size_t i = 0; i < 6; ++i) s.work_offsets[i] = position_of(m.work_offsets[i]);
+    s.additional_work_offset_count = m.additional_work_offset_count;
+    for (const auto& [n, values] : m.additional_work_offsets) s.additional_work_offsets[n] = position_of(values);
     s.external_offset = position_of(m.external_offset);
     s.work_shift = position_of(m.work_shift);
+    s.work_shift_sign = m.switches.work_shift_sign == machine::WorkShiftSign::add ? 1.0 : -1.0;
     for (std::size_t i = 0; i < 4; ++i) s.reference_points[i] = position_of(m.reference_points[i]);
     set_axes(s, m);
     s.max_rpm = m.max_spindle_rpm;
@@ -98,6 +112,7 @@ Setup make_setup(const machine::Machine& m) {
     s.g30_default_p = sw.g30_default_p;
     s.g68_positive_cw = sw.g68_positive == machine::RotationSign::cw;
     s.scaling_unit = sw.scaling_unit == machine::ScalingUnit::thousandth ? 0.001 : 0.00001;
+    s.power_on = power_on_functions(sw);
     s.arc_tolerance = sw.arc_tolerance;
     s.transform_tolerance = sw.transform_tolerance;
     s.arc_negative_r = sw.arc_negative_r == machine::ArcLargeR::negative_r;
@@ -113,6 +128,7 @@ Setup make_setup(const machine::Machine& m) {
     s.g41_g42_swapped = sw.g41_g42_swapped;
     s.corner_slowdown_step = sw.corner_slowdown == machine::CornerSlowdown::step;
     s.iso_g43_approach = sw.iso_g43 == machine::IsoG43::approach_shorten;
+    s.length_offset_at_once = sw.length_offset_motion == machine::LengthOffsetMotion::at_once;
     s.tool_offset_count = m.tool_offset_count;
     s.m_codes = m.m_codes;
     for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);

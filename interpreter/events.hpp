@@ -62,13 +62,17 @@ inline constexpr int thread_speed_over_limit = 90101;
 // a cycle or motion no part of the interpreter expands): the trace is not the machine's there, and
 // the analyzer's K5009 says so.
 inline constexpr int not_modelled = 90102;
+// M99 ended a pass of the main program: the control starts it again (a bar-feed loop); the dry
+// run stops after RunOptions::passes passes and says so (times are for the passes run).
+inline constexpr int program_repeats = 90103;
 }  // namespace kerf_warning
 
 struct Event {
     EventKind kind = EventKind::rapid;
     SourceRef source;
-    Position start{};                    // motion: where it starts (work coordinates)
+    Position start{};                    // motion: where it starts (work coordinates, program units)
     Position end{};                      // motion: where it ends; other events: the position then
+    bool inch = false;                   // start, end, center, feed are in inches (G20, C: G70): the program's unit
     Position machine_end{};              // `end` in machine coordinates (offsets, shift, G52, G50 applied)
     std::optional<Position> center;      // arcs: the centre (X as diameter on lathes, like end)
     double radius = 0;                   // arcs

@@ -46,12 +46,17 @@ const char* to_string(EventKind k) {
 Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const Setup& setup, EventSink& sink,
                    const RunOptions& options)
     : programs_(programs), dialect_(dialect), setup_(setup), sink_(sink), options_(options),
-      guard_(setup.step_limit, setup.move_limit, options.time_limit), work_offsets_(setup.work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
+      guard_(setup.step_limit, setup.move_limit, options.time_limit), work_offsets_(setup.work_offsets),
+      additional_offsets_(setup.additional_work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
       tools_(setup.tools) {
     // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
     modal_.assign(dialect_.groups().size(), nullptr);
     for (const dialects::CodeInfo& c : dialect_.codes())
         if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group_index] = &c;
+    // The machine's power-on switches over the table (machine/SCHEMA.md "Power-on state").
+    for (const dialects::FunctionId function : setup_.power_on)
+        for (const dialects::CodeInfo* c : dialect_.codes_with_function(function))
+            if (c->letter == 'G' && !c->group.empty() && c->group != "00") modal_[c->group_index] = c;
     update_flags();
     for (const SoftLimit& limit : setup_.soft_limits) any_soft_limit_ |= limit.min.has_value() || limit.max.has_value();
     for (char letter = 'A'; letter <= 'Z'; ++letter) {
@@ -152,8 +157,9 @@ void Executor::emit(Event&& e) {
         if (auto limit = guard_.move()) return limit_alarm(e.source, e.start, std::move(*limit));
     }
     e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
-    const Position offset = machine_offset();
-    for (std::size_t a = 0; a < kAxisCount; ++a) e.machine_end[a] = e.end[a] * axis_scale(a) + offset[a];
+    e.inch = flags_.inch;
+    e.machine_end = machine_position_of(e.end);
+    if (motion) machine_at_ = e.machine_end;
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;
     if (e.time_s > 0) {
@@ -166,6 +172,13 @@ void Executor::emit(Event&& e) {
     sink_.on_event(e);
     if (stopped_ || e.kind == EventKind::alarm) return;
     if (auto limit = guard_.tick()) limit_alarm(e.source, position_, std::move(*limit));
+}
+
+Position Executor::machine_position_of(const Position& work) const {
+    const Position offset = machine_offset();
+    Position m{};
+    for (std::size_t a = 0; a < kAxisCount; ++a) m[a] = work[a] * axis_scale(a) + offset[a];
+    return m;
 }
 
 void Executor::limit_alarm(const SourceRef& where, const Position& at, LimitAlarm limit) {
@@ -212,10 +225,12 @@ RunResult Executor::run(ProgramRef main) {
     first.program = main;
     first.block = program_of(first).first_block;
     frames_.push_back(first);
+    for (const auto& [number, value] : options_.preset) variables_.write(number, macro::Value::of(value));
     // The machine has been homed: the program starts at reference point 1 (semantics.md §2.8).
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a)
         position_[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
+    machine_at_ = machine_position_of(position_);
     while (!frames_.empty() && !stopped_) {
         Frame& f = frames_.back();
         if (!file_of(f).in_program(f.program.program, f.block)) {
@@ -237,6 +252,7 @@ RunResult Executor::run(ProgramRef main) {
         execute_block(f);
     }
     result_.final_position = position_;
+    result_.inch = flags_.inch;
     return result_;
 }
 
@@ -280,6 +296,7 @@ void Executor::execute_block(Frame& frame) {
     const SourceRef where = source(frame, view);
     const bool moved = apply_block_words(frame, view, words);
     if (options_.emit_state && !stopped_) emit_state(where);
+    if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(true));
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
     if (moved && modal_call_ && !stopped_ && frames_.size() == depth && !frame.modal_macro)
         push_macro_frame(frame, view, modal_call_->program, modal_call_->repeats, modal_call_->arguments, true);
@@ -289,9 +306,16 @@ void Executor::execute_block(Frame& frame) {
 bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
     remember_words(view, words);
     apply_feed_speed_tool(view, words);
+    if (scan_.classes & dialects::traits::not_modelled) note_not_modelled(view, words);
     apply_modal_codes(view);
-    if (scan_.classes & dialects::traits::not_modelled) warn_not_modelled(view);   // executor_dialect_variables.cpp
+    // M codes that act before motion (M03, M08, clamps ...) start the spindle for the block's own
+    // cut: `G99 G01 Z-5. F0.2 S800 M03` cuts with the spindle turning (semantics.md §1.2 step 3).
+    // They run after the block's modal codes (step 4) so that `G96 S200 M03` starts at the surface
+    // speed: nothing an M code of step 3 does depends on the other modes.
+    apply_m_codes(frame, view, words, MPhase::before_motion);
+    if (stopped_) return false;
     if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
+    if (pending_length_event_ || length_applied_mm_ != length_mm_) take_up_length_offset(view, words);
     if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
     // A block that sets a frame (G10, G50/G92 X Z, G52, G68, G51, G51.1) does not move; its M
@@ -302,8 +326,27 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     const bool moved = !frame_only && apply_motion(view, words);
     if (stopped_) return moved;
     apply_dwell(view, words);
-    apply_m_codes(frame, view, words);   // may end the program: `frame` is gone after M30
+    apply_m_codes(frame, view, words, MPhase::after_motion);   // may end the program: `frame` is gone after M30
     return moved;
+}
+
+// A code whose motion the dry run does not reproduce (traits::not_modelled: G31 skip, G36/G37
+// automatic tool measurement, G39 corner arcs, G68/G69 double-turret mirror, G30.1, G50.2/G51.2
+// polygon turning, G60, ADV400 G74 homing) is said, never quietly run as something else: a
+// warning event the analyzer reports as K5009, saying what the trace does instead.
+void Executor::note_not_modelled(const ast::BlockView& view, const BlockWords& words) {
+    const bool axis_words = (words.words.mask() & axis_letters_) != 0 || words.incremental.mask() != 0;
+    for (const ast::CodeRef& c : scan_.g) {
+        if (!c.info || !c.info->has(dialects::traits::not_modelled)) continue;
+        Event e = event_at(EventKind::message, *frame_, view);
+        e.code = kerf_warning::not_modelled;
+        const std::string what = c.info->function == fn::skip_function
+                                     ? "the move runs to its end point (a dry run has no skip signal)"
+                                 : axis_words ? "the block's axis words run as an ordinary move of the active motion mode"
+                                              : "the trace shows no motion for it";
+        e.text = fmt::format("{} ({}) is not modelled by the dry run: {}", c.info->spelling, c.info->function.def().meaning, what);
+        emit(std::move(e));
+    }
 }
 
 void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {

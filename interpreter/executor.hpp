@@ -198,14 +198,15 @@ private:
     ModalFlags flags_;
     Position position_{};            // work coordinates as programmed (lathe X diameter)
     int work_system_ = 0;            // 0..5 = G54..G59
+    int additional_system_ = 0;      // n of G54.1 Pn while one is selected (then work_system_ is unused)
     std::array<Position, 6> work_offsets_{};   // G54..G59 (writable by #5221.., G10 L2)
-    // [additional work offsets] G54.1 P / Haas G154 P, G110–G129 (executor_additional_offsets.cpp):
-    // the registers written so far (mm, unset ones are 0) and the one in force (0: G54..G59).
-    std::map<int, Position> additional_offsets_;
-    int additional_system_ = 0;
     // [dialect variables] the dialect's [[variables]] ranges (executor_dialect_variables.cpp).
     std::map<std::int64_t, macro::Value> dialect_variables_;
     bool thread_chamfer_ = true;     // [Haas] M23 / M24: chamfer out of a thread cycle
+    std::map<int, Position> additional_offsets_;   // G54.1 Pn, Haas G154 Pn (writable by #7001.., #14001.., G10 L20)
+    const Position& active_work_offset() const;    // G54–G59 or G54.1 Pn
+    // G54.1 Pn / G154 Pn / G10 L20 Pn: n from 1 to the machine's count, else alarm PS0030 (and nullopt).
+    std::optional<int> additional_number(const ast::BlockView& view, std::optional<double> p);
     Position external_offset_{};
     Position work_shift_{};          // G10 P0 (lathe), subtracted (semantics.md §2.6)
     Position local_shift_{};         // G52
@@ -246,13 +247,14 @@ private:
     macro::Options macro_options(bool address) const;
     void remember_words(const ast::BlockView& view, const BlockWords& words);
     void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);
+    void note_not_modelled(const ast::BlockView& view, const BlockWords& words);
     void apply_tool_word(const ast::BlockView& view, int value);
     void apply_modal_codes(const ast::BlockView& view);
     void update_flags();
     bool apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words);
     void apply_local_system(const ast::BlockView& view, const BlockWords& words, bool current_point_code);
     void apply_data_input(const ast::BlockView& view, const BlockWords& words);
-    void apply_rotation(const ast::BlockView& view, const BlockWords& words, bool cw);
+    void apply_rotation(const ast::BlockView& view, const BlockWords& words);
     bool apply_motion(const ast::BlockView& view, const BlockWords& words);
     void thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
     bool is_cycle(const dialects::CodeInfo& code) const;
@@ -281,23 +283,20 @@ private:
     void apply_dwell(const ast::BlockView& view, const BlockWords& words);
     // A P dwell word in seconds: ms, or s on ADV400 (semantics.md §8.2); G04 and the drilling cycles.
     double dwell_p_seconds(double p) const { return setup_.dwell_p_in_seconds ? p : p / 1000.0; }
-    void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    // The block's M codes of one phase (semantics.md §1.2): before its motion (step 3), or after it
+    // (step 9: the codes with traits::after_motion, M05 M09 M00 M01 M02 M30 M98 M99).
+    enum class MPhase { before_motion, after_motion };
+    void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words, MPhase phase);
     void call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     // [local calls] [Haas] M97 P: a label of the running program as a subroutine (executor_local_call.cpp).
     void call_local_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     // A call to a program the run cannot find that the machine keeps resident (RunOptions::resident):
     // said in a message and skipped; false when the program is not resident (alarm 078 follows).
     bool skip_resident_call(const Frame& frame, const ast::BlockView& view, std::int64_t program, std::string_view how);
-    // [additional work offsets] (executor_additional_offsets.cpp)
-    void select_additional_work_offset(const ast::BlockView& view, const BlockWords& words, const dialects::CodeInfo& code);
-    const Position& active_work_offset() const;
-    Position& additional_offset(int number);
     // [dialect variables] (executor_dialect_variables.cpp): nullopt/undefined when the range says so.
     std::optional<macro::Value> read_dialect_variable(const dialects::VariableRange& range, int number);
     macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value);
-    std::string machine_axes() const;   // the machine's axis letters in order (Setup::axis_order)
-    // A code the dry run does not model (traits::not_modelled) says so (kerf warning 90102).
-    void warn_not_modelled(const ast::BlockView& view);
+    void main_program_pass(Frame& frame, const ast::BlockView& view, const Word* p);   // M99 in the main program
     bool apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     void emit_state(const SourceRef& where);
 
@@ -307,11 +306,16 @@ private:
     SourceRef source(const Frame& f, const ast::BlockView& view) const;
     bool has_function(const ast::BlockView& view, dialects::FunctionId function) const;
     bool modal_active(dialects::FunctionId function) const;
-    double axis_value(const BlockWords::Word& w, char letter) const;
+    double axis_value(const BlockWords::Word& w, char letter) const;   // program units (mm, inch, deg)
+    double increment(char letter) const;   // least input increment of the letter, program units
     Position target_position(const BlockWords& words, bool& moves) const;
     Position to_program(const Position& work) const;     // undo G51.1, G51, G68 (transforms.hpp)
     Position from_program(const Position& program) const;   // apply G68, G51, G51.1
     Position machine_offset() const;
+    Position machine_position_of(const Position& work) const;   // work + the offsets in force, mm
+    // Where the axes stand (the machine end of the last motion event): an offset change moves the
+    // work coordinates now and the axes with the next move (G43 H, a lathe T offset).
+    Position machine_at_{};
     Position tool_offset() const;
     double unit_scale() const { return flags_.inch ? 25.4 : 1.0; }
     double axis_scale(std::size_t a) const { return a < 3 ? unit_scale() : 1.0; }   // rotary: degrees
@@ -334,6 +338,7 @@ private:
     bool count_idle_move(const Frame& f, const ast::BlockView& view);
     // Stored stroke check of the box low..high (work coordinates); false after an OT alarm.
     bool within_soft_limits(const Position& low, const Position& high, const Frame& f, const ast::BlockView& view);
+    bool feed_commanded(bool moves, const Frame& f, const ast::BlockView& view);   // else alarm 011
     void move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view);
     // Time of a feed move or thread (e.start/end/kind set): F per minute or per revolution, G96
     // rpm along the path (a line, or `arc` when not null), exact-stop acceleration.
@@ -353,6 +358,7 @@ private:
     bool system_modelled(int number) const;
     macro::WriteResult write_system(int number, macro::Value value);
     bool system_read_only(int number) const;
+    std::optional<std::pair<int, std::size_t>> additional_variable(int number) const;   // #7001.., #14001..
 
     const ast::BlockView* view_ = nullptr;
     const Frame* frame_ = nullptr;
@@ -384,6 +390,7 @@ private:
     // The programmed point when the tool stands elsewhere (past a corner of direct drawing): the
     // next block's coordinates are measured from it (semantics.md §10.1).
     std::optional<Position> programmed_;
+    bool programmed_by_offset_ = false;   // programmed_ was set by a G45–G48 block (executor_offsets.cpp)
     motion::P2 plane_point(const Position& p) const;
     Position plane_position(motion::P2 p, const Position& like) const;
     // The resolver's view of a block whose words are `words`, programmed from `start` to `to`.
@@ -471,7 +478,13 @@ private:
     // work coordinates stay: the machine position shifts (like a lathe T word).
     int length_sign_ = 0;      // +1 G43, −1 G44, 0 G49 (power-on)
     int length_h_ = 0;         // the H number in force
-    double length_mm_ = 0;     // the signed offset on Z, mm
+    double length_mm_ = 0;     // the signed offset on Z, mm, as commanded
+    // The offset the axes have taken up: the commanded one from the next block that moves Z (or at
+    // once, machine switch length_offset_motion). Machine positions use this one.
+    double length_applied_mm_ = 0;
+    std::optional<Event> pending_length_event_;   // its coordinate_change, emitted when taken up
+    void take_up_length_offset(const ast::BlockView& view, const BlockWords& words);   // if the block moves Z
+    void take_up_length_offset(const ast::BlockView& view);
     void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
     bool axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const;   // seed-004 G43/G44
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------

@@ -57,6 +57,7 @@ void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, co
 
 void Executor::emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view) {
     const Frame& f = *frame_;
+    if (!feed_commanded(motion::length(arc) > 0, f, view)) return;
     const double scale = unit_scale();
     const motion::Box box = motion::bounds(arc);
     if (!within_soft_limits(from_geometric(box.min, to, setup_.diameter_x, scale),

@@ -185,15 +185,48 @@ std::optional<compensation::Step> Executor::comp_step(const Programmed& current,
     return std::nullopt;
 }
 
+namespace {
+
+// The in-plane length of each tool move of a step, from `from`.
+std::vector<double> move_lengths(const compensation::Step& step, motion::P2 from) {
+    std::vector<double> lengths;
+    for (const compensation::ToolMove& m : step.moves) {
+        double l = motion::norm(m.end - from);
+        if (m.arc) {
+            const motion::P2 u = from - m.center, v = m.end - m.center;
+            double sweep = std::atan2(motion::cross(u, v), motion::dot(u, v));
+            if (m.ccw && sweep < 0) sweep += 2 * M_PI;
+            if (!m.ccw && sweep > 0) sweep -= 2 * M_PI;
+            l = motion::norm(u) * std::fabs(sweep);
+        }
+        lengths.push_back(l);
+        from = m.end;
+    }
+    return lengths;
+}
+
+}  // namespace
+
 bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
                               const ast::BlockView& view) {
     const motion::P2 tip = tip_offset();
+    // Compensation acts in the plane (semantics.md §6); the axes off the plane (a helix's Z) go from
+    // the tool's start to the block's end along the whole path, shared by length: a connecting move
+    // of a few microns takes a few microns of the helix, not all of it (differential A4).
+    const Position from = position_;
+    const std::vector<double> lengths = move_lengths(step, plane_point(position_));
+    double total = 0, done = 0;
+    for (const double l : lengths) total += l;
     for (std::size_t i = 0; i < step.moves.size(); ++i) {
         const compensation::ToolMove& m = step.moves[i];
+        done += lengths[i];
+        Position off_plane = like;
+        const double share = total > 0 ? done / total : 1.0;
+        for (std::size_t a = 0; a < kAxisCount; ++a) off_plane[a] = from[a] + (like[a] - from[a]) * share;
         // The cancel's last move ends on the programmed point itself (no tip shift).
         const motion::P2 shift = cancels && i + 1 == step.moves.size() ? motion::P2{} : tip;
-        const Position end = plane_position(m.end + shift, like);
-        if (m.arc) cycle_arc(!m.ccw, end, plane_position(m.center + shift, like), view);
+        const Position end = plane_position(m.end + shift, off_plane);
+        if (m.arc) cycle_arc(!m.ccw, end, plane_position(m.center + shift, off_plane), view);
         else move(rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
         if (stopped_) return false;
     }

@@ -60,8 +60,10 @@ public:
                             "increments; most controls alarm)", letter, w->value));
             return w->value;
         }
-        const double unit = ex_.setup_.cycles.pq_unit_mm > 0 ? ex_.setup_.cycles.pq_unit_mm : ex_.setup_.increment_mm;
-        return w->value * unit;
+        // A fixed unit (micron, tenth micron) has its inch counterpart a tenth of it, as the
+        // increments do (0.001 mm ↔ 0.0001 in): `G76 ... P645 Q180` in G20 is 0.0645 / 0.0180 in.
+        const double metric = ex_.setup_.cycles.pq_unit_mm > 0 ? ex_.setup_.cycles.pq_unit_mm : ex_.setup_.increment_mm;
+        return w->value * (ex_.flags_.inch ? metric / 10.0 : metric);
     }
     bool repeat() const override {
         for (const std::vector<ast::CodeRef>* codes : {&ex_.scan_.g, &ex_.scan_.m})
@@ -84,6 +86,7 @@ public:
     // cycle's first move (leave_offset_for_cycle) the tool runs on programmed points.
     Position position() const override { return ex_.comp_path_.value_or(ex_.position_); }
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
+    double per_mm() const override { return 1.0 / ex_.unit_scale(); }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     double dwell_seconds(double p) const override { return ex_.dwell_p_seconds(p); }
     cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
@@ -148,6 +151,10 @@ public:
         ex_.emit(e);
     }
     void alarm(int number, std::string text) override { ex_.alarm(*ex_.frame_, view_, number, std::move(text)); }
+    void alarm_at(std::uint32_t block, int number, std::string text) override {
+        const ast::BlockView at = ex_.file_of(*ex_.frame_).block(block);
+        ex_.alarm(*ex_.frame_, at, number, std::move(text));
+    }
 
 private:
     bool move(EventKind kind, const Position& to) {
@@ -292,6 +299,7 @@ bool Executor::read_profile_block(const ast::BlockView& block, dialects::Functio
     if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(block, words, to, profile, last);
     if (!moves) return true;
     cycles::ProfileMove m;
+    m.block = scan_.block;
     m.end = to;
     m.kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
     if (const auto* w = words.get('F'); w && !w->data) m.feed = w->value;
@@ -323,6 +331,7 @@ bool Executor::read_profile_drawing(const ast::BlockView& block, const BlockWord
     if (!r) return false;
     for (const drawing::Move& piece : r->moves) {
         cycles::ProfileMove m;
+        m.block = scan_.block;
         m.end = plane_position(piece.end, to);
         m.kind = !piece.arc ? EventKind::linear : piece.sweep < 0 ? EventKind::arc_cw : EventKind::arc_ccw;
         m.center = plane_position(piece.center, to);

@@ -2,12 +2,14 @@
 //   lathe  G10 P0 X Z (U W)        work shift register: X/Z replace it, U/W add to it
 //          G10 P n X Z R Q (U W C) tool offset n: wear (P1..), geometry (P10000 + n)
 //   mill   G10 L2 P0..6 X Y Z      external offset (P0) / G54..G59; G91 adds
+//          G10 L20 P n X Y Z       additional work offset of G54.1 Pn; G91 adds
 //          G10 L10..L13 P n R      H geometry / H wear / D geometry / D wear
 //          G10 P n R               memory A: one value per register (seed 003, semantics.md §2.6)
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include "dialects/alarms.hpp"
 #include "interpreter/executor.hpp"
 
 namespace kerf::interpreter {
@@ -26,7 +28,7 @@ void write_axes(Position& reg, const BlockWords& words, const dialects::LexicalR
         const auto axis = axis_of_letter(incremental_of ? incremental_of : letter);
         if (!axis || letter == 'P' || letter == 'L' || letter == 'R') continue;
         double& r = reg[static_cast<std::size_t>(*axis)];
-        const double v = value_of(w, letter);
+        const double v = value_of(w, letter, static_cast<std::size_t>(*axis));
         r = incremental_of || add_all ? r + v : v;
     }
 }
@@ -36,7 +38,10 @@ void write_axes(Position& reg, const BlockWords& words, const dialects::LexicalR
 void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& words) {
     const auto* p = words.get('P');
     const auto* l = words.get('L');
-    const auto value_of = [this](const BlockWords::Word& w, char letter) { return axis_value(w, letter); };
+    // Registers are kept in mm (degrees on rotary axes): a G20 program writes inches.
+    const auto value_of = [this](const BlockWords::Word& w, char letter, std::size_t axis) {
+        return axis_value(w, kAxisLetters[axis]) * axis_scale(axis);
+    };
     const dialects::LexicalRules& rules = dialect_.lexical;
     Event e = event_at(EventKind::coordinate_change, *frame_, view);
     if (!p) {
@@ -54,12 +59,25 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
             write_axes(reg, words, rules, flags_.incremental, value_of);
         });
         e.text = n == 0 ? "external work offset" : fmt::format("work offset G{}", 53 + n);
+    } else if (l && std::lround(l->value) == 20) {
+        // G10 L20 Pn: the additional work offset of G54.1 Pn ([FANUC]); G91 adds.
+        const auto number = additional_number(view, p ? std::optional<double>(p->value) : std::nullopt);
+        if (!number) return;
+        change_offsets([&] { write_axes(additional_offsets_[*number], words, rules, flags_.incremental, value_of); });
+        e.text = fmt::format("work offset G54.1 P{}", *number);
     } else if (l || dialect_.machine != dialects::MachineKind::lathe) {
         const int kind = l ? static_cast<int>(std::lround(l->value)) : 0;   // 0 = memory A
         const auto* r = words.get('R');
         if (!r) return;   // nothing to write
+        if (n < 1 || n > setup_.tool_offset_count) {
+            // Checked where it is written: #11299 would be alarm 115 later on a 64-offset machine.
+            alarm(*frame_, view, alarms::offset_number,
+                  fmt::format("G10 P{}: no tool offset {} on this machine (1..{}, tool_offset_count; alarm 030)", n, n,
+                              setup_.tool_offset_count));
+            return;
+        }
         ToolOffset& t = tools_[n];
-        const double v = axis_value(*r, 'R');
+        const double v = axis_value(*r, 'R') * unit_scale();
         auto set = [&](double& reg) { reg = flags_.incremental ? reg + v : v; };
         if (kind == 0 || kind == 1 || kind == 10) set(t.length);
         if (kind == 0 || kind == 12) set(t.radius);
@@ -79,7 +97,7 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
         // The active offset changes the machine position, as a T word does (no change_offsets).
         ToolOffset& t = tools_[number];
         write_axes(geometry ? t.geometry : t.wear, words, rules, false, value_of);
-        if (const auto* r = words.get('R')) (geometry ? t.nose_radius : t.nose_radius_wear) = axis_value(*r, 'R');
+        if (const auto* r = words.get('R')) (geometry ? t.nose_radius : t.nose_radius_wear) = axis_value(*r, 'R') * unit_scale();
         if (const auto* q = words.get('Q')) t.tip = static_cast<int>(std::lround(q->value));
         e.text = fmt::format("tool offset {} {}", number, geometry ? "geometry" : "wear");
     }

@@ -49,10 +49,12 @@ std::optional<macro::Value> Executor::read_dialect_variable(const dialects::Vari
         }
         case dialects::VariableKind::work_offsets: {
             const OffsetSlot slot = offset_slot(range, number);
-            const auto axis = slot_axis(range, slot, machine_axes());
+            const auto axis = slot_axis(range, slot, setup_.axis_order);
             if (!axis) return Value::vacant_value();
+            // Registers hold mm (degrees); the program reads them in its own unit (G20: inches).
+            const auto a = static_cast<std::size_t>(*axis);
             const auto it = additional_offsets_.find(slot.number);
-            return Value::of(it == additional_offsets_.end() ? 0.0 : it->second[static_cast<std::size_t>(*axis)]);
+            return Value::of(it == additional_offsets_.end() ? 0.0 : it->second[a] / axis_scale(a));
         }
         case dialects::VariableKind::tool_in_spindle:
             return Value::of(static_cast<double>(tool_));
@@ -61,8 +63,6 @@ std::optional<macro::Value> Executor::read_dialect_variable(const dialects::Vari
     }
     return std::nullopt;
 }
-
-std::string Executor::machine_axes() const { return setup_.axis_order; }
 
 macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value) {
     using macro::WriteResult;
@@ -77,10 +77,11 @@ macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRang
             return WriteResult::ok;
         case dialects::VariableKind::work_offsets: {
             const OffsetSlot slot = offset_slot(range, number);
-            const auto axis = slot_axis(range, slot, machine_axes());
+            const auto axis = slot_axis(range, slot, setup_.axis_order);
             if (!axis) return WriteResult::undefined;
             // The tool stays where it is; its work coordinates follow the new offset.
-            change_offsets([&] { additional_offset(slot.number)[static_cast<std::size_t>(*axis)] = value.or_zero(); });
+            const auto a = static_cast<std::size_t>(*axis);
+            change_offsets([&] { additional_offsets_[slot.number][a] = value.or_zero() * axis_scale(a); });
             return WriteResult::ok;
         }
         case dialects::VariableKind::tool_in_spindle:
@@ -88,18 +89,6 @@ macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRang
             return WriteResult::read_only;
     }
     return WriteResult::undefined;
-}
-
-void Executor::warn_not_modelled(const ast::BlockView& view) {
-    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
-        for (const ast::CodeRef& c : *codes) {
-            if (!c.info || !c.info->has(dialects::traits::not_modelled)) continue;
-            Event e = event_at(EventKind::message, *frame_, view);
-            e.code = kerf_warning::not_modelled;
-            e.text = fmt::format("{} ({}) is not modelled by the dry run: positions after it may differ from the machine's",
-                                 c.info->spelling, c.info->function);
-            emit(e);
-        }
 }
 
 }  // namespace kerf::interpreter

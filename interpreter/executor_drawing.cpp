@@ -66,8 +66,8 @@ drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWo
         // A corner size is a distance: without a decimal point it counts least input increments
         // like an axis word (dialects.md §2); the angle is in degrees.
         const bool point = token.has(ast::token_flags::has_point) || token.has(ast::token_flags::value_expr);
-        const double mm = point || setup_.calculator_decimal ? value : value * setup_.increment_mm;
-        if (token.letter == 'C' || token.letter == 'R') b.corner_size = mm * unit_scale();
+        const double size = point || setup_.calculator_decimal ? value : value * setup_.increment(flags_.inch);
+        if (token.letter == 'C' || token.letter == 'R') b.corner_size = size * unit_scale();
     }
     b.moves = b.named() || b.angle.has_value();
     return b;

@@ -2,8 +2,8 @@
 // mills add G43/G44 length (H) on Z"). G43 adds the H register (length + length wear) to the Z
 // machine position, G44 subtracts it, G49 (and H0) cancel; an H word alone changes the register
 // while G43/G44 is in force ([FANUC]). The programmed (work) coordinates stay what they are: the
-// machine position shifts, which the tool takes up with the next Z move, as a lathe T word does
-// (dialects.md §3.5). The block's event says so; its `code` is the H number and `tool` the
+// next block with a Z word moves to its Z with the new offset (take_up_length_offset), or Z moves
+// at once (machine switch length_offset_motion); a move's length counts the offset it takes up. The block's event says so; its `code` is the H number and `tool` the
 // spindle tool, so a rule can compare them (an H of another tool: analyzer K5019).
 #include <fmt/format.h>
 
@@ -69,7 +69,38 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
                        : fmt::format("tool length offset {} H{}: machine Z = programmed Z {} {:.3f} mm",
                                      code ? code->spelling : std::string(sign > 0 ? "G43" : "G44"), h,
                                      sign > 0 ? "+" : "-", length);
-    emit(e);
+    pending_length_event_ = std::move(e);
+    // With the axis-movement reading of the parameter a block without axis words moves Z by the
+    // change at once; else (the default) the next block that moves Z takes it up, this one too.
+    if (setup_.length_offset_at_once && !(words.words.mask() & axis_letters_) && !words.incremental.mask()) {
+        take_up_length_offset(view);
+        move(flags_.motion == fn::linear ? EventKind::linear : EventKind::rapid, position_, *frame_, view);
+    }
+}
+
+// The offset is taken up by the next block with a Z word ([FANUC]: the offset vector is executed
+// with the movement of the offset axis; LinuxCNC's coordinate shift gives the same path): the Z
+// of that block is measured with the new offset, a block that moves only X and Y keeps the axis
+// where it stands (differential B2: `G28 G91 Z0. / G49 / G28 G91 X0. Y0.` does not drop the tool).
+// The `coordinate_change` event says so where the machine position starts to follow the new offset
+// (the block that takes it up), so that machine minus the offset of the events is the tool tip
+// throughout the trace.
+void Executor::take_up_length_offset(const ast::BlockView& view, const BlockWords& words) {
+    const auto* z = words.get('Z');
+    if ((z && !z->data) || words.incremental.count('Z')) take_up_length_offset(view);
+}
+
+void Executor::take_up_length_offset(const ast::BlockView& view) {
+    length_applied_mm_ = length_mm_;
+    if (!pending_length_event_) return;
+    Event e = std::move(*pending_length_event_);
+    pending_length_event_.reset();
+    if (e.source.line != scan_.source.line) {
+        e.text += ", given before and taken up by this block's Z";   // no line number: formatting moves lines
+        e.source = source(*frame_, view);
+    }
+    e.start = e.end = position_;
+    emit(std::move(e));
 }
 
 }  // namespace kerf::interpreter

@@ -213,7 +213,7 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
             // machine has calculator-type input ([FANUC]: G65 X10 gives #24 = 0.010 on IS-B).
             const double n = tree.number_value(t);
             const bool increments = !t.has(ast::token_flags::has_point) && !setup_.calculator_decimal;
-            v = increments ? macro::Value::of_increments(n * setup_.increment_mm) : macro::Value::of(n);
+            v = increments ? macro::Value::of_increments(n * increment(t.letter)) : macro::Value::of(n);
         }
         arguments.emplace_back(number, v);
     }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dialects/alarms.hpp"
 #include "dialects/functions.hpp"
 #include "interpreter/executor.hpp"
 #include "motion/line.hpp"
@@ -18,7 +19,7 @@ namespace fn = dialects::functions;
 namespace {
 
 // Path length of the linear axes (lathe X is a diameter: the path runs at the radius; a linear B
-// slide counts) and the travel of the rotary axes in degrees.
+// slide counts) and the travel of the rotary axes in degrees, between two machine positions (mm).
 struct Travel {
     double linear = 0;
     double rotary = 0;
@@ -137,23 +138,36 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
     e.time_s = std::isfinite(seconds) ? seconds : 0;
 }
 
+// A feed move needs a feed rate: F0, or no F since power-on, stops the control with alarm 011
+// ([FANUC] PS011 "feedrate zero"; semantics.md §4). A move that goes nowhere feeds nothing.
+bool Executor::feed_commanded(bool moves, const Frame& f, const ast::BlockView& view) {
+    if (feed_ > 0 || !moves) return true;
+    alarm(f, view, alarms::feed_zero,
+          fmt::format("feed move with no feed rate commanded (F{:g}): alarm 011; program F before the first "
+                      "G01/G02/G03", feed_));
+    return false;
+}
+
 void Executor::move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view) {
     // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
     if (slowdown_ && kind == EventKind::linear && !in_slowdown_ && flags_.motion == fn::linear && slowed_move(to, f, view)) return;
+    if (kind == EventKind::linear && !feed_commanded(to != position_, f, view)) return;
     Event e;
     e.kind = kind;
     e.source = source(f, view);
     e.start = position_;
     e.end = to;
     if (!within_soft_limits(to, to, f, view)) return;
-    const Travel travel_total = travel_of(position_, to, setup_);
-    e.length_mm = travel_total.linear * unit_scale();
+    // The axes travel from where they stand to the new machine position: an offset taken up by this
+    // move (G43 H, a lathe T offset, G49) is part of it (differential A7: `G43 Z15. H1` at Z15 moves).
+    const Position machine_to = machine_position_of(to);
+    const Travel travel_total = travel_of(machine_at_, machine_to, setup_);
+    e.length_mm = travel_total.linear;
     std::array<motion::AxisLimits, kAxisCount> limits{};
     std::array<double, kAxisCount> travel{};
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         limits[a] = {setup_.rapid_mm_min[a], setup_.accel_mm_s2[a]};
-        const double scale = axis_scale(a);
-        travel[a] = std::fabs(to[a] - position_[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0) * scale;
+        travel[a] = std::fabs(machine_to[a] - machine_at_[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0);
     }
     if (kind == EventKind::rapid) {
         // Each axis at its own rapid rate (dog-leg) or all scaled to the slowest (straight line),
@@ -218,6 +232,11 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
         return *reference;
     }
     bool moves = false;
+    // G45–G48 act only in their block (semantics.md §9.3): a block without them measures from where
+    // the tool stands (its G91 increments, the axes it does not name), not from the point the
+    // offset blocks programmed.
+    if (programmed_by_offset_ && !(scan_.classes & kPositionOffsetCode)) programmed_.reset();
+    programmed_by_offset_ = false;
     // [path changers] After a corner of direct drawing the tool stands off the programmed point,
     // which the block's coordinates are measured from (executor_drawing.cpp).
     const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
@@ -339,9 +358,39 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
     frames_.push_back(sub);
 }
 
-void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
+// M99 in a main program: back to its start, or to N p (dialects.md §3.6): the bar feeder's loop.
+// The control runs it until the operator stops it; a dry run runs RunOptions::passes passes and
+// ends with a note, so times and pictures are those of a pass, not of ten million blocks.
+void Executor::main_program_pass(Frame& frame, const ast::BlockView& view, const Word* p) {
+    std::optional<std::uint32_t> target = program_of(frame).first_block;
+    if (p) target = find_label(frame, p->value);
+    if (!target) {
+        alarm(frame, view, 78, fmt::format("M99 P{}: no N{} in this program (alarm 078)", p->value, p->value));
+        return;
+    }
+    if (*target >= frame.block) {   // M99 P to a later block: a jump forward, not a new pass
+        frame.block = *target;
+        return;
+    }
+    if (result_.passes < options_.passes) {
+        ++result_.passes;
+        frame.block = *target;
+        return;
+    }
+    Event e = event_at(EventKind::message, frame, view);
+    e.code = kerf_warning::program_repeats;
+    e.text = fmt::format("the program repeats: M99 in the main program starts it again (a bar-feed loop); the dry run "
+                         "stops after {} pass{}, and its times are for {} (kerf run --passes N)",
+                         result_.passes, result_.passes == 1 ? "" : "es", result_.passes == 1 ? "one pass" : "these passes");
+    emit(std::move(e));
+    result_.repeats = true;
+    result_.completed = true;
+    frames_.clear();
+}
+
+void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words, MPhase phase) {
     for (const ast::CodeRef& c : scan_.m) {
-        if (!c.info) continue;
+        if (!c.info || c.info->has(dialects::traits::after_motion) != (phase == MPhase::after_motion)) continue;
         const dialects::FunctionId f = c.info->function;
         Event e = event_at(EventKind::message, frame, view);   // the kind is set per code below
         e.code = c.key ? *c.key / 10 : 0;
@@ -384,13 +433,7 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             emit(e);
             const auto* p = words.get('P');
             if (frames_.size() == 1) {
-                // M99 in a main program: back to its start, or to N p, forever (the step limit
-                // bounds it; dialects.md §3.6).
-                frame.block = program_of(frame).first_block;
-                if (p) {
-                    if (const auto label = find_label(frame, p->value)) frame.block = *label;
-                    else alarm(frame, view, 78, fmt::format("M99 P{}: no N{} in this program (alarm 078)", p->value, p->value));
-                }
+                main_program_pass(frame, view, p);
                 return;
             }
             if (--frame.repeats_left > 0) {

@@ -53,6 +53,7 @@ bool Executor::position_offset_move(const ast::BlockView& view, const BlockWords
         move(motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
     }
     programmed_ = position_ == to ? std::nullopt : std::optional<Position>(to);
+    programmed_by_offset_ = programmed_.has_value();
     return true;
 }
 

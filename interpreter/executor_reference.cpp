@@ -1,6 +1,6 @@
 // Moves to and from fixed machine points (semantics.md §2.2, §2.8): G53 one-shot machine
 // coordinates, G28 reference return, G30 P2..P4 2nd–4th reference point, G29 return from the
-// reference point through the intermediate point remembered per axis.
+// reference point through the intermediate point remembered per axis, G27 the return check.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -29,10 +29,17 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
     const bool g28 = has_function(view, fn::reference_return);
     const bool g30 = has_function(view, fn::reference_return_nth);
     const bool g29 = has_function(view, fn::return_from_reference);
-    if (!g53 && !g28 && !g30 && !g29) return std::nullopt;
+    const bool g27 = has_function(view, fn::reference_return_check);
+    if (!g53 && !g28 && !g30 && !g29 && !g27) return std::nullopt;
     bool moves = false;
     const Position to = target_position(words, moves);
     if (!moves) return false;
+    if (g27) {
+        // [FANUC] G27 reference position return check: a rapid positioning to the programmed point
+        // (which should be the reference point; the check lamp is the machine's, not the trace's).
+        move(EventKind::rapid, to, f, view);
+        return !stopped_;
+    }
     if (g53) {
         // The programmed values are machine coordinates, for this block only (§2.2).
         const Position offset = machine_offset();

@@ -20,8 +20,10 @@ Position Executor::from_program(const Position& program) const {
 
 // `G68 <centre words of the plane> R<angle>`: a missing centre word is the current position, a
 // missing R is 0 ([FANUC] parameter 5410). Positive R turns counter-clockwise on FANUC and
-// clockwise on ADV400 (the dialect's function id, or the machine's g68 switch).
-void Executor::apply_rotation(const ast::BlockView&, const BlockWords& words, bool cw) {
+// clockwise on ADV400: the machine's g68_positive switch says which, and its default "dialect"
+// reads the dialect's function id (machine.cpp resolve_for_dialect), so a machine file that writes
+// "ccw" wins over the ADV400 table.
+void Executor::apply_rotation(const ast::BlockView&, const BlockWords& words) {
     Rotation r;
     r.plane = flags_.plane;
     const auto [i, j] = plane_indices(r.plane);
@@ -37,7 +39,7 @@ void Executor::apply_rotation(const ast::BlockView&, const BlockWords& words, bo
     }
     const auto* angle = words.get('R');
     const double degrees = angle ? angle->value : 0.0;
-    const bool clockwise_positive = cw || setup_.g68_positive_cw;
+    const bool clockwise_positive = setup_.g68_positive_cw;
     r.angle = (clockwise_positive ? -degrees : degrees) * std::numbers::pi / 180.0;
     rotation_ = r;
 }

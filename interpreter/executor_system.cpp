@@ -15,6 +15,9 @@
 //   #5001.. #5021.. #5041..     end point, machine and work position per axis (axis order of the machine)
 //   #5061.. #5081.. #5101..     skip position, tool offset, servo deviation: 0 / offset / 0
 //   #5201.. #5221.. ... #5321.. external offset, G54..G59 per axis: read and write
+//   #7001.. (P1–P48), #14001.. (P1–P300)  G54.1 Pn additional work offsets per axis: read and write
+// Lengths are read and written in the program's unit (inches under G20; the registers keep mm),
+// angles in degrees.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -72,6 +75,11 @@ auto field_of(Offset& t, OffsetField f) -> decltype(&t.length) {
 constexpr int kEndPoint = 5001, kMachinePosition = 5021, kWorkPosition = 5041, kSkipPosition = 5061,
               kToolOffsetValue = 5081, kServoDeviation = 5101, kWorkOffsets = 5201, kWorkOffsetsEnd = 5340;
 constexpr int kAxesPerRange = 20;
+// G54.1 P1..P48 (#7001 + 20 (n − 1) + axis) and P1..P300 (#14001 + ...): the additional work offsets.
+struct AdditionalRange {
+    int first, count;
+};
+constexpr AdditionalRange kAdditionalOffsets[] = {{7001, 48}, {14001, 300}};
 
 }  // namespace
 
@@ -120,7 +128,8 @@ std::optional<macro::Value> Executor::read_system(int number) {
         const auto it = tools_.find(offset);
         if (it == tools_.end()) return Value::of(0);
         const ToolOffset& t = it->second;
-        return Value::of(r.field == OffsetField::tip ? t.tip : *field_of(t, r.field));
+        // Registers are mm; a macro reads them in the program's unit (G20: inches).
+        return Value::of(r.field == OffsetField::tip ? t.tip : *field_of(t, r.field) / unit_scale());
     }
     if ((number >= 1000 && number <= 1035) || (number >= 1100 && number <= 1135)) return Value::of(0);
     if (number == 3000 || number == 3006) return Value::vacant_value();
@@ -160,14 +169,34 @@ std::optional<macro::Value> Executor::read_system(int number) {
     };
     if (const auto a = axis_at(kEndPoint)) return Value::of(position_[*a]);
     if (const auto a = axis_at(kWorkPosition)) return Value::of(position_[*a]);
-    if (const auto a = axis_at(kMachinePosition)) return Value::of(position_[*a] * axis_scale(*a) + machine_offset()[*a]);
+    if (const auto a = axis_at(kMachinePosition)) return Value::of(position_[*a] + machine_offset()[*a] / axis_scale(*a));
     if (const auto a = axis_at(kSkipPosition)) return Value::of(0);
-    if (const auto a = axis_at(kToolOffsetValue)) return Value::of(tool_offset()[*a]);
+    if (const auto a = axis_at(kToolOffsetValue)) return Value::of(tool_offset()[*a] / axis_scale(*a));
     if (const auto a = axis_at(kServoDeviation)) return Value::of(0);
     if (number >= kWorkOffsets && number <= kWorkOffsetsEnd) {
         const int set = (number - kWorkOffsets) / kAxesPerRange;   // 0 = external, 1..6 = G54..G59
         if (const auto a = axis_at(kWorkOffsets + set * kAxesPerRange))
-            return Value::of(set == 0 ? external_offset_[*a] : work_offsets_[static_cast<std::size_t>(set - 1)][*a]);
+            return Value::of((set == 0 ? external_offset_[*a] : work_offsets_[static_cast<std::size_t>(set - 1)][*a]) /
+                             axis_scale(*a));
+    }
+    if (const auto at = additional_variable(number)) {
+        const auto it = additional_offsets_.find(at->first);
+        return Value::of(it == additional_offsets_.end() ? 0.0 : it->second[at->second] / axis_scale(at->second));
+    }
+    return std::nullopt;
+}
+
+// #7001.. / #14001..: the additional work offset n and the axis a variable names; nullopt outside
+// the ranges, past the machine's count (additional_work_offset_count) or its axes.
+std::optional<std::pair<int, std::size_t>> Executor::additional_variable(int number) const {
+    for (const AdditionalRange& r : kAdditionalOffsets) {
+        if (number < r.first || number >= r.first + r.count * kAxesPerRange) continue;
+        const int n = (number - r.first) / kAxesPerRange + 1;
+        const int i = (number - r.first) % kAxesPerRange;
+        if (n > setup_.additional_work_offset_count || static_cast<std::size_t>(i) >= setup_.axis_order.size()) return std::nullopt;
+        const auto a = axis_of_letter(setup_.axis_order[static_cast<std::size_t>(i)]);
+        if (!a) return std::nullopt;
+        return std::pair<int, std::size_t>{n, static_cast<std::size_t>(*a)};
     }
     return std::nullopt;
 }
@@ -203,7 +232,7 @@ macro::WriteResult Executor::write_system(int number, macro::Value value) {
         if (offset > setup_.tool_offset_count) return WriteResult::undefined;
         ToolOffset& t = tools_[offset];
         if (r.field == OffsetField::tip) t.tip = static_cast<int>(std::lround(v));
-        else *field_of(t, r.field) = v;
+        else *field_of(t, r.field) = v * unit_scale();
         return WriteResult::ok;
     }
     if (number >= kWorkOffsets && number <= kWorkOffsetsEnd) {
@@ -215,8 +244,12 @@ macro::WriteResult Executor::write_system(int number, macro::Value value) {
         // The tool stays where it is; its work coordinates follow the new offset.
         change_offsets([&] {
             Position& reg = set == 0 ? external_offset_ : work_offsets_[static_cast<std::size_t>(set - 1)];
-            reg[static_cast<std::size_t>(*a)] = v;
+            reg[static_cast<std::size_t>(*a)] = v * axis_scale(static_cast<std::size_t>(*a));
         });
+        return WriteResult::ok;
+    }
+    if (const auto at = additional_variable(number)) {
+        change_offsets([&] { additional_offsets_[at->first][at->second] = v * axis_scale(at->second); });
         return WriteResult::ok;
     }
     return system_read_only(number) ? WriteResult::read_only : WriteResult::undefined;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dialects/alarms.hpp"
 #include "dialects/functions.hpp"
 #include "interpreter/executor.hpp"
 
@@ -11,13 +12,28 @@ namespace kerf::interpreter {
 
 namespace fn = dialects::functions;
 
+namespace {
+
+// Letters that are distances besides the axes: arc centre and radius words.
+constexpr std::uint32_t kDistanceLetters = 1u << ('I' - 'A') | 1u << ('J' - 'A') | 1u << ('K' - 'A') | 1u << ('R' - 'A');
+
+// [FANUC] Custom macro: "when a variable value is used in an address, it is rounded off to the
+// least significant digit of the address": `#1=1.2345` then `X-#1` is X-1.235 on IS-B mm, X[1/3]
+// is X0.333. Half away from zero; the nudge keeps 1.2345 (1.23449999... in binary) rounding up.
+double round_to_increment(double value, double increment) {
+    const double steps = value / increment;
+    return std::round(steps + std::copysign(1e-9, steps)) * increment;
+}
+
+}  // namespace
+
 macro::Options Executor::macro_options(bool address) const {
     macro::Options o;
     o.angle_range = setup_.atan_minus_180 ? macro::AngleRange::minus_180_to_180 : macro::AngleRange::zero_to_360;
     // ROUND in an address rounds to the least input increment; ADP undoes the increment scaling
     // of G65 arguments written without a point ([FANUC], macro/evaluate.hpp).
-    if (address) o.round_increment = setup_.increment_mm;
-    if (!setup_.calculator_decimal) o.adp_factor = 1.0 / setup_.increment_mm;
+    if (address) o.round_increment = setup_.increment(flags_.inch);
+    if (!setup_.calculator_decimal) o.adp_factor = 1.0 / setup_.increment(flags_.inch);
     return o;
 }
 
@@ -47,7 +63,9 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
                 return false;
             }
             if (r.value.vacant) continue;   // a vacant variable omits the address (FANUC macro B)
-            w.value = r.value.number;
+            w.value = letter && (kDistanceLetters >> (t.letter - 'A') & 1u || (dialect_axes_ & bit) != 0)
+                          ? round_to_increment(r.value.number, increment(t.letter))
+                          : r.value.number;
             w.has_point = true;             // macro values are never in least increments
         } else {
             w.value = tree.number_value(t);
@@ -60,9 +78,18 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
 
 // An axis or distance value in mm: without a decimal point and without calculator-type input it
 // counts least input increments (dialects.md §2 "Numbers", cycles.md §0).
-double Executor::axis_value(const BlockWords::Word& w, char) const {
+double Executor::axis_value(const BlockWords::Word& w, char letter) const {
     if (w.has_point || setup_.calculator_decimal) return w.value;
-    return w.value * setup_.increment_mm;
+    return w.value * increment(letter);
+}
+
+// The least input increment of an address in the unit it is read in: inch under G20 (0.0001 in on
+// IS-B, not 0.001), degrees on a rotary axis (C360000 is 360°) ([FANUC] "Least input increment").
+double Executor::increment(char letter) const {
+    const auto axis = axis_of_letter(letter);
+    if (axis && setup_.rotary[static_cast<std::size_t>(*axis)] && dialect_axes_ >> (letter - 'A') & 1u)
+        return setup_.increment_deg();
+    return setup_.increment(flags_.inch);
 }
 
 double Executor::current_rpm(double x_diameter) const {
@@ -148,10 +175,27 @@ Position Executor::machine_offset() const {
     const Position tool = tool_offset();
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        p[a] = active_work_offset()[a] + external_offset_[a] - work_shift_[a] +
+        p[a] = active_work_offset()[a] + external_offset_[a] + setup_.work_shift_sign * work_shift_[a] +
                local_shift_[a] + setting_shift_[a] + tool[a];
-    p[2] += length_mm_;   // [length offsets] G43/G44 H on Z (executor_length.cpp)
+    p[2] += length_applied_mm_;   // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp)
     return p;
+}
+
+const Position& Executor::active_work_offset() const {
+    static const Position kZero{};
+    if (additional_system_ == 0) return work_offsets_[static_cast<std::size_t>(work_system_)];
+    const auto it = additional_offsets_.find(additional_system_);
+    return it == additional_offsets_.end() ? kZero : it->second;
+}
+
+std::optional<int> Executor::additional_number(const ast::BlockView& view, std::optional<double> p) {
+    const long n = p ? std::lround(*p) : 1;
+    if (n >= 1 && n <= setup_.additional_work_offset_count && (!p || *p == static_cast<double>(n)))
+        return static_cast<int>(n);
+    alarm(*frame_, view, alarms::offset_number,
+          fmt::format("additional work offset P{:g}: the machine has P1 to P{} (alarm 030, additional_work_offset_count)",
+                      p.value_or(1.0), setup_.additional_work_offset_count));
+    return std::nullopt;
 }
 
 Position Executor::tool_offset() const {
@@ -173,17 +217,25 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             {
                 change_offsets([&] {
                     work_system_ = n;
-                    additional_system_ = 0;   // [additional work offsets] G54–G59 end G154 / G54.1
+                    additional_system_ = 0;
                     if (setup_.g54_cancels_g52) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)
                 });
             }
         } else if (f == fn::work_coordinate_additional) {
-            select_additional_work_offset(view, words, *c.info);   // executor_additional_offsets.cpp
+            // G54.1 Pn ([FANUC]; no P is P1), Haas G154 Pn; Haas G110–G129 carry their P as data
+            // (`implied = ["P1"]`, haas-mill.toml: G110 is G154 P1, haas.co.uk "Programmable Offsets").
+            std::optional<double> p;
+            if (const auto* w = words.get('P')) p = w->value;
+            for (const auto& [letter, value] : c.info->implied)
+                if (letter == 'P' && !p) p = value;
+            const auto n = additional_number(view, p);
+            if (!n) return false;
+            change_offsets([&] { additional_system_ = *n; });
         } else if (f == fn::programmable_data_input) {
             apply_data_input(view, words);
             return false;   // no motion in a G10 block
         } else if (f == fn::coordinate_rotation || f == fn::coordinate_rotation_cw) {
-            apply_rotation(view, words, f == fn::coordinate_rotation_cw);
+            apply_rotation(view, words);
             return false;   // G68 sets the rotation; the next block moves (semantics.md §2.9)
         } else if (f == fn::coordinate_rotation_cancel) {
             rotation_.reset();
@@ -200,7 +252,7 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
                 if (!axis) continue;
                 const std::size_t a = static_cast<std::size_t>(*axis);
                 const double value = axis_value(w, letter);
-                setting_shift_[a] += position_[a] - value;
+                setting_shift_[a] += (position_[a] - value) * axis_scale(a);   // offsets are mm
                 position_[a] = value;
             }
             return false;
@@ -216,7 +268,7 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             for (std::size_t a = 0; a < kAxisCount; ++a) named = named || words.get(kAxisLetters[a]);
             for (std::size_t a = 0; a < kAxisCount; ++a) {
                 if (named && !words.get(kAxisLetters[a])) continue;
-                position_[a] += setting_shift_[a];
+                position_[a] += setting_shift_[a] / axis_scale(a);
                 setting_shift_[a] = 0;
             }
             return false;
@@ -244,8 +296,8 @@ void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& 
             const std::size_t a = static_cast<std::size_t>(*axis);
             const double v = axis_value(w, letter);
             // current point: program p maps to work p + L with L = position − value (§2.4);
-            // FANUC: the vector itself.
-            local_shift_[a] = current_point ? local_shift_[a] + (position_[a] - v) : v;
+            // FANUC: the vector itself, in the program's unit (§4.2; offsets are kept in mm).
+            local_shift_[a] = current_point ? local_shift_[a] + (position_[a] - v) * axis_scale(a) : v * axis_scale(a);
         }
     });
     Event e = event_at(EventKind::coordinate_change, *frame_, view);

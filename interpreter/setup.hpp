@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "dialects/functions.hpp"
 #include "interpreter/compensation/radius_compensation.hpp"
 #include "interpreter/cycles/settings.hpp"
 #include "interpreter/events.hpp"
@@ -36,10 +37,18 @@ struct Setup {
     bool diameter_x = false;           // lathe: X and U are diameters (dialects.md §3.3)
     std::string axis_order = "XYZ";    // the machine's axes in control order: #5001 is the first (FANUC)
     double increment_mm = 0.001;       // IS-B 0.001, IS-C 0.0001
+    // The least input increment of a word written without a decimal point, in the unit it is read
+    // in ([FANUC] "Least input increment": IS-B 0.001 mm, 0.0001 inch, 0.001 deg; IS-C a tenth of
+    // each). Rotary axes count degrees whatever G20/G21 says.
+    double increment(bool inch) const { return inch ? increment_mm / 10.0 : increment_mm; }
+    double increment_deg() const { return increment_mm; }
     bool calculator_decimal = true;    // an axis value without point is mm (true) or increments (false)
     std::array<Position, 6> work_offsets{};   // G54..G59, machine coordinates of each zero
+    int additional_work_offset_count = 48;     // G54.1 P1..count ([FANUC] option 48 or 300)
+    std::map<int, Position> additional_work_offsets;   // G54.1 Pn (an unlisted n is zero)
     Position external_offset{};
     Position work_shift{};             // G10 P0 register at power-on (semantics.md §2.6)
+    double work_shift_sign = -1;       // machine = program + offset ∓ shift: −1 subtract (FANUC), +1 add (machine work_shift_sign, §12.3)
     std::array<Position, 4> reference_points{};   // G28 (1), G30 P2..P4
     bool start_at_reference = true;    // the run starts at reference point 1 (homed), else at machine zero
     Position rapid_mm_min{};           // per axis; 0 = axis absent
@@ -80,8 +89,14 @@ struct Setup {
     bool comp_shift_without_motion = false;   // seed 004: `G42 D02` alone moves the centre at once (§6)
     bool g41_g42_swapped = false;             // G41 = right (ADV400 list, semantics.md §12.12)
     bool corner_slowdown_step = false;        // seed 004 G28 K F: the feed drops at once (true) or ramps (§9.5, §12.8)
+    bool length_offset_at_once = false;       // G43/G44/G49 without axis words moves Z at once (machine length_offset_motion)
     bool iso_g43_approach = true;             // seed 004 G43 in a move: stop D short along the approach (§9.4, §12.9)
     cycles::Settings cycles;           // persistent cycle parameters and cycle switches (cycles.md §0, §21)
+    // The modes the machine powers on in where the reference leaves them to parameters (machine
+    // switches power_on_units/plane/distance/return_level; dialects.md §3.8, §4, §11.6): the
+    // function of the code active at power-on, over the dialect table's default. A function the
+    // dialect has no code for (G90/G91 in system A) changes nothing.
+    std::vector<dialects::FunctionId> power_on;
 };
 
 }  // namespace kerf::interpreter

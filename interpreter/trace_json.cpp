@@ -127,6 +127,7 @@ void TraceWriter::append(fmt::memory_buffer& out, const Event& e) {
     put(out, ",\"line\":");
     put_int(out, e.source.line);
     write_position(out, "end", e.end);
+    if (e.inch) put(out, ",\"units\":\"inch\"");   // absent: mm (the traces of metric programs stay as they were)
     write_position(out, "machine", e.machine_end);
     if (is_motion(e.kind)) {
         write_position(out, "start", e.start);
@@ -203,7 +204,10 @@ json::object summary_to_json(const RunResult& r, std::string_view axes) {
                         {"tools", std::move(tools)},
                         {"alarms", std::move(alarms)},
                         {"blocks", r.blocks},
-                        {"completed", r.completed}};
+                        {"completed", r.completed},
+                        {"repeats", r.repeats},
+                        {"passes", r.passes},
+                        {"units", r.inch ? "inch" : "mm"}};
 }
 
 }  // namespace kerf::interpreter

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "analyzer/finding.hpp"
+#include "analyzer/incremental.hpp"
 #include "interpreter/events.hpp"
 #include "lsp/document.hpp"
 #include "lsp/project_seam.hpp"
@@ -50,6 +51,15 @@ struct ProgramRun {
     std::map<int, double> length_per_tool;
 };
 
+// A value the dry run saw at a block the first time it ran: a variable the block names (its value
+// after the block) or a word's expression (X[#1+2.]: the value the block used).
+struct MacroValue {
+    ast::Range range;             // the variable (#1, #[#2+1]) or the word's expression
+    std::int64_t variable = -1;   // the variable's number; -1 for a word's expression
+    bool vacant = false;
+    double value = 0;
+};
+
 struct DryRun {
     std::vector<std::int32_t> state_of_block;   // per block: index into states, -1 when it never ran
     std::vector<BlockState> states;
@@ -58,6 +68,11 @@ struct DryRun {
     std::map<std::uint32_t, ProgramRun> programs;   // program index → its share of the run
     ProgramRun total;                             // the whole run, calls included
     std::vector<std::pair<std::uint32_t, std::string>> alarms;   // block, text
+    std::map<std::uint32_t, std::vector<MacroValue>> macro_values;   // blocks with macro expressions only
+    const std::vector<MacroValue>* values(std::uint32_t block) const {
+        const auto it = macro_values.find(block);
+        return it == macro_values.end() ? nullptr : &it->second;
+    }
     bool completed = false;                       // the run reached its end (not a step limit or alarm)
     const BlockState* state(std::uint32_t block) const {
         if (block >= state_of_block.size() || state_of_block[block] < 0) return nullptr;
@@ -100,6 +115,13 @@ private:
     std::deque<std::string> order_;                                    // uris in arrival order
     std::map<std::string, std::shared_ptr<const Document>> pending_;   // the newest version per uri
     std::map<std::string, std::shared_ptr<const Analysis>> results_;
+    // The static check of each document, kept between its versions (analyzer/incremental.hpp).
+    struct Incremental {
+        analyzer::IncrementalStatic check;
+        std::uint64_t serial = 0;                       // Document::serial() of the version it knows
+        std::shared_ptr<const FileSettings> settings;   // the settings it checked under (kept alive)
+    };
+    std::map<std::string, std::shared_ptr<Incremental>> incremental_;
     std::string running_;                                              // the uri being analysed
     std::atomic<bool> cancel_{false};
     bool stop_ = false;

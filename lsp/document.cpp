@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "analyzer/incremental.hpp"
 #include "grammar/parse.hpp"
 #include "lsp/reparse.hpp"
 
@@ -44,7 +45,12 @@ std::shared_ptr<const Document> Document::open(std::string uri, std::filesystem:
 }
 
 std::shared_ptr<const Document> Document::with_settings(std::shared_ptr<const FileSettings> settings) const {
-    return open(uri_, path_, version_, text(), std::move(settings));
+    std::shared_ptr<Document> d = successor(version_);
+    d->settings_ = std::move(settings);
+    d->text_ = text();
+    d->parse_whole();
+    d->record_whole();   // parsed again whole (the incremental check starts over)
+    return d;
 }
 
 namespace {
@@ -63,7 +69,63 @@ std::optional<std::uint32_t> offset_in(const ast::LineIndex& lines, std::string_
     return std::min(lines.offset_of_utf16(p), end);
 }
 
+constexpr std::uint32_t kWholeText = 0xFFFFFFFFu;   // BlockSplice::old_end of a text parsed again whole
+constexpr std::size_t kLogLength = 256;              // edits kept for the analysis worker to catch up
+
 }  // namespace
+
+std::uint32_t Document::offset(ast::Position p) const {
+    return offset_in(*lines_, text(), p).value_or(static_cast<std::uint32_t>(text().size()));
+}
+
+std::optional<std::pair<std::uint32_t, std::uint32_t>> Document::bytes_of(const ContentChange& c, std::size_t index, std::int64_t version,
+                                                                          std::vector<std::string>& problems) const {
+    const std::string_view text = this->text();
+    const auto begin = offset_in(*lines_, text, c.range->first);
+    const auto end = offset_in(*lines_, text, c.range->second);
+    if (!begin || !end || *begin > *end) {
+        problems.push_back(fmt::format("change {} of version {}: range {}:{}-{}:{} is outside the document ({} lines); skipped",
+                                       index + 1, version, c.range->first.line, c.range->first.column, c.range->second.line,
+                                       c.range->second.column, lines_->line_count()));
+        return std::nullopt;
+    }
+    return std::make_pair(*begin, *end);
+}
+
+void Document::record(const ast::BlockSplice& splice, std::optional<Replaced> old) {
+    analyzer::BlockEdit e{splice, true, {}};
+    if (old && splice.old_end != kWholeText) {
+        e.facts_changed = old->facts != analyzer::static_facts(tree_, splice.first, splice.first + splice.added);
+        e.labels = std::move(old->labels);
+        const std::vector<std::int64_t> added = analyzer::block_labels(tree_, splice.first, splice.first + splice.added);
+        e.labels.insert(e.labels.end(), added.begin(), added.end());
+    }
+    ++serial_;
+    log_.push_back(e);
+    if (log_.size() > kLogLength) log_.pop_front();
+}
+
+void Document::record_whole() { record({0, 0, 0, 0, kWholeText, 0}, std::nullopt); }
+
+Document::Replaced Document::replaced(const ast::SyntaxTree& tree, std::uint32_t first, std::uint32_t end) {
+    return {analyzer::static_facts(tree, first, end), analyzer::block_labels(tree, first, end)};
+}
+
+std::optional<std::vector<analyzer::BlockEdit>> Document::edits_since(std::uint64_t serial) const {
+    if (serial > serial_ || serial_ - serial > log_.size()) return std::nullopt;
+    return std::vector<analyzer::BlockEdit>(log_.end() - static_cast<std::ptrdiff_t>(serial_ - serial), log_.end());
+}
+
+std::shared_ptr<Document> Document::successor(std::int64_t version) const {
+    std::shared_ptr<Document> next(new Document());
+    next->uri_ = uri_;
+    next->path_ = path_;
+    next->version_ = version;
+    next->settings_ = settings_;
+    next->serial_ = serial_;
+    next->log_ = log_;
+    return next;
+}
 
 std::shared_ptr<const Document> Document::edit(std::int64_t version, const std::vector<ContentChange>& changes,
                                                std::vector<std::string>& problems) const {
@@ -72,68 +134,61 @@ std::shared_ptr<const Document> Document::edit(std::int64_t version, const std::
     std::shared_ptr<Document> step;   // the intermediate version of a multi-change edit
     for (std::size_t i = 0; i < changes.size(); ++i) {
         const ContentChange& c = changes[i];
-        std::shared_ptr<Document> next(new Document());
-        next->uri_ = uri_;
-        next->path_ = path_;
-        next->version_ = version;
-        next->settings_ = settings_;
+        std::shared_ptr<Document> next = current->successor(version);
         if (!c.range) {
             next->text_ = c.text;
             next->parse_whole();
+            next->record_whole();
         } else {
+            const auto bytes = current->bytes_of(c, i, version, problems);
+            if (!bytes) continue;
+            const auto [begin, end] = *bytes;
             const std::string_view text = current->text();
-            const auto begin = offset_in(current->lines(), text, c.range->first);
-            const auto end = offset_in(current->lines(), text, c.range->second);
-            if (!begin || !end || *begin > *end) {
-                problems.push_back(fmt::format("change {} of version {}: range {}:{}-{}:{} is outside the document ({} lines); skipped",
-                                               i + 1, version, c.range->first.line, c.range->first.column, c.range->second.line,
-                                               c.range->second.column, current->lines().line_count()));
-                continue;
-            }
-            std::string edited;
             if (!current->refused_.empty() || !refusal(c.text).empty()) {
                 // A binary document is only text: the edit is applied to it, and it is read again
                 // whole when it may have become a program.
-                edited.reserve(text.size() + c.text.size());
-                edited.append(text.substr(0, *begin)).append(c.text).append(text.substr(*end));
-                next->text_ = std::move(edited);
+                next->text_.reserve(text.size() + c.text.size());
+                next->text_.append(text.substr(0, begin)).append(c.text).append(text.substr(end));
                 next->parse_whole();
+                next->record_whole();
             } else {
                 ast::BlockSplice splice;
-                next->tree_ = reparse(current->tree_, {*begin, *end, c.text}, current->dialect().lexical, splice);
+                next->tree_ = reparse(current->tree_, {begin, end, c.text}, current->dialect().lexical, splice);
                 next->typed_ = std::make_unique<ast::TypedFile>(
-                    splice.old_end == 0xFFFFFFFFu ? ast::TypedFile::bind(next->tree_, next->dialect())
-                                                  : ast::TypedFile::bind_edited(next->tree_, *current->typed_, splice));
-                next->lines_ = std::make_unique<ast::LineIndex>(next->tree_.text);
+                    splice.old_end == kWholeText ? ast::TypedFile::bind(next->tree_, next->dialect())
+                                                 : ast::TypedFile::bind_edited(next->tree_, *current->typed_, splice));
+                next->lines_ = std::make_unique<ast::LineIndex>(*current->lines_);
+                next->lines_->edit(next->tree_.text, begin, end, static_cast<std::uint32_t>(begin + c.text.size()));
                 next->reparsed_blocks_ = splice.added;
+                next->record(splice, replaced(current->tree_, splice.first, splice.first + splice.removed));
             }
         }
         step = std::move(next);
         current = step.get();
     }
     if (!step) {   // nothing applied: the same text under the new version
-        return open(uri_, path_, version, text(), settings_);
+        std::shared_ptr<Document> same = successor(version);
+        same->text_ = text();
+        same->parse_whole();
+        same->serial_ = serial_;   // the same text: no edit
+        return same;
     }
     return step;
 }
 
 bool Document::change_in_place(const ContentChange& c, std::size_t index, std::vector<std::string>& problems) {
-    const std::string_view text = this->text();
-    const auto begin = offset_in(*lines_, text, c.range->first);
-    const auto end = offset_in(*lines_, text, c.range->second);
-    if (!begin || !end || *begin > *end) {
-        problems.push_back(fmt::format("change {} of version {}: range {}:{}-{}:{} is outside the document ({} lines); skipped",
-                                       index + 1, version_, c.range->first.line, c.range->first.column, c.range->second.line,
-                                       c.range->second.column, lines_->line_count()));
-        return false;
-    }
+    const auto bytes = bytes_of(c, index, version_, problems);
+    if (!bytes) return false;
     ast::BlockSplice splice;
-    reparse_in_place(tree_, {*begin, *end, c.text}, dialect().lexical, splice);
-    auto typed = std::make_unique<ast::TypedFile>(splice.old_end == 0xFFFFFFFFu ? ast::TypedFile::bind(tree_, dialect())
-                                                                                 : ast::TypedFile::bind_edited(tree_, *typed_, splice));
+    std::optional<Replaced> old;
+    reparse_in_place(tree_, {bytes->first, bytes->second, c.text}, dialect().lexical, splice,
+                     [&](const ast::SyntaxTree& tree, std::uint32_t first, std::uint32_t end) { old = replaced(tree, first, end); });
+    auto typed = std::make_unique<ast::TypedFile>(splice.old_end == kWholeText ? ast::TypedFile::bind(tree_, dialect())
+                                                                                : ast::TypedFile::bind_edited(tree_, *typed_, splice));
     typed_ = std::move(typed);
-    lines_ = std::make_unique<ast::LineIndex>(tree_.text);
+    lines_->edit(tree_.text, bytes->first, bytes->second, static_cast<std::uint32_t>(bytes->first + c.text.size()));
     reparsed_blocks_ = splice.added;
+    record(splice, std::move(old));
     return true;
 }
 

@@ -4,12 +4,14 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "analyzer/incremental.hpp"
 #include "ast/source.hpp"
 #include "ast/syntax.hpp"
 #include "ast/typed.hpp"
@@ -57,9 +59,15 @@ public:
     const std::string& refused() const { return refused_; }
     // Blocks parsed by the last edit (whole-file parses count every block): for tests and logs.
     std::uint32_t reparsed_blocks() const { return reparsed_blocks_; }
+    // How many edits made this version (each change of a didChange counts; open counts none), and
+    // the edits after the first `serial` of them, as incremental checking takes them
+    // (analyzer/incremental.hpp); nullopt when they are no longer all kept.
+    std::uint64_t serial() const { return serial_; }
+    std::optional<std::vector<analyzer::BlockEdit>> edits_since(std::uint64_t serial) const;
 
-    // Byte offset of a UTF-16 position (clamped to the line's end and the text's end).
-    std::uint32_t offset(ast::Position p) const { return lines_->offset_of_utf16(p); }
+    // Byte offset of a UTF-16 position: a column past the line's end means its end, before the
+    // line break (LSP 3.17 Position); a line past the last means the end of the text.
+    std::uint32_t offset(ast::Position p) const;
     ast::Position position(std::uint32_t offset) const { return lines_->utf16(offset); }
     // The block that holds byte `offset` (the last block for the end of the text).
     std::uint32_t block_at(std::uint32_t offset) const;
@@ -69,6 +77,20 @@ public:
 private:
     Document() = default;
     void parse_whole();
+    // A new version with this one's identity and edit log, nothing parsed yet.
+    std::shared_ptr<Document> successor(std::int64_t version) const;
+    // The bytes a ranged change replaces, or nullopt (said in `problems`) when it is outside the text.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> bytes_of(const ContentChange& change, std::size_t index, std::int64_t version,
+                                                                    std::vector<std::string>& problems) const;
+    // What incremental checking needs to know of the blocks an edit replaced (analyzer/incremental.hpp).
+    struct Replaced {
+        std::uint64_t facts = 0;
+        std::vector<std::int64_t> labels;
+    };
+    static Replaced replaced(const ast::SyntaxTree& tree, std::uint32_t first, std::uint32_t end);
+    // Logs an edit; `old` is nullopt when what it replaced is not known.
+    void record(const ast::BlockSplice& splice, std::optional<Replaced> old);
+    void record_whole();
     // Applies one ranged change to this version in place; false when it is outside the text.
     bool change_in_place(const ContentChange& change, std::size_t index, std::vector<std::string>& problems);
     std::string uri_;
@@ -81,6 +103,8 @@ private:
     std::unique_ptr<ast::LineIndex> lines_;
     std::string refused_;
     std::uint32_t reparsed_blocks_ = 0;
+    std::uint64_t serial_ = 0;
+    std::deque<analyzer::BlockEdit> log_;   // the last edits, the newest last
 };
 
 // Why kerf does not read `text` as a program ("" when it does): a binary file (NUL bytes).

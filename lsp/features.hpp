@@ -53,6 +53,8 @@ json::value document_symbols(const Snapshot& s);                                
 json::value workspace_symbols(const OpenDocuments& open, ProjectSeam& project, const std::string& query);
 json::value code_actions(const Snapshot& s, std::pair<ast::Position, ast::Position> range, const json::value& context);   // code_actions.cpp
 json::value resolve_code_action(const Snapshot& s, json::object action);
+void conversion_actions(const Snapshot& s, json::array& out);                            // convert.cpp
+json::value resolve_conversion(const Snapshot& s, json::object action);
 json::value formatting(const Snapshot& s);                                               // formatting.cpp
 json::value range_formatting(const Snapshot& s, std::pair<ast::Position, ast::Position> range);
 json::value code_lens(const Snapshot& s);                                                // code_lens.cpp

@@ -37,16 +37,16 @@ Parsed parse_message(std::string_view body) {
         m.kind = o.contains("id") ? MessageKind::request : MessageKind::notification;
         if (m.kind == MessageKind::request && id.is_null())
             return {std::nullopt, bad(error_code::invalid_request, "a request's \"id\" must be a number or a string")};
-        if (const auto* params = o.if_contains("params"); params && !params->is_null()) {   // null: as if absent (some clients send it for shutdown)
+        if (auto* params = o.if_contains("params"); params && !params->is_null()) {   // null: as if absent (some clients send it for shutdown)
             if (!params->is_object() && !params->is_array())
                 return {std::nullopt, bad(error_code::invalid_request, "\"params\" must be an object or an array", id)};
-            m.params = *params;
+            m.params = std::move(*params);   // not copied: a didOpen holds the whole document
         }
         return {std::move(m), std::nullopt};
     }
     if (o.contains("result") || o.contains("error")) {
         m.kind = MessageKind::response;
-        if (const auto* r = o.if_contains("result")) m.result = *r;
+        if (auto* r = o.if_contains("result")) m.result = std::move(*r);
         if (const auto* e = o.if_contains("error"); e && e->is_object()) m.error = e->as_object();
         return {std::move(m), std::nullopt};
     }

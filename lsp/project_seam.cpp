@@ -31,18 +31,15 @@ public:
     // An open document is the editor's text (already decoded); a file is read and decoded from disk.
     project::ReadResult read(const fs::path& path, const ast::InputLimits& limits) const override {
         project::ReadResult r;
-        if ((r.text = open_(path))) return r;
+        if ((r.text = open_(path, std::string::npos))) return r;
         return disk_.read(path, limits);
     }
     project::ReadResult read_head(const fs::path& path, std::size_t bytes) const override {
         project::ReadResult r;
-        if ((r.text = open_(path))) {
-            if (r.text->size() > bytes) r.text->resize(bytes);
-            return r;
-        }
+        if ((r.text = open_(path, bytes))) return r;
         return disk_.read_head(path, bytes);
     }
-    bool is_file(const fs::path& path) const override { return open_(path).has_value() || disk_.is_file(path); }
+    bool is_file(const fs::path& path) const override { return open_(path, 0).has_value() || disk_.is_file(path); }
     std::vector<fs::path> files_in(const fs::path& folder) const override { return disk_.files_in(folder); }
 
 private:
@@ -129,6 +126,7 @@ void ProjectSeam::set_client(ClientSettings settings) {
     if (overrides_of(settings).dialect != overrides_of(client_).dialect || settings.machine != client_.machine)
         workspace_.set_overrides(overrides_of(settings));
     client_ = std::move(settings);
+    ++generation_;
 }
 
 ClientSettings ProjectSeam::client() const {
@@ -136,7 +134,10 @@ ClientSettings ProjectSeam::client() const {
     return client_;
 }
 
-void ProjectSeam::forget_configs() { workspace_.forget_projects(); }
+void ProjectSeam::forget_configs() {
+    workspace_.forget_projects();
+    ++generation_;
+}
 
 std::optional<fs::path> ProjectSeam::config_of(const fs::path& file) const { return workspace_.find_config(project::normal_path(file)); }
 
@@ -150,6 +151,7 @@ std::shared_ptr<const FileSettings> ProjectSeam::resolve(const fs::path& file, s
     s->config_file = config.file;
     s->style = config.format;
     s->check = config.check;
+    s->time_limit = r.project->limits().time_limit;
     s->language = client.language;
     // The registry lives as long as the project that holds it.
     s->registry = std::shared_ptr<const dialects::Registry>(r.project, &r.project->dialects());
@@ -195,6 +197,7 @@ void ProjectSeam::index_root(const fs::path& root) {
         }
         workspace_.index_folder(entry.path());
     }
+    ++generation_;
 }
 
 void ProjectSeam::update_file(const fs::path& file, std::string_view text) {
@@ -203,6 +206,7 @@ void ProjectSeam::update_file(const fs::path& file, std::string_view text) {
     // The lexical rules of the file's dialect decide where its programs end (';', comments).
     const dialects::Dialect* d = p->dialects().find(project::choose_dialect(workspace_.overrides(), p->config(), text, p->dialects()).id);
     workspace_.index().update_file(path, text, d ? project::ScanRules::of(d->lexical) : project::ScanRules{});
+    ++generation_;
 }
 
 std::vector<IndexedProgram> ProjectSeam::programs_of(const fs::path& file, const ast::TypedFile& typed) {
@@ -218,14 +222,23 @@ std::vector<IndexedProgram> ProjectSeam::programs_of(const fs::path& file, const
     return out;
 }
 
-void ProjectSeam::set_programs(const fs::path& file, std::vector<IndexedProgram> programs) {
+bool ProjectSeam::set_programs(const fs::path& file, std::vector<IndexedProgram> programs) {
+    const fs::path path = project::normal_path(file);
+    const std::vector<project::ScannedProgram> before = workspace_.index().programs_in(path);
+    const bool same_numbers = std::equal(before.begin(), before.end(), programs.begin(), programs.end(),
+                                         [](const project::ScannedProgram& a, const IndexedProgram& b) { return a.number == b.number; });
     std::vector<project::ScannedProgram> scanned;
     scanned.reserve(programs.size());
     for (IndexedProgram& p : programs) scanned.push_back({p.number, p.program_index, p.begin, p.end, std::move(p.comment)});
-    workspace_.index().set_file(project::normal_path(file), std::move(scanned));
+    workspace_.index().set_file(path, std::move(scanned));
+    if (!same_numbers) ++generation_;
+    return !same_numbers;
 }
 
-void ProjectSeam::remove_file(const fs::path& file) { workspace_.index().remove_file(project::normal_path(file)); }
+void ProjectSeam::remove_file(const fs::path& file) {
+    workspace_.index().remove_file(project::normal_path(file));
+    ++generation_;
+}
 
 std::optional<IndexedProgram> ProjectSeam::find_program(std::int64_t number, const fs::path& from, bool anywhere) {
     const fs::path path = project::normal_path(from);

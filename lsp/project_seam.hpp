@@ -8,6 +8,7 @@
 // Thread-safe: the analysis worker asks for programs while the message thread updates the index.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -37,15 +38,22 @@ struct IndexedProgram {
 
 class ProjectSeam {
 public:
-    // The text of an open document (nullopt when `path` is not open): open documents hide their
-    // files on disk for every read of the workspace (configuration, index, subprograms).
-    using Reader = std::function<std::optional<std::string>(const std::filesystem::path&)>;
+    // At most the first `max_bytes` of the text of an open document (nullopt when `path` is not
+    // open): open documents hide their files on disk for every read of the workspace
+    // (configuration, index, subprograms). A head is all the recognition of a file reads: a
+    // million-line document is not copied for it.
+    using Reader = std::function<std::optional<std::string>(const std::filesystem::path&, std::size_t max_bytes)>;
     explicit ProjectSeam(Reader open_documents);
 
     void set_client(ClientSettings settings);
     ClientSettings client() const;
     // A .kerf.toml, dialect or machine file changed: read them again on next use.
     void forget_configs();
+    // Goes up whenever the settings or the programs of the workspace may answer differently
+    // (new numbers in a file, a file on disk changed or gone, configuration): the analysis then
+    // checks open documents whole again (analyzer/incremental.hpp `world`). An open document's
+    // edits that keep its program numbers leave it as it is.
+    std::uint64_t generation() const { return generation_.load(); }
     // Dialect, machine, style and rule settings for `file` whose text is `text`.
     std::shared_ptr<const FileSettings> resolve(const std::filesystem::path& file, std::string_view text);
     // The .kerf.toml that governs `file` (walking up), if any.
@@ -54,8 +62,9 @@ public:
     // The program index: every numbered program of every program file under the roots.
     void index_root(const std::filesystem::path& root);
     void update_file(const std::filesystem::path& file, std::string_view text);
-    // An open document's programs (it is parsed already: programs_of reads its tree).
-    void set_programs(const std::filesystem::path& file, std::vector<IndexedProgram> programs);
+    // An open document's programs (it is parsed already: programs_of reads its tree); true when
+    // its program numbers changed (calls from other documents may reach others now).
+    bool set_programs(const std::filesystem::path& file, std::vector<IndexedProgram> programs);
     static std::vector<IndexedProgram> programs_of(const std::filesystem::path& file, const ast::TypedFile& typed);
     void remove_file(const std::filesystem::path& file);
     // Program `number` as a call from `from` reaches it outside `from` itself (project/index.hpp:
@@ -79,6 +88,7 @@ private:
     mutable project::Workspace workspace_;
     mutable std::mutex mutex_;
     ClientSettings client_;
+    std::atomic<std::uint64_t> generation_{0};
 };
 
 // True for the file names the index reads: NC extensions (.nc .ngc .tap .cnc .mpf .eia .txt, any

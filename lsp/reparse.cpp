@@ -292,8 +292,10 @@ ast::SyntaxTree reparse(const ast::SyntaxTree& old, const ByteEdit& edit, const 
     return tree;
 }
 
-void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialects::LexicalRules& rules, ast::BlockSplice& splice) {
+void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialects::LexicalRules& rules, ast::BlockSplice& splice,
+                      const BeforeSplice& before) {
     Plan p = make_plan(tree, edit, rules);
+    if (before && !p.full) before(tree, static_cast<std::uint32_t>(p.first), static_cast<std::uint32_t>(p.tail ? p.first : p.last));
     tree.text.replace(edit.begin, edit.end - edit.begin, edit.text);
     if (p.full) {
         const std::size_t old_blocks = tree.block_count();

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string_view>
 
 #include "ast/syntax.hpp"
@@ -30,7 +31,11 @@ struct ByteEdit {
 ast::SyntaxTree reparse(const ast::SyntaxTree& old, const ByteEdit& edit, const dialects::LexicalRules& rules,
                         ast::BlockSplice& splice);
 // The same edit made to `tree` itself (no copy: the document store's path when nobody else holds
-// the version); afterwards `tree` is what reparse() would have returned.
-void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialects::LexicalRules& rules, ast::BlockSplice& splice);
+// the version); afterwards `tree` is what reparse() would have returned. `before`, when given, sees
+// the old tree and the old blocks [first, end) the edit replaces just before they are replaced
+// (not when the text is parsed again whole).
+using BeforeSplice = std::function<void(const ast::SyntaxTree& old, std::uint32_t first, std::uint32_t end)>;
+void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialects::LexicalRules& rules, ast::BlockSplice& splice,
+                      const BeforeSplice& before = {});
 
 }  // namespace kerf::lsp

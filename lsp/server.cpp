@@ -59,10 +59,11 @@ const std::set<std::string, std::less<>> kVersionedRequests = {
 
 struct Server::Impl {
     using RequestFn = std::function<json::value(const json::value& params)>;
-    using NotifyFn = std::function<void(const json::value& params)>;
+    // Notifications may take what they keep out of their parameters (didOpen: the document).
+    using NotifyFn = std::function<void(json::value& params)>;
 
     Impl(int in_fd, int out_fd, ServerOptions o)
-        : options(std::move(o)), transport(in_fd, out_fd), project([this](const fs::path& p) { return open_text(p); }) {
+        : options(std::move(o)), transport(in_fd, out_fd), project([this](const fs::path& p, std::size_t max_bytes) { return open_text(p, max_bytes); }) {
         register_handlers();
     }
 
@@ -114,11 +115,12 @@ struct Server::Impl {
 
     // --- files -------------------------------------------------------------------------------
 
-    // The text of an open document at `path` (the project layer reads the disk for the rest).
-    std::optional<std::string> open_text(const fs::path& path) {
+    // The text of an open document at `path`, its first `max_bytes` (the project layer reads the
+    // disk for the rest).
+    std::optional<std::string> open_text(const fs::path& path, std::size_t max_bytes) {
         const std::lock_guard lock(docs_mutex);
         for (const auto& [uri, doc] : docs)
-            if (doc->path() == path) return doc->text();
+            if (doc->path() == path) return doc->text().substr(0, max_bytes);
         return std::nullopt;
     }
 
@@ -285,7 +287,7 @@ struct Server::Impl {
         running_id.clear();
     }
 
-    void handle_notification(const Message& m) {
+    void handle_notification(Message& m) {
         if (m.method == "exit") {
             exit_code = phase == Phase::shutting_down ? 0 : 1;
             return;
@@ -331,8 +333,13 @@ struct Server::Impl {
             const std::lock_guard lock(docs_mutex);
             docs[doc->uri()] = doc;
         }
-        project.set_programs(doc->path(), ProjectSeam::programs_of(doc->path(), doc->typed()));
-        if (worker) worker->schedule(doc);
+        const bool numbers = project.set_programs(doc->path(), ProjectSeam::programs_of(doc->path(), doc->typed()));
+        if (!worker) return;
+        worker->schedule(doc);
+        // New program numbers: a call in another open document may reach a program now, or no more.
+        if (numbers)
+            for (const auto& [uri, other] : docs)
+                if (other != doc) worker->schedule(other);
     }
 
     std::shared_ptr<const Document> open_document(const std::string& uri) const {
@@ -348,14 +355,17 @@ struct Server::Impl {
         return Snapshot{doc, std::move(analysis), docs, project, &running_cancel};
     }
 
-    void did_open(const json::value& params) {
+    void did_open(json::value& params) {
         const json::object& td = object_param(params, "textDocument");
         const std::string uri = string_param(td, "uri");
         const fs::path path = uri_to_path(uri);
         std::string text = string_param(td, "text");
+        const std::int64_t version = int_param(td, "version");
+        // The message's copy goes before the document is parsed (memory: bench/RESULTS.md).
+        if (json::value* sent = params.as_object().if_contains("textDocument")->as_object().if_contains("text")) *sent = nullptr;
         const auto settings = project.resolve(path, text);
         for (const std::string& p : settings->problems) log(message_type::warning, "kerf: " + p);
-        const auto doc = Document::open(uri, path, int_param(td, "version"), std::move(text), settings);
+        const auto doc = Document::open(uri, path, version, std::move(text), settings);
         if (!doc->refused().empty()) log(message_type::warning, fmt::format("kerf lsp: {}: {}", uri, doc->refused()));
         set_document(doc);
     }
@@ -423,9 +433,11 @@ struct Server::Impl {
         }
         if (worker) worker->forget(uri);
         send(notification("textDocument/publishDiagnostics", json::object{{"uri", uri}, {"diagnostics", json::array{}}}));
-        // The file on disk counts again in the index (or nothing, when there is none).
+        // The file on disk counts again in the index (or nothing, when there is none), and the
+        // other documents' calls are checked against it.
         if (const auto text = read_disk(path)) project.update_file(path, *text);
         else project.remove_file(path);
+        reanalyse_documents();
     }
 
     // Every open document under the current settings again (a new dialect parses it again).
@@ -559,7 +571,7 @@ struct Server::Impl {
             {"inlayHintProvider", true},
             {"documentSymbolProvider", true},
             {"workspaceSymbolProvider", true},
-            {"codeActionProvider", json::object{{"codeActionKinds", json::array{"quickfix", "source.fixAll.kerf", "refactor.rewrite"}},
+            {"codeActionProvider", json::object{{"codeActionKinds", json::array{"quickfix", "source.fixAll.kerf", "refactor.rewrite", "source.convert.kerf"}},
                                                 {"resolveProvider", true}}},
             {"documentFormattingProvider", true},
             {"documentRangeFormattingProvider", true},
@@ -595,7 +607,7 @@ struct Server::Impl {
             return nullptr;
         };
         notifications["initialized"] = [this](const json::value&) { initialized(); };
-        notifications["textDocument/didOpen"] = [this](const json::value& p) { did_open(p); };
+        notifications["textDocument/didOpen"] = [this](json::value& p) { did_open(p); };
         notifications["textDocument/didChange"] = [this](const json::value& p) { did_change(p); };
         notifications["textDocument/didClose"] = [this](const json::value& p) { did_close(p); };
         notifications["textDocument/didSave"] = [](const json::value&) {};

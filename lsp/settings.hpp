@@ -3,6 +3,7 @@
 // the analysis worker share one through a shared pointer.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -37,6 +38,7 @@ struct FileSettings {
     formatter::Style style;                 // .kerf.toml [format]
     formatter::FormatContext format_context;
     analyzer::CheckConfig check;            // .kerf.toml [check]
+    std::chrono::milliseconds time_limit{0};   // of the dry run: .kerf.toml [limits] time_limit, as kerf check (0 = none)
     // The accepted findings of the client's kerf.baseline file that name this file (analyzer/baseline.hpp).
     std::vector<analyzer::BaselineEntry> baseline;
     std::filesystem::path config_file;      // the .kerf.toml, empty when none

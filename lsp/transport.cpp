@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cctype>
 #include <charconv>
+#include <cstring>
 
 #include <fmt/format.h>
 
@@ -55,8 +56,8 @@ void Transport::interrupt() {
     }
 }
 
-bool Transport::fill() {
-    if (eof_) return false;
+std::size_t Transport::read_some(char* into, std::size_t max) {
+    if (eof_) return 0;
     if (wake_[0] >= 0) {
         pollfd fds[2] = {{in_, POLLIN, 0}, {wake_[0], POLLIN, 0}};
         while (true) {
@@ -64,11 +65,20 @@ bool Transport::fill() {
             if (r < 0 && errno == EINTR) continue;
             if (r < 0 || (fds[1].revents & POLLIN)) {
                 eof_ = true;
-                return false;
+                return 0;
             }
             if (fds[0].revents) break;
         }
     }
+    ssize_t n;
+    do {
+        n = ::read(in_, into, max);
+    } while (n < 0 && errno == EINTR);
+    if (n <= 0) eof_ = true;
+    return static_cast<std::size_t>(std::max<ssize_t>(n, 0));
+}
+
+bool Transport::fill() {
     if (pos_ > 0 && pos_ * 2 >= buffer_.size()) {   // drop what was read before growing
         buffer_.erase(0, pos_);
         pos_ = 0;
@@ -76,12 +86,8 @@ bool Transport::fill() {
     const std::size_t old = buffer_.size();
     const std::size_t chunk = 1 << 20;
     buffer_.resize(old + chunk);
-    ssize_t n;
-    do {
-        n = ::read(in_, buffer_.data() + old, chunk);
-    } while (n < 0 && errno == EINTR);
-    buffer_.resize(old + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
-    if (n <= 0) eof_ = true;
+    const std::size_t n = read_some(buffer_.data() + old, chunk);
+    buffer_.resize(old + n);
     return n > 0;
 }
 
@@ -188,15 +194,21 @@ std::optional<Frame> Transport::read() {
         resync_pending_ = true;
         return frame;
     }
-    while (buffer_.size() - pos_ < *length) {
-        if (!fill()) {
-            frame.problem = fmt::format("the input ended inside a message ({} of {} bytes)", buffer_.size() - pos_, *length);
-            pos_ = buffer_.size();
+    // The body is read into its own string: a document of 50 MB is not copied out of the buffer,
+    // and the buffer does not grow to hold it (bench/RESULTS.md, the server's memory).
+    const std::size_t buffered = std::min(*length, buffer_.size() - pos_);
+    frame.body.resize(*length);
+    std::memcpy(frame.body.data(), buffer_.data() + pos_, buffered);
+    pos_ += buffered;
+    for (std::size_t have = buffered; have < *length;) {
+        const std::size_t n = read_some(frame.body.data() + have, *length - have);
+        if (n == 0) {
+            frame.problem = fmt::format("the input ended inside a message ({} of {} bytes)", have, *length);
+            frame.body.clear();
             return frame;
         }
+        have += n;
     }
-    frame.body = buffer_.substr(pos_, *length);
-    pos_ += *length;
     return frame;
 }
 

@@ -42,7 +42,9 @@ public:
     bool write(std::string_view body);
 
 private:
-    bool fill();   // reads more bytes; false at the end of the input
+    bool fill();   // reads more bytes into the buffer; false at the end of the input
+    // Reads at most `max` bytes into `into` once the input (or the interruption) is there; 0 at the end.
+    std::size_t read_some(char* into, std::size_t max);
     std::optional<std::string> header_line(Frame& frame);
     void resync(Frame& frame);
 

@@ -37,6 +37,7 @@ std::string machine_to_toml(const Machine& m) {
     if (m.max_live_tool_rpm) root.insert("max_live_tool_rpm", *m.max_live_tool_rpm);
     if (m.max_cutting_feed) root.insert("max_cutting_feed", *m.max_cutting_feed);
     root.insert("tool_offset_count", m.tool_offset_count);
+    root.insert("additional_work_offset_count", m.additional_work_offset_count);
     if (!m.m_codes.empty()) {
         toml::array codes;
         for (const int c : m.m_codes) codes.push_back(fmt::format("M{:02}", c));
@@ -59,6 +60,7 @@ std::string machine_to_toml(const Machine& m) {
     toml::table offsets;
     for (int i = 0; i < 6; ++i) offsets.insert(fmt::format("G5{}", 4 + i), axis_values(m.work_offsets[i]));
     offsets.insert("external", axis_values(m.external_offset));
+    for (const auto& [n, values] : m.additional_work_offsets) offsets.insert(fmt::format("P{}", n), axis_values(values));
     root.insert("work_offsets", std::move(offsets));
     root.insert("work_shift", axis_values(m.work_shift));
     toml::table refs;

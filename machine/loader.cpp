@@ -114,6 +114,7 @@ void prune(AxisValues& values, const Machine& m) {
 
 void prune_absent_axes(Machine& m) {
     for (AxisValues& v : m.work_offsets) prune(v, m);
+    for (auto& [number, v] : m.additional_work_offsets) prune(v, m);
     prune(m.external_offset, m);
     prune(m.work_shift, m);
     for (AxisValues& v : m.reference_points) prune(v, m);
@@ -192,8 +193,22 @@ public:
         }
     }
 
+    // G54 … G59, external, and P1 … P<additional_work_offset_count> for G54.1 Pn.
     void read_work_offsets(const toml::table& t) {
-        r_.check_keys(t, {"G54", "G55", "G56", "G57", "G58", "G59", "external"}, "work_offsets");
+        for (const auto& [key, node] : t) {
+            const std::string_view k = key.str();
+            if (k == "G54" || k == "G55" || k == "G56" || k == "G57" || k == "G58" || k == "G59" || k == "external") continue;
+            int n = 0;
+            const bool p = k.size() > 1 && k.front() == 'P';
+            const auto [end, ec] = p ? std::from_chars(k.data() + 1, k.data() + k.size(), n) : std::from_chars_result{};
+            if (!p || ec != std::errc() || end != k.data() + k.size() || n < 1 || n > m_.additional_work_offset_count) {
+                r_.error(&node, fmt::format("work_offsets: unknown key '{}': G54 … G59, external, or P1 … P{} for G54.1 Pn "
+                                            "(additional_work_offset_count; see machine/SCHEMA.md)",
+                                            k, m_.additional_work_offset_count));
+                continue;
+            }
+            read_axis_values(node, fmt::format("work_offsets.{}", k), m_.additional_work_offsets[n]);
+        }
         for (int i = 0; i < 6; ++i) {
             const std::string key = fmt::format("G5{}", 4 + i);
             if (const toml::node* n = t.get(key)) read_axis_values(*n, "work_offsets." + key, m_.work_offsets[i]);
@@ -358,7 +373,7 @@ LoadResult load_machine_text(std::string_view toml_text, std::string_view source
     r.check_keys(root,
                  {"id", "name", "kind", "base", "reference", "dialects", "diameter_x", "input_increment",
                   "calculator_decimal", "max_spindle_rpm", "max_live_tool_rpm", "max_cutting_feed",
-                  "tool_offset_count", "m_codes", "axes", "work_offsets", "work_shift", "reference_points", "tools",
+                  "tool_offset_count", "additional_work_offset_count", "m_codes", "axes", "work_offsets", "work_shift", "reference_points", "tools",
                   "cycle_parameters", "tailstock", "switches"},
                  "top level");
 
@@ -442,6 +457,8 @@ LoadResult load_machine_text(std::string_view toml_text, std::string_view source
     if (const auto v = r.number(root, "max_live_tool_rpm", "", 0, 1e6)) m.max_live_tool_rpm = *v;
     if (const auto v = r.number(root, "max_cutting_feed", "", 0, 1e7)) m.max_cutting_feed = *v;
     if (const auto v = r.integer(root, "tool_offset_count", "", 1, 9999)) m.tool_offset_count = static_cast<int>(*v);
+    if (const auto v = r.integer(root, "additional_work_offset_count", "", 0, 300))
+        m.additional_work_offset_count = static_cast<int>(*v);
     if (const toml::node* n = root.get("m_codes")) {
         // The builder's M codes: "M25" or 25, each once (machine/SCHEMA.md).
         m.m_codes.clear();

@@ -62,6 +62,8 @@ Machine resolve_for_dialect(Machine m, const dialects::Dialect& d) {
             s.g53_motion = has(fn::machine_coordinate_select_g0_g1) ? G53Motion::g0_g1 : G53Motion::rapid;
         } else if (key == "g68_positive") {
             s.g68_positive = has(fn::coordinate_rotation_cw) ? RotationSign::cw : RotationSign::ccw;
+        } else if (key == "dwell_p_unit") {
+            s.dwell_p_unit = d.lexical.dwell_p_seconds ? DwellUnit::s : DwellUnit::ms;   // dialects/SCHEMA.md [lexical]
         } else if (key == "power_on_plane") {
             if (power_on(fn::plane_xy)) s.power_on_plane = Plane::xy;
             else if (power_on(fn::plane_zx)) s.power_on_plane = Plane::zx;

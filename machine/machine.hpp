@@ -74,6 +74,7 @@ enum class G238ATiming { start, after_clamp };          // cycles.md §14, §21.
 enum class G384RadialH { radius, diameter };            // cycles.md §15, §21.9
 enum class CornerSlowdown { ramp, step };               // iso-legacy G28 K F (semantics.md §9.5, §12.8)
 enum class IsoG43 { approach_shorten, length_offset };  // semantics.md §9.4, §12.9; gcode-tables.md §8.13
+enum class LengthOffsetMotion { next_move, at_once };   // G43/G44/G49 without an axis word ([FANUC] parameter; semantics.md §7)
 enum class M23M24 { by_mode, live_tool, thread_exit };  // mcodes.md §5.1
 enum class M10M11 { conveyor, chuck };                  // mcodes.md §5.3
 enum class M17Meaning { hp_valve, pump_2_off };         // mcodes.md §5.2
@@ -112,6 +113,7 @@ struct Switches {
     double transform_tolerance = 0.01;                        // mm; G112/G107 pieces, cycles.md §18–§19 [inference]
     CompStartup cutter_comp_startup = CompStartup::type_b;    // semantics.md §6 "type A/B (a parameter, default B)"
     bool g41_g42_swapped = false;                             // gcode-tables.md §8.5, semantics.md §12.12 (ADV400 list)
+    LengthOffsetMotion length_offset_motion = LengthOffsetMotion::next_move;   // semantics.md §7 [FANUC parameter]
     CompCorners cutter_comp_corners = CompCorners::intersection;   // semantics.md §6 (ADV400: arcs)
     bool comp_shift_without_motion = false;                   // semantics.md §6 (seed 004 `G42 D02` alone)
 
@@ -238,6 +240,10 @@ struct Machine {
     std::optional<double> max_cutting_feed;   // mm/min
 
     std::array<AxisValues, 6> work_offsets{};   // G54..G59: machine coordinates of each work zero
+    // G54.1 P1..P<count>, the additional work coordinate systems ([FANUC] option: 48, or 300),
+    // machine coordinates of each work zero; an unlisted one is zero.
+    int additional_work_offset_count = 48;
+    std::map<int, AxisValues> additional_work_offsets;
     AxisValues external_offset;                 // common to all six (parameter 1220, semantics.md §2.3)
     AxisValues work_shift;                      // G10 P0 register at power-on (lathe, semantics.md §2.6)
     std::array<AxisValues, 4> reference_points{};   // 1 = G28, 2–4 = G30 P2..P4; machine coordinates

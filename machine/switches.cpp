@@ -182,6 +182,12 @@ std::vector<SwitchDef> make_defs() {
                                     {{"A", CompStartup::type_a}, {"B", CompStartup::type_b}}, false,
                                     "semantics.md §6 ('type A/B (a parameter, default B)')",
                                     "FANUC cutter compensation start-up and cancel type"));
+    d.push_back(choice<LengthOffsetMotion>("length_offset_motion", &S::length_offset_motion,
+                                           {{"next-move", LengthOffsetMotion::next_move},
+                                            {"at-once", LengthOffsetMotion::at_once}},
+                                           false, "semantics.md §7; [FANUC] tool length compensation parameter",
+                                           "G43/G44 H (or G49) in a block without axis words: the axes take the offset up "
+                                           "with the next move, or Z moves by it at once"));
     d.push_back(choice<CompCorners>("cutter_comp_corners", &S::cutter_comp_corners,
                                     {{"intersection", CompCorners::intersection}, {"arc", CompCorners::arc}}, false,
                                     "semantics.md §6",
@@ -200,9 +206,10 @@ std::vector<SwitchDef> make_defs() {
                                      false, "cycles.md §0, §21.1; dialects.md §11.9",
                                      "unit of the integer P/Q words of G74–G76, G83, G87: the least input increment "
                                      "(0.001 mm IS-B, 0.0001 mm IS-C: the 'tens of microns' machines), or fixed"));
-    d.push_back(choice<DwellUnit>("dwell_p_unit", &S::dwell_p_unit, {{"ms", DwellUnit::ms}, {"s", DwellUnit::s}}, false,
+    d.push_back(choice<DwellUnit>("dwell_p_unit", &S::dwell_p_unit, {{"ms", DwellUnit::ms}, {"s", DwellUnit::s}}, true,
                                   "semantics.md §8.2; gcode-tables.md §2 (ADV400 G04)",
-                                  "G04 P in milliseconds (FANUC) or seconds (ADV400)"));
+                                  "G04 P in milliseconds (FANUC) or seconds (ADV400). dialect: the dialect's "
+                                  "[lexical] dwell_p_unit"));
     d.push_back(choice<ScalingUnit>("scaling_unit", &S::scaling_unit,
                                     {{"0.001", ScalingUnit::thousandth}, {"0.00001", ScalingUnit::hundred_thousandth}},
                                     false, "[FANUC] parameter 5400#7 SCR (gcode-tables.md §338 lists G51 as [FANUC])",

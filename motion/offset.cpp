@@ -17,6 +17,7 @@ double ccw_angle(P2 u, P2 v) {
 }  // namespace
 
 double arc_radius(const Element& e) { return norm(e.start - e.center); }
+double arc_end_radius(const Element& e) { return norm(e.end - e.center); }
 
 P2 start_tangent(const Element& e) {
     if (!e.arc) return unit(e.end - e.start);
@@ -39,11 +40,11 @@ std::optional<Element> offset_element(const Element& e, double offset) {
         return o;
     }
     // Left of a counter-clockwise arc is towards its centre: the radius shrinks.
-    const double r = arc_radius(e);
-    const double radius = r - (e.ccw ? offset : -offset);
-    if (radius <= kLength) return std::nullopt;
-    o.start = e.center + unit(e.start - e.center) * radius;
-    o.end = e.center + unit(e.end - e.center) * radius;
+    const double change = e.ccw ? -offset : offset;
+    const double start_radius = arc_radius(e) + change, end_radius = arc_end_radius(e) + change;
+    if (start_radius <= kLength || end_radius <= kLength) return std::nullopt;
+    o.start = e.center + unit(e.start - e.center) * start_radius;
+    o.end = e.center + unit(e.end - e.center) * end_radius;
     return o;
 }
 
@@ -75,9 +76,9 @@ std::optional<P2> meet(const Element& a, const Element& b, P2 near) {
     } else if (!a.arc || !b.arc) {
         const Element& line = a.arc ? b : a;
         const Element& arc = a.arc ? a : b;
-        points = line_circle(line.start, line.end - line.start, arc.center, arc_radius(arc));
+        points = line_circle(line.start, line.end - line.start, arc.center, a.arc ? arc_end_radius(a) : arc_radius(b));
     } else {
-        points = circle_circle(a.center, arc_radius(a), b.center, arc_radius(b));
+        points = circle_circle(a.center, arc_end_radius(a), b.center, arc_radius(b));
     }
     std::optional<P2> best;
     for (const P2& p : points)
@@ -105,7 +106,10 @@ bool ahead_on(const Element& e, P2 from, P2 p) {
     const double to_p = travelled(p);
     double to_end = travelled(e.end);
     if (to_end < 1e-9) to_end = 2 * kPi;   // a full circle back to its start
-    return to_p <= to_end + 1e-6 || norm(p - from) < 1e-6;
+    // Past the end is ahead too (an outside corner's join lies on the arc's extension, as a line's
+    // lies past its end); behind `from` is an angle near a whole turn: the rest of the circle is
+    // split between the two.
+    return to_p <= to_end + (2 * kPi - to_end) / 2 || norm(p - from) < 1e-6;
 }
 
 }  // namespace kerf::motion

@@ -155,8 +155,10 @@ std::string subtitle_of(const Toolpath& t, const SvgOptions& o) {
     const bool lathe = o.kind == dialects::MachineKind::lathe;
     std::string s = lathe ? (o.diameter_x ? "lathe, Z-X view, X drawn at the radius" : "lathe, Z-X view") : "mill, X-Y view";
     if (t.inch) s += ", inches (G20)";
-    s += fmt::format(" | feed {:.1f} mm | rapid {:.1f} mm", t.feed_mm, t.rapid_mm);
-    if (t.thread_mm > 0) s += fmt::format(" | thread {:.1f} mm", t.thread_mm);
+    // Lengths in the drawing's unit (the interpreter measures mm).
+    const auto length = [&](double mm) { return t.inch ? fmt::format("{:.2f} in", mm / 25.4) : fmt::format("{:.1f} mm", mm); };
+    s += fmt::format(" | feed {} | rapid {}", length(t.feed_mm), length(t.rapid_mm));
+    if (t.thread_mm > 0) s += fmt::format(" | thread {}", length(t.thread_mm));
     if (t.not_drawn > 0) s += fmt::format(" | the last {} moves are not drawn (the picture is full)", t.not_drawn);
     return s;
 }

@@ -23,11 +23,14 @@ motion::Plane view_plane(const ViewOptions& o) {
     return o.kind == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
 }
 
-// Geometric coordinates: lathe X from the diameter to the radius, as the interpreter hands them to
-// the motion kernel (motion/vec.hpp "Units").
-motion::Vec3 geometric(const interpreter::Position& p, const ViewOptions& o) {
+// Geometric coordinates in mm: lathe X from the diameter to the radius, inches (an event of a G20
+// stretch, Event::inch) times 25.4, as the interpreter hands them to the motion kernel
+// (motion/vec.hpp "Units"). The drawing is built in mm and scaled to inches at the end when most
+// moves were in inches, so a program that switches units mid-way still draws one part.
+motion::Vec3 geometric(const interpreter::Position& p, const ViewOptions& o, bool inch) {
     const bool diameter = o.kind == dialects::MachineKind::lathe && o.diameter_x;
-    return {diameter ? p[0] / 2 : p[0], p[1], p[2]};
+    const double k = inch ? 25.4 : 1.0;
+    return {(diameter ? p[0] / 2 : p[0]) * k, p[1] * k, p[2] * k};
 }
 
 // The view plane's frame is (right, up): see toolpath.hpp.
@@ -66,13 +69,12 @@ std::vector<motion::Plane> planes_to_try(const ViewOptions& o) {
 // The arc of an event, rebuilt by the motion kernel from start, end and centre. Events do not
 // carry the plane; it is the plane in which the centre has the start's normal coordinate (the
 // kernel's convention, motion/arc.hpp "Arc::center") and start and end are equally far from the
-// centre. The view plane is tried first. (Event::radius is not used: it is in mm, the positions
-// are in program units.)
+// centre. The view plane is tried first.
 std::optional<motion::Arc> rebuild_arc(const Event& e, const ViewOptions& o) {
     if (!e.center) return std::nullopt;
-    const motion::Vec3 s = geometric(e.start, o);
-    const motion::Vec3 t = geometric(e.end, o);
-    const motion::Vec3 c = geometric(*e.center, o);
+    const motion::Vec3 s = geometric(e.start, o, e.inch);
+    const motion::Vec3 t = geometric(e.end, o, e.inch);
+    const motion::Vec3 c = geometric(*e.center, o, e.inch);
     const double size = motion::distance(s, c);
     const double eps = 1e-6 * std::max(1.0, size);
     motion::ArcOptions options;
@@ -88,18 +90,9 @@ std::optional<motion::Arc> rebuild_arc(const Event& e, const ViewOptions& o) {
     return std::nullopt;
 }
 
-// Positions are as programmed (inches after G20) and lengths in mm (docs/trace.md), so the ratio
-// of a feed line's length to its programmed length tells the unit of the drawing: +1 inch, -1
-// metric, 0 no vote.
-int inch_vote(const Event& e, const ViewOptions& o) {
-    if (e.kind != EventKind::linear || !finite(e)) return 0;
-    const double programmed = motion::distance(geometric(e.start, o), geometric(e.end, o));
-    if (programmed < 1e-6 || e.length_mm <= 0) return 0;
-    const double ratio = e.length_mm / programmed;
-    if (std::fabs(ratio - 25.4) < 0.254) return 1;
-    if (std::fabs(ratio - 1) < 0.01) return -1;
-    return 0;
-}
+// Positions are as programmed, inches after G20 (Event::inch, docs/trace.md): each move votes for
+// the unit of the drawing, +1 inch, -1 metric.
+int inch_vote(const Event& e) { return e.inch ? 1 : -1; }
 
 Piece line_piece(Stroke stroke, Point from, Point to) {
     Piece p;
@@ -141,7 +134,7 @@ void pieces_of(const Event& e, Stroke stroke, const ViewOptions& o, Box2& bounds
         if (const std::optional<motion::Arc> arc = rebuild_arc(e, o)) return arc_pieces(*arc, stroke, o, bounds, out);
     // A line, or an arc that is not a circle in any plane (should not come from the interpreter):
     // the chord at least.
-    const Piece p = line_piece(stroke, project(geometric(e.start, o), o), project(geometric(e.end, o), o));
+    const Piece p = line_piece(stroke, project(geometric(e.start, o, e.inch), o), project(geometric(e.end, o, e.inch), o));
     bounds.extend(p.from);
     bounds.extend(p.to);
     out.push_back(p);
@@ -156,6 +149,22 @@ void add_length(Toolpath& t, Stroke stroke, double mm) {
 }
 
 double length(Point a, Point b) { return std::hypot(b.h - a.h, b.v - a.v); }
+
+// The drawing, built in mm, in another unit (× k): points, arc radii, bounds, resolution.
+void scale_to(Toolpath& t, double k) {
+    const auto scaled = [k](Point p) { return Point{p.h * k, p.v * k}; };
+    for (Piece& p : t.pieces) {
+        p.from = scaled(p.from);
+        p.to = scaled(p.to);
+        p.mid = scaled(p.mid);
+        p.radius *= k;
+    }
+    for (Point& a : t.alarms) a = scaled(a);
+    t.start = scaled(t.start);
+    t.end = scaled(t.end);
+    t.bounds = {t.bounds.h_min * k, t.bounds.h_max * k, t.bounds.v_min * k, t.bounds.v_max * k, t.bounds.empty};
+    t.resolution *= k;
+}
 
 }  // namespace
 
@@ -199,13 +208,13 @@ ToolpathBuilder::Key ToolpathBuilder::key_of(const Piece& p) const {
 void ToolpathBuilder::add(const interpreter::Event& e) {
     if (e.kind == EventKind::alarm) {
         if (!finite(e.end) || t_.alarms.size() >= kMaxAlarms) return;
-        t_.alarms.push_back(project(geometric(e.end, options_), options_));
+        t_.alarms.push_back(project(geometric(e.end, options_, e.inch), options_));
         t_.bounds.extend(t_.alarms.back());
         return;
     }
     const std::optional<Stroke> stroke = stroke_of(e.kind);
     if (!stroke || !finite(e)) return;
-    const int vote = inch_vote(e, options_);
+    const int vote = inch_vote(e);
     inch_votes_ += vote > 0;
     metric_votes_ += vote < 0;
     add_length(t_, *stroke, e.length_mm);
@@ -313,6 +322,7 @@ Toolpath ToolpathBuilder::finish() && {
     close_open();
     t_.inch = inch_votes_ > metric_votes_;
     t_.resolution = grid_;
+    if (t_.inch) scale_to(t_, 1 / 25.4);
     return std::move(t_);
 }
 

@@ -27,7 +27,8 @@ struct ViewOptions {
     bool diameter_x = false;   // lathe: event X is a diameter; it is drawn at the radius
 };
 
-// A point of the drawing in program units (mm, or inches after G20): h to the right, v up.
+// A point of the drawing in its unit (mm, or inches when most moves were in G20: Toolpath::inch),
+// h to the right, v up.
 struct Point {
     double h = 0;
     double v = 0;
@@ -59,13 +60,13 @@ struct Toolpath {
     std::vector<Point> alarms;     // where alarms stopped the run (at most kMaxAlarms)
     Box2 bounds;                   // every point the path reaches, arc extremes included
     Point start, end;              // where the first move starts and the last one ends
-    bool inch = false;             // the points are in inches (G20): positions are as programmed
+    bool inch = false;             // the points are in inches (most moves ran under G20)
     double rapid_mm = 0;           // path lengths from the events (the interpreter's, in mm)
     double feed_mm = 0;
     double thread_mm = 0;
     std::uint64_t moves = 0;       // motion events seen
     std::uint64_t not_drawn = 0;   // moves left out because the picture was full (kMaxPieces)
-    double resolution = 0;         // the grid of the simplification, in program units
+    double resolution = 0;         // the grid of the simplification, in the drawing's unit
 };
 
 // The toolpath of a run, built one event at a time with memory bounded whatever the run

@@ -4,6 +4,7 @@
 
 #include "analyzer/analyze.hpp"
 #include "analyzer/fix.hpp"
+#include "project/start.hpp"
 #include "project/writer.hpp"
 
 namespace kerf::project {
@@ -24,6 +25,11 @@ Analysis analyze(Workspace& workspace, const fs::path& path, std::string text, c
     a.file = a.programs->add(path.string(), std::move(text), *r.dialect);
     a.programs->set_loader(workspace.loader_for(path), r.dialect);
     an::CheckOptions options;
+    // The dry run starts as [run] says (a caller's block for a macro library, preset variables,
+    // passes); its problems were reported when the project was read.
+    RunStart start = run_start(r.project->run_settings(), *a.programs, a.file, *r.dialect, path.string());
+    options.run = std::move(start.options);
+    options.main = start.main;
     options.config = r.project->config().check;
     options.max_findings_per_rule = max_per_rule;
     options.time_limit = r.project->limits().time_limit;

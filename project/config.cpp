@@ -7,6 +7,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <tuple>
 
 #include <toml++/toml.h>
@@ -104,10 +105,6 @@ constexpr std::array<std::string_view, 2> kProgramsKeys = {"library", "resident"
 constexpr std::array<std::string_view, 3> kLimitsKeys = {"max_file_bytes", "max_line_bytes", "time_limit"};
 
 // "#100=5", "#500 = -1.5": a common variable and a value (the run's evaluator reads it later).
-bool looks_like_assignment(std::string_view s) {
-    const std::size_t eq = s.find('=');
-    return !s.empty() && s.front() == '#' && eq != std::string_view::npos && eq > 1 && eq + 1 < s.size();
-}
 
 void read_run(Reader& in, const toml::table& t, RunSettings& run) {
     in.check_keys(t, "run", kRunKeys);
@@ -116,7 +113,7 @@ void read_run(Reader& in, const toml::table& t, RunSettings& run) {
         run.call.reset();
     }
     for (const std::string& s : in.strings(t.get("set"), "run.set")) {
-        if (looks_like_assignment(s)) run.set.push_back(s);
+        if (parse_assignment(s)) run.set.push_back(s);
         else in.error(t.get("set")->source(), fmt::format("run.set: '{}' is not an assignment such as \"#100=5\"", s));
     }
     if (const toml::node* passes = t.get("passes")) {
@@ -202,6 +199,28 @@ std::optional<std::int64_t> program_number(std::string_view s) {
 }
 
 }  // namespace
+
+std::optional<std::pair<int, double>> parse_assignment(std::string_view text) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    const auto trim = [&](std::string_view v) {
+        while (!v.empty() && blank(v.front())) v.remove_prefix(1);
+        while (!v.empty() && blank(v.back())) v.remove_suffix(1);
+        return v;
+    };
+    text = trim(text);
+    const std::size_t eq = text.find('=');
+    if (text.size() < 4 || text.front() != '#' || eq == std::string_view::npos) return std::nullopt;
+    const std::string_view name = trim(text.substr(1, eq - 1)), value = trim(text.substr(eq + 1));
+    int number = 0;
+    const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), number);
+    if (error != std::errc() || end != name.data() + name.size() || number < 1 || number > 99999) return std::nullopt;
+    // A number as a program writes it: sign, digits, a point (`5`, `-1.5`, `.25`).
+    const std::string v(value);
+    char* stop = nullptr;
+    const double x = v.empty() || v.find_first_not_of("+-.0123456789") != std::string::npos ? NAN : std::strtod(v.c_str(), &stop);
+    if (!std::isfinite(x) || stop != v.c_str() + v.size()) return std::nullopt;
+    return std::pair<int, double>{number, x};
+}
 
 std::optional<ProgramRange> parse_program_range(std::string_view text) {
     const std::size_t dash = text.find('-');

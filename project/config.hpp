@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "analyzer/config.hpp"
@@ -35,11 +36,18 @@ struct ProgramRange {
 // negative or over 99999999 too).
 std::optional<ProgramRange> parse_program_range(std::string_view text);
 
+// "#100=5", "#500 = -1.5": a variable and the value `kerf run --set` / [run] set gives it before the
+// run; nullopt for anything else (an expression, a variable number outside 1..99999).
+std::optional<std::pair<int, double>> parse_assignment(std::string_view text);
+
 // [run]: how a dry run of the project's programs starts (`kerf run --call/--set/--passes` win).
 struct RunSettings {
     std::optional<std::string> call;   // the caller's block, "G65 P9010 A1.": a macro run as it is used
     std::vector<std::string> set;      // common variables before the run, "#100=5"
     std::optional<int> passes;         // passes of a main program that ends in M99 (bar-feed loop)
+    // The command line's --call: every file run starts with it (a .kerf.toml's call only runs the
+    // files that hold the program it calls: project/start.hpp).
+    bool call_everywhere = false;
 };
 
 // [programs]: where the program index looks beyond a file's own folder, and what the machine holds.

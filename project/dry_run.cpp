@@ -10,16 +10,19 @@ namespace {
 
 // Hooks the mapped program up as a stream (the run parses it piece by piece and the pages of
 // parsed pieces are dropped: memory stays flat however long the file), the loader of the program
-// index, and finds the main program.
-bool load_program(DryRun& run, Workspace& workspace, const fs::path& file) {
+// index, and finds the main program: the file's first, or the caller's block of [run] call /
+// --call (project/start.hpp), with the run's passes and preset variables.
+bool load_program(DryRun& run, Workspace& workspace, const fs::path& file, std::vector<Problem>& problems) {
     interpreter::StreamOptions stream;
     stream.read_ahead = true;   // the grammar on the second core (bench/RESULTS.md)
     stream.release = [source = run.source.get()](std::size_t begin, std::size_t end) { source->release(begin, end); };
     const std::uint32_t main_file = run.programs.add_stream(file.string(), run.source->text(), *run.dialect, stream);
     run.programs.set_loader(workspace.loader_for(file), run.dialect);
-    const std::optional<interpreter::ProgramRef> main = run.programs.first_program(main_file);
-    if (!main) return false;
-    run.main = *main;
+    RunStart start = run_start(run.project->run_settings(), run.programs, main_file, *run.dialect, file.string());
+    problems.insert(problems.end(), start.problems.begin(), start.problems.end());
+    if (!start.main) return false;
+    run.main = *start.main;
+    run.options = std::move(start.options);
     return true;
 }
 
@@ -48,7 +51,9 @@ PreparedRun prepare_dry_run(std::shared_ptr<Workspace> workspace, const fs::path
     run->dialect = resolved.dialect;
     run->choice = std::move(resolved.choice);
     run->setup = *resolved.setup;
-    if (!load_program(*run, *run->workspace, file)) {
+    const bool loaded = load_program(*run, *run->workspace, file, prepared.problems);
+    if (has_errors(prepared.problems)) return prepared;
+    if (!loaded) {
         prepared.problems.push_back({Level::error, file.string(), 0, 0, "no program to run"});
         prepared.outcome = PreparedRun::Outcome::no_program;
         return prepared;
@@ -59,7 +64,7 @@ PreparedRun prepare_dry_run(std::shared_ptr<Workspace> workspace, const fs::path
 }
 
 interpreter::RunResult execute(DryRun& run, interpreter::EventSink& sink, bool lenient, bool emit_state) {
-    interpreter::RunOptions options;
+    interpreter::RunOptions options = run.options;
     options.lenient = lenient;
     options.emit_state = emit_state;
     options.time_limit = run.project->limits().time_limit;

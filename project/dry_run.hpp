@@ -10,6 +10,7 @@
 
 #include "interpreter/interpreter.hpp"
 #include "project/mapped_file.hpp"
+#include "project/start.hpp"
 #include "project/workspace.hpp"
 
 namespace kerf::project {
@@ -24,6 +25,7 @@ struct DryRun {
     interpreter::ProgramSet programs;
     interpreter::ProgramRef main;
     interpreter::Setup setup;
+    interpreter::RunOptions options;   // passes and preset variables (project/start.hpp)
 };
 
 struct PreparedRun {

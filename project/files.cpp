@@ -162,11 +162,14 @@ std::vector<fs::path> OverlayFileSystem::files_in(const fs::path& folder) const 
     std::vector<fs::path> out = base_->files_in(folder);
     const fs::path normal = normal_path(folder);
     const std::shared_lock lock(mutex_);
-    for (const auto& [path, text] : documents_)
+    for (const auto& document : documents_) {
+        // Not a structured binding: clang 14 (make fuzz) does not capture those in a lambda.
+        const fs::path& path = document.first;
         if (path.parent_path() == normal && std::find_if(out.begin(), out.end(), [&](const fs::path& p) {
                                                  return normal_path(p) == path;
                                              }) == out.end())
             out.push_back(path);
+    }
     std::sort(out.begin(), out.end());
     return out;
 }

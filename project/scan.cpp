@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "ast/source.hpp"
+#include "grammar/parse.hpp"
 
 namespace kerf::project {
 
@@ -51,6 +52,8 @@ public:
         }
         bool leading = b.kind != Kind::program_start;
         bool any = b.kind != Kind::blank;
+        bool plain_prefix = b.kind != Kind::program_start;   // only plain words (and comments, '/') so far
+        std::size_t plain_words = 0;
         bool all_comments = b.kind == Kind::blank;
         while (p < le) {
             const char c = text_[p];
@@ -72,6 +75,7 @@ public:
             if (c == ';' && rules_.semicolon_ends_block) break;
             // A word, a statement, '%' or an error: the first one decides the block's kind.
             if (!any && c == '%') {
+                plain_prefix = false;
                 b.kind = Kind::percent;
                 leading = false;
                 any = true;
@@ -80,6 +84,9 @@ public:
                 if (b.has_o) p = skip_item(p, le);
                 continue;
             }
+            // An O word after plain words starts the next program on the same line (`M99O0810`):
+            // the block ends before it (grammar/parse.cpp program_word_after_first).
+            if ((c == 'O' || c == 'o') && plain_prefix && plain_words > 0 && digit_after(p + 1, le)) break;
             if (leading) {
                 leading = false;
                 if ((c == 'O' || c == 'o') && !o_is_error(p, le)) {
@@ -92,10 +99,13 @@ public:
             }
             any = true;
             all_comments = false;
+            const std::size_t item = p;
             p = skip_item(p, le);
+            if (grammar::is_plain_word(text_.substr(item, p - item))) ++plain_words;
+            else plain_prefix = false;
         }
         if (b.kind == Kind::blank && any) b.kind = all_comments ? Kind::comment_only : Kind::code;
-        b.end = p < le && text_[p] == ';' ? p + 1 : le;
+        b.end = p < le && text_[p] == ';' ? p + 1 : p < le ? p : le;
         return b;
     }
 
@@ -113,9 +123,15 @@ private:
         const char* begin = text_.data() + p;
         const std::size_t n = le - p;
         if (std::memchr(begin, ';', n) || (rules_.paren_comments && std::memchr(begin, '(', n))) return false;
+        if (std::memchr(begin + 1, 'O', n - 1) || std::memchr(begin + 1, 'o', n - 1)) return false;   // M99O0810
         for (const std::string& intro : rules_.line_comments)
             if (!intro.empty() && std::memchr(begin, intro.front(), n)) return false;
         return true;
+    }
+
+    bool digit_after(std::size_t p, std::size_t le) const {
+        p = skip_blanks(p, le);
+        return p < le && digit(text_[p]);
     }
 
     std::size_t skip_blanks(std::size_t p, std::size_t le) const {

@@ -98,6 +98,13 @@ Project::Project(Config config, std::vector<Problem> problems, const Overrides& 
     problems_.insert(problems_.end(), loaded.problems.begin(), loaded.problems.end());
     machine_file_ = !overrides.machine.empty() ? overrides.machine : config_.machine.value_or(fs::path{});
     limits_ = resolve_limits(overrides.limits, config_.limits);
+    run_ = config_.run;
+    if (overrides.run.call) {
+        run_.call = overrides.run.call;
+        run_.call_everywhere = overrides.run.call_everywhere;
+    }
+    if (overrides.run.passes) run_.passes = overrides.run.passes;
+    run_.set.insert(run_.set.end(), overrides.run.set.begin(), overrides.run.set.end());
 }
 
 const Project::SetupEntry& Project::setup(const dialects::Dialect& dialect) const {
@@ -106,6 +113,17 @@ const Project::SetupEntry& Project::setup(const dialects::Dialect& dialect) cons
     if (!entry) {
         if (machine_file_.empty()) entry = std::make_unique<SetupEntry>(SetupEntry{interpreter::default_setup(dialect), {}});
         else entry = std::make_unique<SetupEntry>(load_setup(machine_file_, dialect, files_));
+    }
+    return *entry;
+}
+
+const Project::SetupEntry& Project::setup(const dialects::Dialect& dialect, const dialects::Dialect& machine_of) const {
+    if (!machine_file_.empty() || dialect.id == machine_of.id) return setup(dialect);
+    const std::lock_guard lock(setups_mutex_);
+    std::unique_ptr<SetupEntry>& entry = setups_[machine_of.id + " as " + dialect.id];
+    if (!entry) {
+        const machine::Machine m = machine::resolve_for_dialect(machine::default_machine_for(machine_of), dialect);
+        entry = std::make_unique<SetupEntry>(SetupEntry{interpreter::make_setup(m), {}});
     }
     return *entry;
 }

@@ -48,6 +48,7 @@ struct Overrides {
     std::vector<std::filesystem::path> dialect_files;    // loaded before the .kerf.toml's
     std::filesystem::path machine;                       // "": not overridden
     LimitSettings limits;                                // --max-file-bytes, --max-line-bytes, --time-limit
+    RunSettings run;                                     // --call, --set, --passes (over [run])
     std::string dialect_origin = "--dialect";            // how problems name the override ("kerf.dialect")
     std::string machine_origin = "--machine";
 };
@@ -95,6 +96,8 @@ public:
     const std::filesystem::path& machine_file() const { return machine_file_; }
     // The bounds in force for the project's files: the overrides over [limits] over the defaults.
     const Limits& limits() const { return limits_; }
+    // How a dry run starts: the overrides' --call/--passes over [run], their --set after [run] set.
+    const RunSettings& run_settings() const { return run_; }
 
     struct SetupEntry {
         std::optional<interpreter::Setup> setup;   // nullopt when the machine file has errors
@@ -102,6 +105,10 @@ public:
     };
     // The Setup for `dialect`, read once per dialect id.
     const SetupEntry& setup(const dialects::Dialect& dialect) const;
+    // The machine `machine_of` runs on (the machine file in force, else its dialect's built-in
+    // machine) read for `dialect`: the same machine description in another dialect's reading
+    // (its "dialect" switches resolved for `dialect`), for `kerf convert --verify`.
+    const SetupEntry& setup(const dialects::Dialect& dialect, const dialects::Dialect& machine_of) const;
     // The folders a call from `file` reaches: the file's own folder, then the library folders.
     Scope program_scope(const std::filesystem::path& file) const;
 
@@ -111,6 +118,7 @@ private:
     dialects::Registry registry_;
     std::filesystem::path machine_file_;
     Limits limits_;
+    RunSettings run_;
     const FileSystem& files_;
     mutable std::mutex setups_mutex_;
     mutable std::map<std::string, std::unique_ptr<SetupEntry>> setups_;

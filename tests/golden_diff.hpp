@@ -82,4 +82,23 @@ inline std::string line_diff(const std::string& expected, const std::string& act
     return out.str();
 }
 
+// The values of `key = "value"` / `key = true` lines of a golden case's .toml (the format and
+// convert goldens), in order: a key may repeat (`report = ...`).
+inline std::vector<std::string> golden_values(const std::string& toml, const std::string& key) {
+    std::vector<std::string> out;
+    const std::string prefix = key + " = ";
+    for (const std::string& line : split_lines(toml)) {
+        if (line.rfind(prefix, 0) != 0) continue;
+        std::string v = line.substr(prefix.size());
+        if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
+        out.push_back(v);
+    }
+    return out;
+}
+
+inline std::string golden_value(const std::string& toml, const std::string& key, const std::string& fallback = "") {
+    const std::vector<std::string> v = golden_values(toml, key);
+    return v.empty() ? fallback : v.front();
+}
+
 }  // namespace kerf::test

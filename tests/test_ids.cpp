@@ -99,6 +99,7 @@ TEST_CASE("the macro error ids are the FANUC alarm numbers the dry run raises") 
     CHECK(interpreter::kerf_alarm::time_limit == alarms::time_limit);
     CHECK(interpreter::kerf_alarm::unknown_variable == alarms::unknown_variable);
     CHECK(interpreter::kerf_warning::not_modelled == alarms::not_modelled);
+    CHECK(interpreter::kerf_warning::program_repeats == alarms::program_repeats);
 }
 
 TEST_CASE("alarm numbers are unique and sorted; docs/diagnostics.md lists each with its rule") {

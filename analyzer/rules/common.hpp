@@ -9,6 +9,7 @@
 #include <array>
 #include <cctype>
 #include <map>
+#include <type_traits>
 
 #include "analyzer/registry.hpp"
 #include "dialects/functions.hpp"
@@ -74,10 +75,18 @@ inline Rule explaining(Rule r, std::vector<std::pair<int, int>> alarms) {
     return r;
 }
 
-// A static rule whose check is the class C (default-constructed per file).
+// A check with data members writes them in state() (rule.hpp StateKey): incremental checking
+// compares them. A check without members has no state.
+template <class C>
+constexpr bool writes_state = sizeof(C) == sizeof(StaticCheck) ||
+                              !std::is_same_v<decltype(&C::state), void (StaticCheck::*)(StateKey&) const>;
+
+// A static rule whose check is the class C (default-constructed per file, copied for checkpoints).
 template <class C>
 Rule static_rule(Rule r) {
+    static_assert(writes_state<C>, "a static check with data members must override StaticCheck::state");
     r.make_static = [] { return std::make_unique<C>(); };
+    r.clone_static = [](const StaticCheck& c) -> std::unique_ptr<StaticCheck> { return std::make_unique<C>(static_cast<const C&>(c)); };
     return r;
 }
 

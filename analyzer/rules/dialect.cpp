@@ -42,37 +42,59 @@ public:
     explicit UnlistedMCode(bool machine_list) : machine_list_(machine_list) {}
     void block(const BlockContext& b, Reporter& out) override {
         const std::vector<int>& listed = b.file.setup.m_codes;
-        if (listed.empty() == machine_list_) return;   // K2010 without a machine list, K2011 with one
+        if (listed.empty() == machine_list_ || (!machine_list_ && noted_)) return;   // K2010 without a machine list, K2011 with one
         for (const ast::CodeRef& c : b.m) {
-            if (c.info || !c.key || *c.key % 10 != 0) continue;
-            const int number = *c.key / 10;
-            if (std::find(listed.begin(), listed.end(), number) != listed.end()) continue;
+            const auto number = unlisted(c, listed);
+            if (!number || std::find(seen_.begin(), seen_.end(), *number) != seen_.end()) continue;
             const ast::Token& t = b.token(c.token);
-            if (!seen_.try_emplace(number, t.range()).second) continue;
-            file_ = &b.file;
-            if (machine_list_)
-                out.report(t.range(), fmt::format("{} is neither in the table of {} nor among the machine's M codes (machine file m_codes)",
-                                                  b.tree().spelling(t), b.file.dialect.id),
-                           "check the code number, or add it to the machine file's m_codes");
+            if (!machine_list_) {
+                note(b.file, t.range(), out);
+                return;
+            }
+            seen_.push_back(*number);
+            out.report(t.range(), fmt::format("{} is neither in the table of {} nor among the machine's M codes (machine file m_codes)",
+                                              b.tree().spelling(t), b.file.dialect.id),
+                       "check the code number, or add it to the machine file's m_codes");
         }
     }
-    void end_program(const FileContext& file, std::size_t program, Reporter& out) override {
-        // One note for the whole file, after its last program.
-        if (machine_list_ || seen_.empty() || program + 1 != file.typed.programs().size()) return;
-        std::string codes;
-        for (const auto& [number, at] : seen_) codes += fmt::format("{}M{:02}", codes.empty() ? "" : ", ", number);
-        Finding& f = out.report(seen_.begin()->second,
-                                fmt::format("{} {} not in the table of {}: {} machine builder's M code{}?", codes,
-                                            seen_.size() == 1 ? "is" : "are", file.dialect.id, seen_.size() == 1 ? "a" : "the",
-                                            seen_.size() == 1 ? "" : "s"),
-                                "list the machine's own M codes in its machine file (m_codes), or use the dialect of the machine");
-        for (const auto& [number, at] : seen_) f.related.push_back({at, fmt::format("M{:02} first here", number)});
+    void state(StateKey& key) const override {
+        key.add(noted_);
+        for (const int number : seen_) key.add(number);
     }
 
 private:
+    // The M code number of a code the dialect does not list and the machine file does not either.
+    static std::optional<int> unlisted(const ast::CodeRef& c, const std::vector<int>& listed) {
+        if (c.info || !c.key || *c.key % 10 != 0) return std::nullopt;
+        const int number = *c.key / 10;
+        if (std::find(listed.begin(), listed.end(), number) != listed.end()) return std::nullopt;
+        return number;
+    }
+    // K2010: one note for the file at its first unlisted M code, naming every unlisted code of the
+    // file where it is first used (M words are among the facts incremental checking digests, so an
+    // edit that changes them walks the file whole).
+    void note(const FileContext& file, ast::Range at, Reporter& out) {
+        noted_ = true;
+        std::map<int, ast::Range> first;
+        std::vector<ast::CodeRef> g, m;
+        for (std::uint32_t i = 0; i < file.tree().block_count(); ++i) {
+            if (file.tree().blocks[i].kind != ast::BlockKind::code) continue;
+            file.typed.block(i).collect_codes(g, m);
+            for (const ast::CodeRef& c : m)
+                if (const auto number = unlisted(c, file.setup.m_codes)) first.try_emplace(*number, file.tree().tokens[c.token].range());
+        }
+        std::string codes;
+        for (const auto& [number, where] : first) codes += fmt::format("{}M{:02}", codes.empty() ? "" : ", ", number);
+        Finding& f = out.report(at,
+                                fmt::format("{} {} not in the table of {}: {} machine builder's M code{}?", codes,
+                                            first.size() == 1 ? "is" : "are", file.dialect.id, first.size() == 1 ? "a" : "the",
+                                            first.size() == 1 ? "" : "s"),
+                                "list the machine's own M codes in its machine file (m_codes), or use the dialect of the machine");
+        for (const auto& [number, where] : first) f.related.push_back({where, fmt::format("M{:02} first here", number)});
+    }
     bool machine_list_;
-    const FileContext* file_ = nullptr;
-    std::map<int, ast::Range> seen_;   // M code → its first block in this file
+    bool noted_ = false;      // K2010: the file's note is made
+    std::vector<int> seen_;   // K2011: the codes reported in this file
 };
 struct UnlistedMCodeNote : UnlistedMCode {
     UnlistedMCodeNote() : UnlistedMCode(false) {}

@@ -48,6 +48,8 @@ public:
         block_expressions(b.tree(), b.view, read, assign);
     }
 
+    void state(StateKey& key) const override { key.add(static_cast<std::int64_t>(assigned_.to_ullong() * 2 + main_)); }
+
 private:
     std::bitset<34> assigned_;
     LocalSet arguments_;

@@ -1,8 +1,9 @@
 // Number and word-form rules read from the tokens of each block.
 #include <cmath>
+#include <optional>
 
 #include "analyzer/rules/common.hpp"
-#include "interpreter/events.hpp"
+#include "dialects/functions.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -14,16 +15,19 @@ bool is_axis(const ast::Token& t) {
     return t.role() == ast::Role::axis_absolute || t.role() == ast::Role::axis_incremental;
 }
 
-// X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm.
+// The unit the block's words are read in: the block's own G20/G21 (C: G70/G71), else the modal one.
+bool inch_block(const BlockContext& b) {
+    std::optional<bool> own;
+    for (const ast::CodeRef& c : b.g)
+        if (c.info && (c.info->function == dialects::functions::inch_input || c.info->function == dialects::functions::metric_input))
+            own = c.info->has(dialects::traits::inch);
+    return own ? *own : b.modal.has_trait(dialects::traits::inch);
+}
+
+// X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm; under
+// G20 0.0010 in (IS-B 0.0001 in); on a rotary axis 0.010°.
 class MissingDecimalPoint : public StaticCheck {
     static constexpr double kDeliberateIncrements = 10000;
-
-    // Degrees on a rotary axis of the machine (A B C by default), mm elsewhere.
-    static const char* unit_of(const BlockContext& b, const ast::Token& t) {
-        if (!is_axis(t)) return "mm";
-        const auto axis = interpreter::axis_of_letter(t.letter);
-        return axis && b.file.setup.rotary[static_cast<std::size_t>(*axis)] ? "°" : "mm";
-    }
 
 public:
     void block(const BlockContext& b, Reporter& out) override {
@@ -43,11 +47,15 @@ public:
             // move (ALL-PROG's C_RUN "G91 G01 C360000": one turn in 0.001° increments).
             if (std::fabs(value) >= kDeliberateIncrements) continue;
             const std::string_view spelling = b.tree().spelling(t);
-            const char* unit = unit_of(b, t);
+            const char axis = t.role() == ast::Role::axis_incremental ? b.file.dialect.lexical.incremental_axis_of(t.letter) : t.letter;
+            const bool rotary = axis == 'A' || axis == 'B' || axis == 'C' ? b.file.setup.rotary[static_cast<std::size_t>(3 + axis - 'A')] : false;
+            const bool inch = !rotary && inch_block(b);
+            const char* unit = rotary ? "°" : inch ? " in" : " mm";
+            const double increment = rotary ? b.file.setup.increment_deg() : b.file.setup.increment(inch);
             out.report(t.range(),
-                       fmt::format("'{}' has no decimal point: the control reads {} increments = {:g} {}, not {:g} {}",
-                                   spelling, value, value * b.file.setup.increment_mm, unit, value, unit),
-                       fmt::format("write '{}.' if {:g} {} is meant", spelling, value, unit))
+                       fmt::format("'{}' has no decimal point: the control reads {} increments = {:g}{}, not {:g}{}",
+                                   spelling, value, value * increment, unit, value, unit),
+                       fmt::format("write '{}.' if {:g}{} is meant", spelling, value, unit))
                 .notes.push_back("the machine reads integers as least input increments (calculator-type input off)");
         }
     }
@@ -176,29 +184,34 @@ public:
 };
 
 // Lower-case addresses, one finding per file (the p2g generator writes every axis letter in lower
-// case: one finding says it, not 64); its fix upper-cases them all.
+// case: one finding says it, not 64) at the first; its fix upper-cases them all. Lower-case words
+// are among the facts incremental checking digests (analyzer/incremental.cpp), so the file-wide
+// count and fix stay true after an edit.
 class LowerCase : public StaticCheck {
 public:
-    void block(const BlockContext& b, Reporter&) override {
+    void block(const BlockContext& b, Reporter& out) override {
+        if (reported_) return;
         for (const ast::Token& t : b.view.tokens()) {
             if (t.kind != ast::TokenKind::word || !t.has(ast::token_flags::lower_case)) continue;
-            if (edits_.empty()) first_ = {t.begin, t.begin + 1};
-            edits_.push_back({{t.begin, t.begin + 1}, std::string(1, t.letter)});
+            reported_ = true;
+            std::vector<TextEdit> edits;
+            for (const ast::Token& u : b.tree().tokens)
+                if (u.kind == ast::TokenKind::word && u.has(ast::token_flags::lower_case))
+                    edits.push_back({{u.begin, u.begin + 1}, std::string(1, u.letter)});
+            const ast::Range first{t.begin, t.begin + 1};
+            const std::string_view letter = b.tree().slice(first);
+            out.report(first,
+                       edits.size() == 1 ? fmt::format("lower-case address '{}'", letter)
+                                         : fmt::format("{} lower-case addresses in this file, the first '{}'", edits.size(), letter),
+                       "write the addresses in upper case")
+                .fix = Fix{"upper-case the address letters", std::move(edits)};
+            return;
         }
     }
-    void end_program(const FileContext& file, std::size_t program, Reporter& out) override {
-        if (edits_.empty() || program + 1 != file.typed.programs().size()) return;
-        const std::string_view first = file.tree().slice(first_);
-        out.report(first_,
-                   edits_.size() == 1 ? fmt::format("lower-case address '{}'", first)
-                                      : fmt::format("{} lower-case addresses in this file, the first '{}'", edits_.size(), first),
-                   "write the addresses in upper case")
-            .fix = Fix{"upper-case the address letters", edits_};
-    }
+    void state(StateKey& key) const override { key.add(reported_); }
 
 private:
-    ast::Range first_;
-    std::vector<TextEdit> edits_;
+    bool reported_ = false;
 };
 
 }  // namespace

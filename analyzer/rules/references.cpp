@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 
@@ -27,8 +28,7 @@ struct Target {
 // M97 P, M98 Q without P. M99 P and M98 P Q name labels of other programs.
 std::vector<Target> local_targets(const BlockContext& b) {
     std::vector<Target> out;
-    const auto block = static_cast<std::uint32_t>(b.view.index());
-    for (const references::Reference& r : references::block_references(b.file.typed, static_cast<std::uint32_t>(b.program), block)) {
+    for (const references::Reference& r : b.references()) {
         const bool local = r.kind == references::Kind::goto_label || r.kind == references::Kind::profile_label ||
                            r.kind == references::Kind::local_call_label ||
                            (r.kind == references::Kind::call_label && !r.label_program && !b.view.word('P'));
@@ -44,43 +44,15 @@ ast::Range block_range(const FileContext& file, std::uint32_t block) {
     return {tokens.front().begin, tokens.back().begin + tokens.back().length};
 }
 
-// An O word after the first word of a block ('M99O0810(Z_AXIS)', K3012): kerf reads the blocks
-// after it as the program before, but they may be another program whose N numbers repeat the first
-// one's. Duplicate labels in such a merged program are the merge's, reported once by K3012.
-bool merges_programs(const FileContext& file, std::size_t program) {
-    const ast::Program& p = file.typed.programs()[program];
-    for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
-        bool first = true;
-        for (const ast::Token& t : file.tree().block_tokens(b)) {
-            if (t.kind != ast::TokenKind::word) continue;
-            if (t.letter == 'O' && t.role() == ast::Role::program && !first) return true;
-            first = false;
-        }
-    }
-    return false;
-}
+// The labels of the block's program: built on the first jump that needs them (most CAM programs
+// have none); FileContext shares them between the rules.
+const LabelTable& labels(const BlockContext& b) { return b.file.labels(b.program); }
 
-class LabelCheck : public StaticCheck {
-public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
-        file_ = &file;
-        program_ = program;
-    }
-
-protected:
-    // Built on the first jump that needs it: most CAM programs have none (FileContext shares it).
-    const LabelTable& labels() const { return file_->labels(program_); }
-
-private:
-    const FileContext* file_ = nullptr;
-    std::size_t program_ = 0;
-};
-
-class LabelNotFound : public LabelCheck {
+class LabelNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (labels().count(t.label) == 0)
+            if (labels(b).count(t.label) == 0)
                 out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
                            fmt::format("add N{} to the block meant, or correct the number", t.label));
     }
@@ -90,16 +62,12 @@ public:
 // label lands on the first. Where it searches forward from the jump (Haas, `label_search =
 // "forward"`), repeated labels are the local labels of macro sections (O09985 N4, N77, N78) and each
 // jump has one target: nothing to report.
-class AmbiguousLabel : public LabelCheck {
+class AmbiguousLabel : public StaticCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
-        LabelCheck::begin_program(file, program, out);
-        merged_ = merges_programs(file, program);
-    }
     void block(const BlockContext& b, Reporter& out) override {
-        if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward || merged_) return;
+        if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
         for (const Target& t : local_targets(b))
-            if (const int n = labels().count(t.label); n > 1) {
+            if (const int n = labels(b).count(t.label); n > 1) {
                 Finding& f = out.report(b.token(t.token).range(),
                                         fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                                         "give each target block a number of its own");
@@ -111,9 +79,6 @@ public:
                 }
             }
     }
-
-private:
-    bool merged_ = false;
 };
 
 struct CalledProgram {
@@ -124,8 +89,7 @@ struct CalledProgram {
 // The programs a block calls by a constant number (M98 P, G65 P, G66 P: references/references.hpp).
 std::vector<CalledProgram> called_programs(const BlockContext& b) {
     std::vector<CalledProgram> out;
-    const auto block = static_cast<std::uint32_t>(b.view.index());
-    for (const references::Reference& r : references::block_references(b.file.typed, static_cast<std::uint32_t>(b.program), block))
+    for (const references::Reference& r : b.references())
         if (!references::is_label(r.kind) && r.value) out.push_back({*r.value, r.token});
     return out;
 }
@@ -153,9 +117,12 @@ public:
                                    "[programs] resident", call.number));
         }
     }
+    void state(StateKey& key) const override {
+        for (const std::int64_t n : reported_) key.add(n);
+    }
 
 private:
-    std::set<std::int64_t> reported_;
+    std::set<std::int64_t> reported_;   // the numbers reported in this file (one finding each)
 };
 
 // A call whose program is in several other files (project/index.hpp): which one runs depends on
@@ -184,7 +151,7 @@ public:
     explicit Loops(bool depth) : depth_(depth) {}
     void begin_program(const FileContext&, std::size_t, Reporter&) override { open_.clear(); }
     void block(const BlockContext& b, Reporter& out) override {
-        for (const std::uint32_t s : b.view.statements()) {
+        for (const std::uint32_t s : b.statements()) {
             const ast::Statement& st = b.tree().statements[static_cast<std::size_t>(b.token(s).payload)];
             const bool opens = st.kind == ast::StatementKind::while_do || st.kind == ast::StatementKind::do_;
             if (!opens && st.kind != ast::StatementKind::end) continue;
@@ -193,6 +160,13 @@ public:
             const int label = static_cast<int>(*m);
             if (opens) open(b, s, label, out);
             else close(b, s, label, out);
+        }
+    }
+    void state(StateKey& key) const override {
+        key.add(depth_);
+        for (const auto& [token, label] : open_) {
+            key.token(token);
+            key.add(label);
         }
     }
     void end_program(const FileContext& file, std::size_t, Reporter& out) override {
@@ -251,6 +225,7 @@ public:
         ended_ = ended_ || ends_program(b);
         code_ = code_ || b.view.block().kind == ast::BlockKind::code;
     }
+    void state(StateKey& key) const override { key.add(ended_ * 2 + code_); }
     void end_program(const FileContext& file, std::size_t program, Reporter& out) override {
         const auto& programs = file.typed.programs();
         const ast::Program& p = programs[program];
@@ -291,10 +266,13 @@ private:
 class Unreachable : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t, Reporter&) override {
-        if (!targets_) targets_ = all_targets(file, computed_);   // the same for every program of the file
+        // The same for every program of the file; shared by the copies of incremental checking
+        // (an edit that changes a target is checked whole: static_facts digests them).
+        if (!targets_) targets_ = std::make_shared<const std::vector<std::int64_t>>(jump_targets(file.tree(), computed_));
         dead_ = false;
         reported_ = false;
     }
+    void state(StateKey& key) const override { key.add(computed_ * 4 + dead_ * 2 + reported_); }
     void block(const BlockContext& b, Reporter& out) override {
         if (computed_) return;   // GOTO #1 may reach any label
         const auto n = b.view.sequence_number();
@@ -319,30 +297,11 @@ private:
     }
     static bool unconditional_goto(const BlockContext& b) {
         if (b.view.block().has(ast::block_flags::deleted)) return false;
-        for (const std::uint32_t s : b.view.statements())
+        for (const std::uint32_t s : b.statements())
             if (b.tree().statements[static_cast<std::size_t>(b.token(s).payload)].kind == ast::StatementKind::goto_) return true;
         return false;
     }
-    // Every N that something in the file can jump to; `computed` when a GOTO target is an expression.
-    static std::vector<std::int64_t> all_targets(const FileContext& file, bool& computed) {
-        std::vector<std::int64_t> out;
-        computed = false;
-        const ast::SyntaxTree& tree = file.tree();
-        for (std::size_t s = 0; s < tree.statements.size(); ++s) {
-            const ast::Statement& st = tree.statements[s];
-            if (st.label < 0) continue;
-            if (const auto v = constant_of(tree, st.label)) out.push_back(static_cast<std::int64_t>(*v));
-            else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
-        }
-        for (std::size_t t = 0; t < tree.tokens.size(); ++t) {   // P/Q/L of calls and cycles: any number
-            const ast::Token& tok = tree.tokens[t];
-            if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
-                out.push_back(static_cast<std::int64_t>(tree.number_value(tok)));
-        }
-        std::sort(out.begin(), out.end());
-        return out;
-    }
-    std::optional<std::vector<std::int64_t>> targets_;   // sorted
+    std::shared_ptr<const std::vector<std::int64_t>> targets_;   // sorted
     bool computed_ = false, dead_ = false, reported_ = false;
 };
 
@@ -352,55 +311,53 @@ private:
 // from the jump (Haas), repeated labels are local labels on purpose and not reported (issue 15).
 class DuplicateSequenceNumber : public StaticCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
+    void begin_program(const FileContext& file, std::size_t, Reporter&) override {
+        // The same for every program of the file (as K3007's): an edit that changes a target or a
+        // label is checked whole (static_facts digests them).
+        if (!targets_) targets_ = std::make_shared<const std::vector<std::int64_t>>(jump_targets(file.tree(), computed_));
+        reported_ = false;
+    }
+    // One finding per program, at the first block that repeats a number: it names every repeated
+    // number of the program with its blocks.
+    void block(const BlockContext& b, Reporter& out) override {
         // Where labels are searched forward from the jump (Haas), N numbers are local labels: the
         // Renishaw macros repeat N76 (INCH) / N77 (METRIC) in each section on purpose (issue 15).
-        if (merges_programs(file, program) || file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
-        const ast::Program& p = file.typed.programs()[program];
-        std::map<std::int64_t, std::vector<std::uint32_t>> blocks;
-        std::set<std::int64_t> targets;
-        for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
-            const ast::BlockView view = file.typed.block(b);
-            if (const auto n = view.sequence_number(); n && *n == std::floor(*n)) blocks[static_cast<std::int64_t>(*n)].push_back(b);
-            for (const references::Reference& r : references::block_references(file.typed, static_cast<std::uint32_t>(program), b))
-                if (references::is_label(r.kind) && r.value) targets.insert(*r.value);
-        }
-        // One finding per program: the repeated numbers, each with its blocks.
-        std::vector<std::pair<std::int64_t, const std::vector<std::uint32_t>*>> repeated;
-        for (const auto& [n, at] : blocks)
-            if (at.size() > 1 && !targets.count(n)) repeated.emplace_back(n, &at);
-        if (repeated.empty()) return;
-        std::string numbers;
-        for (const auto& [n, at] : repeated) numbers += fmt::format("{}N{}", numbers.empty() ? "" : ", ", n);
-        Finding& f = out.report(block_range(file, (*repeated.front().second)[1]),
+        if (reported_ || b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
+        const auto n = repeated(b.file, b.program, b.view);
+        if (!n) return;
+        const auto program = static_cast<std::uint32_t>(b.program);
+        if (references::label_blocks(b.file.typed, program, *n).front() == b.view.index()) return;   // the first one
+        reported_ = true;
+        std::vector<std::int64_t> numbers;
+        const ast::Program& p = b.file.typed.programs()[b.program];
+        for (std::uint32_t i = p.first_block; i < p.end_block; ++i)
+            if (const auto m = repeated(b.file, b.program, b.file.typed.block(i)); m && std::find(numbers.begin(), numbers.end(), *m) == numbers.end())
+                numbers.push_back(*m);
+        std::string list;
+        for (const std::int64_t m : numbers) list += fmt::format("{}N{}", list.empty() ? "" : ", ", m);
+        Finding& f = out.report(block_text_range(b),
                                 fmt::format("{} {} on several blocks of this program: a search or a restart finds the first",
-                                            numbers, repeated.size() == 1 ? "is" : "are"),
+                                            list, numbers.size() == 1 ? "is" : "are"),
                                 "give each block a number of its own (kerf fmt --block-numbers renumber)");
-        for (const auto& [n, at] : repeated)
-            for (std::size_t i = 0; i < at->size(); ++i)
-                f.related.push_back({block_range(file, (*at)[i]), i == 0 ? fmt::format("N{}: the first", n) : fmt::format("N{} again", n)});
-    }
-    void block(const BlockContext&, Reporter&) override {}
-};
-
-// An O word after the first word of a block (ALL-PROG.TXT: 'M99O0810(Z_AXIS)', the line break
-// before O0810 lost). The program number starts a program at the start of a block (dialects.md
-// §3.4); what a control makes of one in the middle of a block is not written down anywhere kerf
-// has read [inference], so kerf says how it reads it: as part of the program before (issue 15).
-class ProgramNumberInsideBlock : public StaticCheck {
-public:
-    void block(const BlockContext& b, Reporter& out) override {
-        bool first = true;
-        for (const ast::Token& t : b.view.tokens()) {
-            if (t.kind != ast::TokenKind::word) continue;
-            if (t.letter == 'O' && t.role() == ast::Role::program && !first)
-                out.report(t.range(),
-                           fmt::format("{} is not at the start of a block: a program starts at the start of a block, so kerf "
-                                       "reads the blocks after it as part of the program before", b.tree().spelling(t)),
-                           fmt::format("put {} on a line of its own", b.tree().spelling(t)));
-            first = false;
+        for (const std::int64_t m : numbers) {
+            const auto at = references::label_blocks(b.file.typed, program, m);
+            for (std::size_t k = 0; k < at.size(); ++k)
+                f.related.push_back({block_range(b.file, at[k]), k == 0 ? fmt::format("N{}: the first", m) : fmt::format("N{} again", m)});
         }
     }
+    void state(StateKey& key) const override { key.add(reported_); }
+
+private:
+    // The block's N when another block of the program has it too and no jump lands on it (K3002's).
+    std::optional<std::int64_t> repeated(const FileContext& file, std::size_t program, const ast::BlockView& view) const {
+        const auto n = view.sequence_number();
+        if (!n || *n != std::floor(*n)) return std::nullopt;
+        const auto label = static_cast<std::int64_t>(*n);
+        if (file.labels(program).count(label) < 2 || std::binary_search(targets_->begin(), targets_->end(), label)) return std::nullopt;
+        return label;
+    }
+    std::shared_ptr<const std::vector<std::int64_t>> targets_;   // sorted
+    bool computed_ = false, reported_ = false;
 };
 
 class ProgramNumbers : public StaticCheck {
@@ -435,6 +392,30 @@ public:
 };
 
 }  // namespace
+
+}  // namespace kerf::analyzer::rules
+
+namespace kerf::analyzer {
+
+std::vector<std::int64_t> jump_targets(const ast::SyntaxTree& tree, bool& computed) {
+    using rules::constant_of;
+    std::vector<std::int64_t> out;
+    computed = false;
+    for (const ast::Statement& st : tree.statements) {
+        if (st.label < 0) continue;
+        if (const auto v = constant_of(tree, st.label)) out.push_back(static_cast<std::int64_t>(*v));
+        else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
+    }
+    for (const ast::Token& tok : tree.tokens)   // P/Q of calls and cycles: any number
+        if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
+            out.push_back(static_cast<std::int64_t>(tree.number_value(tok)));
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+}  // namespace kerf::analyzer
+
+namespace kerf::analyzer::rules {
 
 void add_references(Registry& r) {
     const auto rule = rule_maker(Category::references);
@@ -481,12 +462,6 @@ void add_references(Registry& r) {
          "A search for the block, a restart at it or a renumbering finds the first: the operator restarts at the wrong place.",
          "N130 M06 T02\nN140 G43 H02\nN130 G00 X0 Y0", "N130 M06 T02\nN140 G43 H02\nN250 G00 X0 Y0",
          "corpus MANIFEST 'duplicate N numbers' (O0001, O0005); dialects.md §2 Sequence number"})));
-    r.add(static_rule<ProgramNumberInsideBlock>(rule("K3012", "program-number-inside-block", S::error,
-        {"An O program number that is not the first word of its block (a line break lost before it).",
-         "A program starts with its O number at the start of a block: kerf reads the blocks after it as part of the "
-         "program before (its labels, its M99) and calls to that O number do not find it; what a control does with "
-         "it is not documented [inference].",
-         "M99O0810(Z_AXIS)", "M99\nO0810(Z_AXIS)", "corpus ALL-PROG.TXT (issue 15); dialects.md §3.4"})));
     r.add(static_rule<ProgramInSeveralFiles>(rule("K3010", "program-in-several-files", S::warning,
         {"M98 P, G65 P or G66 P to a program number that several other files of the folder (or the library "
          "folders) hold.",

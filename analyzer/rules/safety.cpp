@@ -35,6 +35,7 @@ public:
                    "program G50 S<max rpm> in a block before G96: near X0 the rpm climbs to the machine limit");
         clamped_ = true;   // once per file
     }
+    void state(StateKey& key) const override { key.add(clamped_); }
 
 private:
     bool clamped_ = false;
@@ -64,6 +65,7 @@ public:
                        "start or cancel the compensation on a straight move before or after the arc");
         }
     }
+    void state(StateKey&) const override {}   // function_ is the rule's choice, not state
 
 private:
     dialects::FunctionId function_;
@@ -120,6 +122,12 @@ public:
     void begin_program(const FileContext&, std::size_t, Reporter&) override {
         selected_.reset();
         spindle_.reset();
+    }
+    void state(StateKey& key) const override {
+        key.add(selected_.has_value());
+        key.add(selected_.value_or(0));
+        key.add(spindle_.has_value());
+        key.add(spindle_.value_or(0));
     }
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.dialect.lexical.tool_word != "number") return;
@@ -187,6 +195,11 @@ public:
                                four_places_),
                    "program G20 (inch) or G21 (mm) in the safe-start block");
     }
+    void state(StateKey& key) const override {
+        for (const bool flag : {unit_set_, reads_unit_, main_, reported_, first_move_.has_value()}) key.add(flag);
+        key.add(fractional_);
+        key.add(four_places_);
+    }
 
 private:
     static constexpr int kUnitModal = 4006;   // [FANUC] #4006: the G20/G21 of modal group 06
@@ -227,9 +240,9 @@ public:
     void block(const BlockContext& b, Reporter& out) override {
         const double limit = b.file.setup.max_rpm;
         // A built-in machine's limit is a guess (machine/data: [inference]): only a machine file's counts.
-        if (!b.file.setup.machine_given || limit <= 0 || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
-        const auto s = number_word(b, 'S');
-        if (!s || s->value <= limit) return;
+        if (!b.file.setup.machine_given || limit <= 0) return;
+        const auto s = number_word(b, 'S');   // first: most blocks have no S
+        if (!s || s->value <= limit || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
         out.report(b.token(s->token).range(), fmt::format("S{:g} rpm is over the machine's spindle limit of {:g} rpm", s->value, limit),
                    "lower the speed; the control clamps it or alarms");
     }

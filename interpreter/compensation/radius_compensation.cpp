@@ -11,6 +11,10 @@ using motion::P2;
 namespace {
 
 constexpr double kClose = 1e-6;   // mm
+// Elements meant to be tangent meet at a fraction of a degree in CAM output (arcs written with four
+// decimals in inch): where their offsets do not meet ahead of the tool, FANUC joins them with a
+// minute straight move instead of an alarm (differential A5: 1006.nc, O0057, CGIP11719, O0003).
+constexpr double kNearlyTangent = 1.0 * 3.14159265358979323846 / 180;   // radians
 
 P2 left_of(P2 tangent, int side, double r) { return motion::left_normal(tangent) * (side * r); }
 
@@ -26,6 +30,10 @@ Alarm arc_start_cancel(bool start) {
     // be commanded or cancelled with G00 or G01").
     return {34, start ? "compensation started in an arc block (G02/G03): start it on G00/G01 (alarm 034)"
                       : "compensation cancelled in an arc block (G02/G03): cancel it on G00/G01 (alarm 034)"};
+}
+
+bool nearly_tangent(const Programmed& a, const Programmed& b) {
+    return std::fabs(motion::turn_angle(motion::end_tangent(a.path), motion::start_tangent(b.path))) < kNearlyTangent;
 }
 
 }  // namespace
@@ -128,7 +136,11 @@ Step RadiusCompensation::follow(const Programmed& current, const std::optional<P
         const bool perpendicular = cancels && (settings_.start == StartType::a || c == CornerClass::inside);
         const auto b = motion::offset_element(as_next.path, as_next.side * as_next.radius);
         if (!perpendicular && b) {
-            const auto joined = join(*a, *b, current, as_next, current.path.end, cancels);
+            auto joined = join(*a, *b, current, as_next, current.path.end, cancels);
+            // A nearly tangent corner whose offsets miss each other (or meet behind the tool): the
+            // element runs to its own end and a minute move joins the next one.
+            if ((!joined || !motion::ahead_on(*a, tool_, joined->end)) && nearly_tangent(current, as_next))
+                joined = straight_join(*a, *b);
             if (!joined) {
                 s.alarm = overcut("the offset paths of this block and the next do not meet");
                 return s;
@@ -145,6 +157,12 @@ Step RadiusCompensation::follow(const Programmed& current, const std::optional<P
     if (j.extension) run(s, line_to(*j.extension));
     entry_ = j.entry;
     return s;
+}
+
+RadiusCompensation::Join RadiusCompensation::straight_join(const Element& a, const Element& b) {
+    Join j{a.end, std::nullopt, {}};
+    if (motion::norm(b.start - a.end) > kClose) j.entry.push_back(line_to(b.start));
+    return j;
 }
 
 std::optional<RadiusCompensation::Join> RadiusCompensation::join(const Element& a, const Element& b, const Programmed& pa,

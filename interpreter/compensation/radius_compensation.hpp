@@ -90,6 +90,8 @@ private:
     // The corner between the offset elements a and b at the programmed corner point `corner`.
     std::optional<Join> join(const motion::Element& a, const motion::Element& b, const Programmed& pa,
                              const Programmed& pb, motion::P2 corner, bool cancel_block) const;
+    // a to its own end, then a straight move to b's start (a tangent run, a nearly tangent corner).
+    static Join straight_join(const motion::Element& a, const motion::Element& b);
     void run(Step& step, const ToolMove& m) {
         if (!m.arc && motion::norm(m.end - tool_) < 1e-9) return;   // a join already reached
         step.moves.push_back(m);

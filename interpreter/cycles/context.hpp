@@ -25,6 +25,7 @@ struct ProfileMove {
     double sweep = 0;                       // arcs: signed radians in the G18 frame (Z, X): > 0 CCW
     std::optional<double> feed;             // F of the block (effective in G70 only, cycles.md §1)
     bool x_word = false, z_word = false;    // the block names X/U, Z/W (G71 type I/II, §2)
+    std::uint32_t block = 0;                // the profile block it comes from (its index in the file)
 };
 
 // What a group-01 single cycle (G90/G92/G94) keeps for the blocks that repeat it: a repeat block
@@ -93,6 +94,7 @@ public:
     // The machine.
     virtual Position position() const = 0;
     virtual bool diameter_x() const = 0;
+    virtual double per_mm() const = 0;                     // program units per mm: 1, or 1/25.4 under G20
     virtual const Settings& settings() const = 0;
     virtual double dwell_seconds(double p) const = 0;      // a P dwell word: ms, or s (ADV400; semantics.md §8.2)
     virtual Parameters& parameters() = 0;                  // persistent across the run (§0)
@@ -122,6 +124,8 @@ public:
     virtual void alarm(int number, std::string text) = 0;
     // [Haas] M23 (true, the default) / M24: a thread cycle chamfers out of the thread (haas_lathe.cpp).
     virtual bool thread_chamfer() const { return true; }
+    // An alarm a profile block causes (a move that breaks monotony): reported at that block.
+    virtual void alarm_at(std::uint32_t block, int number, std::string text) = 0;
 };
 
 // Expands the cycle of the block; false when `ctx.function()` is no cycle this folder knows (the

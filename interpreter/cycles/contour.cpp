@@ -189,7 +189,7 @@ double extreme(const Contour& contour, Coord c, double direction) {
     return direction * best;
 }
 
-bool monotonic(const Contour& contour, Coord c) {
+std::optional<std::size_t> first_reversal(const Contour& contour, Coord c) {
     int direction = 0;   // +1 / −1 once known
     const auto step = [&](double from, double to) {
         const double d = to - from;
@@ -198,20 +198,21 @@ bool monotonic(const Contour& contour, Coord c) {
         if (direction == 0) direction = sign;
         return sign == direction;
     };
-    for (const Seg& s : contour) {
+    for (std::size_t i = 0; i < contour.size(); ++i) {
+        const Seg& s = contour[i];
         if (!s.is_arc()) {
-            if (!step(get(s.a, c), get(s.b, c))) return false;
+            if (!step(get(s.a, c), get(s.b, c))) return i;
             continue;
         }
         // An arc reverses the coordinate where it passes an extreme of the circle inside its sweep.
         double last = get(s.a, c);
         for (int k = 1; k <= 16; ++k) {
             const double now = get(point_at(s, k / 16.0), c);
-            if (!step(last, now)) return false;
+            if (!step(last, now)) return i;
             last = now;
         }
     }
-    return true;
+    return std::nullopt;
 }
 
 }  // namespace kerf::interpreter::cycles

@@ -49,8 +49,8 @@ struct Crossing {
 std::optional<Crossing> first_crossing(const Contour& contour, Coord c, double value);
 // The part of the contour after a crossing.
 Contour after(const Contour& contour, const Crossing& at);
-// Whether coordinate `c` never reverses along the contour (arcs included).
-bool monotonic(const Contour& contour, Coord c);
+// The first segment along which coordinate `c` reverses (arcs included); nullopt when it never does.
+std::optional<std::size_t> first_reversal(const Contour& contour, Coord c);
 // The contour with every segment cut where coordinate `c` passes `value` (arcs up to twice), so
 // each piece lies wholly on one side of the line c = value (G71/G72 type II levels).
 Contour split_at(const Contour& contour, Coord c, double value);

@@ -212,7 +212,12 @@ void update_modal(Context& ctx, const Form& form, DrillModal& m) {
     else if (!ctx.takes('Q') && form.kind == Kind::peck && ctx.has('K'))
         m.peck = *ctx.mm('K') * k;
     if ((form.kind == Kind::fine_bore || form.kind == Kind::back_bore) && ctx.has('Q')) m.shift = *ctx.mm('Q');
-    if (ctx.has('P')) m.dwell_s = dwell_seconds(ctx, ctx.raw('P'));
+    // P dwells only where the code takes it (G82, G89, ...): [FANUC] G81 has no dwell, and a P in
+    // its block is said, not run (a Haas habit: `G81 G99 Z-0.05 P0.5`).
+    if (ctx.has('P') && ctx.takes('P')) m.dwell_s = dwell_seconds(ctx, ctx.raw('P'));
+    else if (ctx.has('P') && !ctx.repeat())
+        ctx.message(fmt::format("{}: P is not a word of this cycle (no dwell at the bottom; {} has none)", ctx.spelling(),
+                                ctx.spelling()));
     if (form.kind == Kind::tap && ctx.takes('Q') && ctx.has('Q')) m.r_dwell_s = dwell_seconds(ctx, ctx.raw('Q'));
 }
 
@@ -268,8 +273,10 @@ bool drilling(Context& ctx) {
     }
     const Settings& s = ctx.settings();
     const double k = axis_scale(ctx, form->axis);
-    Hole h{*form, m.start[form->axis], m.r_level, m.bottom, m.peck, 0, s.high_speed_retract * k, s.peck_clearance * k,
-           m.dwell_s, m.r_dwell_s, m.shift, ctx.return_to_r_level(), s.tapping_reverses, std::nullopt};
+    // The switches are mm (machine/SCHEMA.md); a G20 program moves in inches.
+    const double retract = s.high_speed_retract * ctx.per_mm() * k, clearance = s.peck_clearance * ctx.per_mm() * k;
+    Hole h{*form,    m.start[form->axis], m.r_level,   m.bottom, m.peck, 0, retract, clearance, m.dwell_s, m.r_dwell_s,
+           m.shift, ctx.return_to_r_level(), s.tapping_reverses, std::nullopt};
     h.first_peck_only = !ctx.takes('Q') && s.adv400_k_first_peck_only;
     // The clamp M of the first block holds for the holes of later C-only blocks too (§10 alternative
     // program: "G83 ... M20" then "C90" [inference]; FANUC issues M and M+1 per hole).

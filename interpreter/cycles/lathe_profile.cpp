@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "dialects/alarms.hpp"
 #include "interpreter/cycles/contour.hpp"
 
 namespace kerf::interpreter::cycles {
@@ -223,14 +224,15 @@ void rough(Context& ctx, const Profile& profile, const Rough& r) {
     // Type II: the first block names both axes (`N1000 G0 X60 W0`, cycles.md §2).
     const bool type2 = first.x_word && first.z_word;
     const Contour finish = contour_of(profile, 1, dia);
-    if (!type2 && (!monotonic(finish, Coord::x) || !monotonic(finish, Coord::z))) {
-        ctx.alarm(64, fmt::format("{}: the type I profile must be monotonic in X and Z (cycles.md §2; FANUC alarm 064)",
-                                  ctx.spelling()));
-        return;
-    }
-    if (type2 && !monotonic(finish, other(r.level))) {
-        ctx.alarm(64, fmt::format("{}: the type II profile must be monotonic in {} (cycles.md §2; FANUC alarm 064)",
-                                  ctx.spelling(), r.level == Coord::x ? 'Z' : 'X'));
+    // The alarm stands at the profile block whose move reverses (an integer `Z-8` read as 0.008 is
+    // the usual cause), where the programmer has to look.
+    const auto reversal = [&](Coord c) { return first_reversal(finish, c); };
+    const Coord axis = type2 ? other(r.level) : reversal(Coord::x) ? Coord::x : Coord::z;
+    if (const std::optional<std::size_t> bad = reversal(axis)) {
+        ctx.alarm_at(profile.moves[finish[*bad].move].block, alarms::profile_not_monotonic,
+                     fmt::format("{}: this move reverses {} in the type {} profile, which must be monotonic (cycles.md §2; "
+                                 "FANUC alarm 064)",
+                                 ctx.spelling(), axis == Coord::x ? 'X' : 'Z', type2 ? "II" : "I"));
         return;
     }
     const Pt shift = allowance(ctx);

@@ -5,8 +5,7 @@
 //   - "renumber blocks": the formatter's renumbering (number_start/number_step of .kerf.toml
 //     [format]) with every reference moved, nothing else of the text changed; offered disabled,
 //     with the planner's reason, when it refuses (a computed GOTO ...);
-//   - conversions ("convert this program to G-code system B/C") come with `kerf convert`
-//     (issue 16): conversion_actions() is where they go.
+//   - conversions ("convert this program to FANUC lathe, G-code system B"): features/convert.cpp.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -107,9 +106,6 @@ void renumber_small(const Snapshot& s, json::array& out) {
     out.push_back(json::object{{"title", title}, {"kind", "refactor.rewrite"}, {"edit", json::object{{"changes", json::object{{doc.uri(), std::move(edits)}}}}}});
 }
 
-// Conversions between G-code systems and controllers arrive with the converter (issue 16).
-void conversion_actions(const Snapshot&, json::array&) {}
-
 bool wanted(const json::value& context, std::string_view kind) {
     const json::value* only = find_path(context, {"only"});
     if (!only || !only->is_array()) return true;
@@ -125,6 +121,8 @@ json::value resolve_code_action(const Snapshot& s, json::object action) {
     const json::value* version = find_path(action, {"data", "version"});
     if (!version || !version->is_int64() || version->as_int64() != doc.version())
         throw RpcError(error_code::content_modified, "the document changed since the action was offered");
+    const json::value* what = find_path(action, {"data", "kerf"});
+    if (what && what->is_string() && what->as_string() == "convert") return resolve_conversion(s, std::move(action));
     json::array list;
     renumber_small(s, list);
     if (list.empty()) throw RpcError(error_code::request_failed, "nothing to renumber");
@@ -145,7 +143,7 @@ json::value code_actions(const Snapshot& s, std::pair<ast::Position, ast::Positi
     for (json::value& f : fixes)
         if (wanted(context, std::string(f.as_object().at("kind").as_string()))) out.push_back(std::move(f));
     if (wanted(context, "refactor.rewrite")) renumber(s, out);
-    conversion_actions(s, out);
+    if (wanted(context, "source.convert.kerf")) conversion_actions(s, out);
     return out;
 }
 

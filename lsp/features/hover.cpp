@@ -6,7 +6,8 @@
 //                there), notes and the reference section
 //   address word its meaning in this block (U in a G71 first block vs a motion block: words.hpp),
 //                and the value in mm and in increments when it has no decimal point
-//   #variable    its kind (local, common, system and what that system number means)
+//   #variable    its kind (local, common, system and what that system number means), and its
+//                value after the block in the dry run
 //   M98 P/G65 P  the called program's first comment and file; a jump: the block it lands on
 //   diagnostics  the rule's explanation (what, why) for each finding under the cursor
 //   dry run      position, modal codes, F, S, T after the block, the first time it ran
@@ -14,7 +15,9 @@
 // The structured `kerf explain` of the dialects helper replaces code_text() once it is on main.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "analyzer/registry.hpp"
 #include "lsp/features/common.hpp"
@@ -82,10 +85,16 @@ const dialects::CodeInfo* code_of(const Document& doc, const ast::Token& t) {
     return key ? doc.dialect().code(t.letter, *key) : nullptr;
 }
 
-// The innermost `#n` around `offset`, with its range.
-std::optional<std::pair<std::int64_t, ast::Range>> variable_at(const ast::SyntaxTree& tree, std::uint32_t offset) {
+// The innermost `#n` around `offset`, with its range: among the expression nodes of the block there
+// (the tree keeps them in text order from block to block).
+std::optional<std::pair<std::int64_t, ast::Range>> variable_at(const Document& doc, std::uint32_t offset) {
+    const ast::SyntaxTree& tree = doc.tree();
+    if (tree.block_count() == 0) return std::nullopt;
+    const ast::Range block = tree.block_range(doc.block_at(offset));
+    const auto first = std::partition_point(tree.exprs.begin(), tree.exprs.end(), [&](const ast::Expr& e) { return e.begin < block.begin; });
+    const auto last = std::partition_point(first, tree.exprs.end(), [&](const ast::Expr& e) { return e.begin < block.end; });
     std::optional<std::pair<std::int64_t, ast::Range>> best;
-    for (const ast::Expr& e : tree.exprs) {
+    for (const ast::Expr& e : std::span<const ast::Expr>(first, last)) {
         if (e.kind != ast::ExprKind::variable || e.a < 0 || !(e.range().contains(offset) || e.end == offset)) continue;
         const ast::Expr& n = tree.exprs[static_cast<std::size_t>(e.a)];
         if (n.kind != ast::ExprKind::number) continue;
@@ -119,6 +128,18 @@ std::string reference_text(const Snapshot& s, const references::Reference& r, bo
     if (r.kind == references::Kind::subprogram && r.repeats > 1) out += fmt::format(fmt::runtime(ru ? " · {} раз" : " · {} times"), r.repeats);
     out += fmt::format("\n\n{}: `{}`", ru ? "Файл" : "File", t->doc->path() == s.doc->path() ? (ru ? "этот файл" : "this file") : t->doc->path().string());
     return out;
+}
+
+// The variable's value after its block in the dry run, the first time the block ran.
+std::string variable_value(const Snapshot& s, std::uint32_t block, ast::Range range, bool ru) {
+    const DryRun* run = s.run();
+    const std::vector<MacroValue>* values = run ? run->values(block) : nullptr;
+    if (!values) return {};
+    for (const MacroValue& v : *values)
+        if (v.variable >= 0 && v.range == range)
+            return fmt::format(fmt::runtime(ru ? "Значение после этого кадра в пробном прогоне: **{}**" : "Value after this block in the dry run: **{}**"),
+                               v.vacant ? (ru ? "пусто (vacant)" : "vacant") : number_text(v.value));
+    return {};
 }
 
 std::string state_text(const Snapshot& s, std::uint32_t block, bool ru) {
@@ -158,8 +179,9 @@ json::value hover(const Snapshot& s, ast::Position at) {
     std::vector<std::string> parts;
     std::optional<ast::Range> range;
     const auto token = doc.token_at(offset);
-    if (const auto v = variable_at(doc.tree(), offset)) {
+    if (const auto v = variable_at(doc, offset)) {
         parts.push_back(fmt::format("**#{}** — {}", v->first, variable_kind(v->first, doc.settings().language)));
+        if (std::string value = variable_value(s, doc.block_at(offset), v->second, ru); !value.empty()) parts.push_back(std::move(value));
         range = v->second;
     } else if (token) {
         const ast::Token& t = doc.tree().tokens[*token];

@@ -3,10 +3,9 @@
 //   - the absolute end point of a block that moves incrementally (U/W in system A, or any axis word
 //     under the incremental-programming code, G91): "→ X40 Z-12.5";
 //   - a block that cuts in several moves (a canned cycle, a direct-drawing corner; not a dog-leg
-//     rapid): its feed moves, rapids and time: "⟳ 14 feed · 9 rapid · 0:42 min".
-//
-// Values of macro expressions at a block need the interpreter's structured state event (NOTICES.md,
-// `flow`); until then there are none.
+//     rapid): its feed moves, rapids and time: "⟳ 14 feed · 9 rapid · 0:42 min";
+//   - the value of a macro expression the first time its block ran: after a word's expression
+//     (X[#1+2.] "= 7") and after an assignment (#2=#1*2 "= 10").
 #include <fmt/format.h>
 
 #include "dialects/functions.hpp"
@@ -40,6 +39,25 @@ bool incremental(const Document& doc, const ast::BlockView& view, const DryRun& 
     return false;
 }
 
+std::string value_text(const MacroValue& v, bool ru) { return v.vacant ? (ru ? "= пусто" : "= vacant") : "= " + number_text(v.value); }
+
+// The values of a block's expression words and assignments (DryRun::macro_values).
+void macro_hints(const Document& doc, const ast::BlockView& view, const std::vector<MacroValue>& values, bool ru, json::array& out) {
+    const ast::SyntaxTree& tree = doc.tree();
+    for (const MacroValue& v : values)
+        if (v.variable < 0)
+            out.push_back(hint(doc, v.range.end, value_text(v, ru), ru ? "значение выражения в пробном прогоне" : "the expression's value in the dry run"));
+    for (const std::uint32_t s : view.statements()) {
+        const ast::Statement& st = tree.statements[tree.tokens[s].payload];
+        if (st.kind != ast::StatementKind::assign || st.target < 0) continue;
+        const ast::Range target = tree.exprs[static_cast<std::size_t>(st.target)].range();
+        for (const MacroValue& v : values)
+            if (v.variable >= 0 && v.range == target)
+                out.push_back(hint(doc, st.range.end, value_text(v, ru),
+                                   fmt::format(fmt::runtime(ru ? "#{} после этого кадра в пробном прогоне" : "#{} after this block in the dry run"), v.variable)));
+    }
+}
+
 }  // namespace
 
 json::value inlay_hints(const Snapshot& s, std::pair<ast::Position, ast::Position> range) {
@@ -68,6 +86,7 @@ json::value inlay_hints(const Snapshot& s, std::pair<ast::Position, ast::Positio
                                ru ? fmt::format("конечная точка в абсолютных координатах заготовки{}", lex.is_diameter('X') ? " (X на диаметр)" : "")
                                   : fmt::format("end point in absolute work coordinates{}", lex.is_diameter('X') ? " (X as diameter)" : "")));
         }
+        if (const std::vector<MacroValue>* values = run->values(b)) macro_hints(doc, view, *values, ru, out);
         // A block that cuts in several moves (a cycle, a corner): not a dog-leg rapid or a G28.
         if (const auto m = run->motion.find(b); m != run->motion.end() && (m->second.feeds >= 2 || (m->second.feeds >= 1 && m->second.rapids >= 2))) {
             const BlockMotion& mm = m->second;

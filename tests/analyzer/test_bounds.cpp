@@ -56,8 +56,9 @@ TEST_CASE("analyzer bounds: suppressed findings do not count against the cap") {
 }
 
 TEST_CASE("analyzer bounds: a dynamic rule in an endless loop reports its block once") {
-    // No tool (K5008) on the feed move of a main program that loops with M99 until the step limit.
-    const Checked c = check("O1000\nG01 X1. F100.\nM99\n", "fanuc-mill", analyzer::CheckOptions{});
+    // No tool (K5008) on the feed move of a program that loops with GOTO until the step limit (an
+    // M99 at its end would be a bar-feed loop, which the dry run runs once).
+    const Checked c = check("O1000\nN1 G01 X1. F100.\nGOTO 1\n", "fanuc-mill", analyzer::CheckOptions{});
     CHECK(count_rule(c, "K5008", ast::Severity::warning) == 1);
     CHECK(count_rule(c, "K4004", ast::Severity::error) == 1);
 }

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <random>
+#include <string>
+
 #include "ast/source.hpp"
 
 using kerf::ast::LineIndex;
@@ -44,4 +47,32 @@ TEST_CASE("line index: ASCII lines and lines with multi-byte characters agree wi
     }
     CHECK(lines.offset_of_utf16({0, 3}) == 3);
     CHECK(lines.offset_of_utf16({0, 99}) == 6);   // clamped to the line end (after '\n')
+}
+
+TEST_CASE("line index: an edit moves the lines after it and reads the edited ones again, as a new index would") {
+    // Random edits of a text of '\n', '\r', "\r\n" line ends and multi-byte characters, each
+    // compared position by position with an index built from the edited text.
+    std::mt19937 rng(7);
+    const char* pieces[] = {"\n", "\r", "\r\n", "G0 X1", "Ф", "𝄞", "", "ab\rcd\n", "\n\n"};
+    std::string text = "O1\r\nG0 X1\rG1 Ф Y2\n\nM30\r\n";
+    kerf::ast::LineIndex index(text);
+    for (int i = 0; i < 2000; ++i) {
+        const auto size = static_cast<std::uint32_t>(text.size());
+        const std::uint32_t begin = size ? static_cast<std::uint32_t>(rng() % (size + 1)) : 0;
+        const std::uint32_t end = std::min<std::uint32_t>(size, begin + static_cast<std::uint32_t>(rng() % 4));
+        const std::string insert = pieces[rng() % std::size(pieces)];
+        text.replace(begin, end - begin, insert);
+        if (text.size() > 400) text.resize(200);   // keep it short (a cut is a whole new index)
+        INFO("edit " << i << " [" << begin << "," << end << ") '" << insert << "'");
+        if (text.size() == 200) index = kerf::ast::LineIndex(text);
+        else index.edit(text, begin, end, static_cast<std::uint32_t>(begin + insert.size()));
+        const kerf::ast::LineIndex fresh(text);
+        REQUIRE(index.line_count() == fresh.line_count());
+        for (std::uint32_t line = 0; line < fresh.line_count(); ++line) REQUIRE(index.line_start(line) == fresh.line_start(line));
+        for (std::uint32_t at = 0; at <= text.size(); ++at) {
+            const kerf::ast::Position a = index.utf16(at), b = fresh.utf16(at);
+            REQUIRE((a.line == b.line && a.column == b.column));
+            REQUIRE(index.offset_of_utf16(fresh.utf16(at)) == fresh.offset_of_utf16(fresh.utf16(at)));
+        }
+    }
 }

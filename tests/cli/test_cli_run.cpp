@@ -61,7 +61,7 @@ TEST_CASE("kerf run --trace writes one JSON object per event; --state adds the m
             CHECK(e.at("center").at("X").to_number<double>() == Approx(50));   // diameter, like end
             CHECK(e.at("center").at("Z").to_number<double>() == Approx(-20));
             CHECK(e.at("radius").to_number<double>() == Approx(5));
-            CHECK(e.at("machine").at("Z").to_number<double>() == Approx(75));   // -25 + 100
+            CHECK(e.at("machine").at("Z").to_number<double>() == Approx(-475));   // -25 + 100 (G10 P0) - 550 (G54)
         }
     }
     CHECK(arcs == 1);

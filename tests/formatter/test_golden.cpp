@@ -14,22 +14,6 @@
 namespace fs = std::filesystem;
 using namespace kerf;
 
-namespace {
-
-// `key = "value"` / `key = true` of the [golden] table, read by line (the style goes through the
-// formatter's own TOML reader).
-std::string golden_value(const std::string& toml, const std::string& key) {
-    const std::string prefix = key + " = ";
-    for (const std::string& line : test::split_lines(toml)) {
-        if (line.rfind(prefix, 0) != 0) continue;
-        std::string v = line.substr(prefix.size());
-        if (!v.empty() && v.front() == '"') v = v.substr(1, v.size() - 2);
-        return v;
-    }
-    return {};
-}
-
-}  // namespace
 
 TEST_CASE("golden format pairs: each style option and block-number mode") {
     const fs::path dir = fs::path(KERF_SOURCE_DIR) / "tests" / "golden" / "format";
@@ -43,8 +27,8 @@ TEST_CASE("golden format pairs: each style option and block-number mode") {
         REQUIRE_FALSE(toml.empty());
         const formatter::StyleResult style = formatter::style_from_toml(toml, name + ".toml");
         REQUIRE(style.errors.empty());
-        const dialects::Dialect& d = test::fmt_dialect(golden_value(toml, "dialect"));
-        const std::string calc = golden_value(toml, "calculator_decimal");
+        const dialects::Dialect& d = test::fmt_dialect(test::golden_value(toml, "dialect"));
+        const std::string calc = test::golden_value(toml, "calculator_decimal");
         const std::optional<bool> calculator = calc.empty() ? std::nullopt : std::optional<bool>(calc == "true");
         const std::string text = test::read_text(input);
         const std::string expected = test::read_text(fs::path(input).replace_extension(".expected"));

@@ -111,6 +111,22 @@ TEST_CASE("code before the O line is a program without number") {
     CHECK(typed.programs()[1].number == 1000);
 }
 
+// issue 12: `M99O0810` (DNC files run programs together): the O word after the block's first word
+// starts the next program on the same line; the M99 block ends before it.
+TEST_CASE("an O word after other words starts the next program on the same line") {
+    auto p = parse("O0800\nG0 X1.\nM99O0810\nG0 X2.\nM99\n", "fanuc-mill");
+    REQUIRE(p.tree.blocks.size() == 6);
+    CHECK(p.tree.blocks[2].kind == ast::BlockKind::code);
+    CHECK(p.tree.blocks[3].kind == ast::BlockKind::program_start);
+    CHECK(p.tree.blocks[3].begin == std::string("O0800\nG0 X1.\nM99").size());
+    const auto typed = ast::TypedFile::bind(p.tree, *p.dialect);
+    REQUIRE(typed.programs().size() == 2);
+    CHECK(typed.programs()[1].number == 810);
+    // A leading O (an O line, `%O0003(` of DNM-5700) stays one program_start block.
+    const auto leading = parse("%O0003( 300-11 MILL FIXTURE)\nG0 X1.\n", "fanuc-mill");
+    CHECK(leading.tree.blocks.size() == 2);
+}
+
 TEST_CASE("text after the closing percent is a tail the control ignores") {
     const auto p = parse("%\nO1\nM30\n%\nanything (at all\n");
     CHECK(p.tree.blocks.back().kind == ast::BlockKind::tail);

@@ -125,7 +125,8 @@ TEST_CASE("G71 under G42 roughs programmed points, returns X then Z, and G70 sta
     CHECK(x_back.end[Z] == Approx(-88).margin(0.001));
     CHECK(rough.back().end[X] == Approx(105).margin(0.001));
     CHECK(rough.back().end[Z] == Approx(1).margin(0.001));
-    const Run at_a = run_bare("O1\nT0101\nG0 X105. Z1.\nG42\nG70 P100 Q140\nM30\n" + profile, "fanuc-lathe-a", setup);
+    // F0.3 as the G71 gave it in `r` (G70 runs at the F in force: without one, alarm 011).
+    const Run at_a = run_bare("O1\nT0101 F0.3\nG0 X105. Z1.\nG42\nG70 P100 Q140\nM30\n" + profile, "fanuc-lathe-a", setup);
     require_clean(at_a);
     const auto want = moves_on_line(at_a, 5);
     const auto got = moves_on_line(r, 12);

@@ -70,14 +70,15 @@ TEST_CASE("G45-G48: example 5 of seed 004 gives the tool centres of semantics.md
     CHECK(m[9].radius == Approx(30));
 }
 
-// One block only: the block after G45 moves as programmed, from the programmed point (G90).
-TEST_CASE("G45-G48 act in their block only; G90 targets are measured from the programmed point") {
+// One block only (semantics.md §9.3): the block after G45 moves as programmed from where the tool
+// stands: an axis it does not name stays (issue 12: it used to return to the programmed point).
+TEST_CASE("G45-G48 act in their block only; the next block moves only the axes it names") {
     const Run r = run_bare("O1\nG90 G1 X0. Y0. F100.\nG45 X20. D08\nY10.\nG47 X30.\nM30\n", "iso-legacy-mill",
                            example_registers);
     require_clean(r);
     const std::vector<Event> m = moves(r);
     REQUIRE(m.size() == 4);
     check_end(m[1], 30, 0);    // +20 increased by D08 = 10
-    check_end(m[2], 20, 10);   // no offset: the programmed point X20 Y10
-    check_end(m[3], 50, 10);   // G90 X30 from the programmed X20: +10, increased by 2·10 = +30 from X20
+    check_end(m[2], 30, 10);   // no offset: Y10, X stays where the tool is
+    check_end(m[3], 50, 10);   // G90 X30 from the tool's X30: a zero move, which G47 makes +2·10 = +20
 }

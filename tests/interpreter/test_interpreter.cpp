@@ -73,11 +73,11 @@ TEST_CASE("M99 P returns to a sequence number of the caller") {
 
 TEST_CASE("G10 P0 work shift: X/Z replace, U/W add (semantics.md §2.6 example)") {
     // O0001 of seed 001 §7.8: G10 P0 Z-130, then O0002 three times, each adding W10: the register
-    // ends at -100. machine = work + offset with offset = -shift (work offsets 0), so machine Z0
-    // (G53 Z0) is work Z = 0 - 100 = -100.
+    // ends at -100. machine = work + G54 - shift; on the built-in lathe G54 Z is -550 (the chuck
+    // face, machine zero at home), so machine Z0 (G53 Z0, home) is work Z = 0 + 550 - 100 = 450.
     const Run r = run("O1\nG10 P0 Z-130\nM98 P30002\nG53 Z0\nM30\nO2\nG10 P0 W10\nM99\n", "spinner-lathe-a");
     CHECK(r.result.alarms.empty());
-    CHECK(r.result.final_position[Z] == Approx(-100));
+    CHECK(r.result.final_position[Z] == Approx(450));
 }
 
 TEST_CASE("arcs: G02 with R on a lathe (G18), full geometry through the motion kernel") {
@@ -156,9 +156,10 @@ TEST_CASE("dwell: X and U in seconds, P in milliseconds") {
 
 TEST_CASE("seed 001 §7.8 O0001/O0002: three facing cuts 10 mm apart, as semantics.md §2.6 computes") {
     // The reference: shift -130, -120, -110 → the cut at program Z-10 is 120, 110, 100 mm in front
-    // of the chuck face (machine Z with the built-in lathe's zero work offset); afterwards the shift
-    // is -100 and G0 X150 Z150 is relative to it (machine Z 250). `50 G1 X-2` lacks its N (a seed
-    // defect): the lenient run executes it without the bare number.
+    // of the chuck face, which is machine Z-550 on the built-in lathe (G54; machine zero at home):
+    // machine Z -430, -440, -450; afterwards the shift is -100 and G0 X150 Z150 is relative to it
+    // (250 in front of the chuck face: machine Z -300). `50 G1 X-2` lacks its N (a seed defect): the
+    // lenient run executes it without the bare number.
     const std::filesystem::path file =
         std::filesystem::path(KERF_SHARED_DIR) / "reference/examples/001_O0001_O0002_M98_P30002.nc";
     if (!std::filesystem::exists(file)) {
@@ -179,12 +180,13 @@ TEST_CASE("seed 001 §7.8 O0001/O0002: three facing cuts 10 mm apart, as semanti
     for (const auto& e : sink.events)
         if (e.kind == EventKind::linear) cut_z.push_back(e.machine_end[Z]);
     REQUIRE(cut_z.size() == 3);
-    CHECK(cut_z[0] == Approx(120));
-    CHECK(cut_z[1] == Approx(110));
-    CHECK(cut_z[2] == Approx(100));
+    constexpr double kChuckFace = -550;   // machine Z of G54 Z0 on the built-in lathe
+    CHECK(cut_z[0] == Approx(kChuckFace + 120));
+    CHECK(cut_z[1] == Approx(kChuckFace + 110));
+    CHECK(cut_z[2] == Approx(kChuckFace + 100));
     CHECK(r.final_position[X] == Approx(150));
     CHECK(r.final_position[Z] == Approx(150));
-    CHECK(sink.events.back().machine_end[Z] == Approx(250));
+    CHECK(sink.events.back().machine_end[Z] == Approx(kChuckFace + 250));
     CHECK(r.completed);
 }
 

@@ -210,9 +210,9 @@ TEST_CASE("seed 004 G43/G44 with H: the axial length offset on Z") {
 
 // Machine switch iso_g43 = "length-offset" (semantics.md §12.9, machine/SCHEMA.md): G43 is the
 // axial offset even without H, so example 6's approach `G0 G43 X140. Y35. D08` is not shortened
-// (X140, not X130) and the modal H (H3 = 39 from line 2) shifts machine Z.
+// (X140, not X130) and the modal H (H3 = 39 from line 2) shifts machine Z from the next Z move.
 TEST_CASE("seed 004 G43 with the length-offset switch: no approach shortening, the modal H on Z") {
-    const Run r = run_bare("O1\nG90 G17 G0 X75. Y35. Z10. H3\nG0 G43 X140. Y35. D08\nM30\n", "iso-legacy-mill",
+    const Run r = run_bare("O1\nG90 G17 G0 X75. Y35. Z10. H3\nG0 G43 X140. Y35. D08\nZ10.\nM30\n", "iso-legacy-mill",
                            [](Setup& s) {
                                s.tools[3].length = 39;
                                s.tools[8].radius = 10;
@@ -220,9 +220,10 @@ TEST_CASE("seed 004 G43 with the length-offset switch: no approach shortening, t
                            });
     require_clean(r);
     const auto m = moves(r);
-    REQUIRE(m.size() == 2);
+    REQUIRE(m.size() == 3);
     CHECK(m[1].end[X] == Approx(140));
-    CHECK(m[1].machine_end[Z] == Approx(49));
+    CHECK(m[1].machine_end[Z] == Approx(10));   // no Z in the G43 block: not taken up yet
+    CHECK(m[2].machine_end[Z] == Approx(49));   // Z10. takes H3 = 39 up
     CHECK(count(r, EventKind::message) == 0);
 }
 

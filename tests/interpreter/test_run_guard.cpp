@@ -44,20 +44,23 @@ TEST_CASE("run guard: the move limit stops a cycle block that expands without en
 }
 
 TEST_CASE("run guard: the step limit still counts blocks, the move limit moves", "[run_guard]") {
+    // A bar-feed loop asked to run a million passes (RunOptions::passes): the bounds end it.
     const std::string text = "O1\nG91 G01 X1. F100.\nM99\n";
-    const Run steps = run_bare(text, "fanuc-mill", [](Setup& s) {
-        s.step_limit = 90;
-        s.move_limit = 1000;
-    });
+    interpreter::RunOptions many;
+    many.passes = 1'000'000;
+    const auto run_limited = [&](std::uint64_t step_limit, std::uint64_t move_limit) {
+        Setup s = bare_setup(dialect("fanuc-mill"));
+        s.step_limit = step_limit;
+        s.move_limit = move_limit;
+        return run_with(text, dialect("fanuc-mill"), s, many);
+    };
+    const Run steps = run_limited(90, 1000);
     REQUIRE(steps.result.alarms.size() == 1);
     CHECK(steps.result.alarms[0].code == ka::step_limit);
     CHECK(steps.result.alarms[0].text == "step limit of 90 blocks reached: endless loop?");
     // Blocks: O1, G91 G01, M99 per turn: the 91st block is the alarm's, the 30th turn's move ran.
     CHECK(motion_events(steps.events) == 30);
-    const Run moves = run_bare(text, "fanuc-mill", [](Setup& s) {
-        s.step_limit = 1000;
-        s.move_limit = 20;
-    });
+    const Run moves = run_limited(1000, 20);
     REQUIRE(moves.result.alarms.size() == 1);
     CHECK(moves.result.alarms[0].code == ka::move_limit);
     CHECK(motion_events(moves.events) == 20);

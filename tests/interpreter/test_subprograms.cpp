@@ -167,11 +167,18 @@ TEST_CASE("M99 P in a main program jumps to that sequence number", "[subprograms
     CHECK(m[1].end[X] == Approx(1));
 }
 
-// M99 at the end of a main program goes back to its start forever (dialects.md §3.6); the step
-// limit ends it. Step limit 90; one pass executes three blocks (O1, G91 G0 X1., M99), so 90 blocks
-// are 30 passes: 30 moves of +1 (X = 30) and 30 returns; the 91st block raises the alarm.
-TEST_CASE("M99 at the end of a main program loops until the step limit", "[subprograms]") {
-    const Run r = run("O1\nG91 G0 X1.\nM99\n", "fanuc-mill", [](Setup& s) { s.step_limit = 90; });
+// M99 at the end of a main program goes back to its start (dialects.md §3.6): the control loops
+// forever (a bar feeder). Asked for a million passes (RunOptions::passes; by default the dry run
+// stops after one, tests/interpreter/test_shop_programs.cpp), the step limit ends it. Step limit
+// 90; one pass executes three blocks (O1, G91 G0 X1., M99), so 90 blocks are 30 passes: 30 moves
+// of +1 (X = 30) and 30 returns; the 91st block raises the alarm.
+TEST_CASE("M99 at the end of a main program loops until the step limit when asked to", "[subprograms]") {
+    const dialects::Dialect& d = dialect("fanuc-mill");
+    Setup setup = plain_setup(d);
+    setup.step_limit = 90;
+    interpreter::RunOptions many;
+    many.passes = 1'000'000;
+    const Run r = run_with("O1\nG91 G0 X1.\nM99\n", d, setup, many);
     INFO(alarm_list(r));
     REQUIRE(r.result.alarms.size() == 1);
     CHECK(r.result.alarms[0].text.find("step limit") != std::string::npos);

@@ -116,6 +116,9 @@ TEST_CASE("hover shows the dry-run state at the block and the diagnostics under 
     // N30 G01 without any F: K5001 feed-move-without-feed, with the rule's documentation.
     const std::string on_move = s.hover("file:///w/b.nc", 3, 5);
     CHECK(has(on_move, "**K5001** feed-move-without-feed (error)"));
+    // ...and the rule's explanation, as `kerf explain K5001` gives it (analyzer/rules/motion.cpp).
+    CHECK(has(on_move, "A G01/G02/G03 move runs with no feed rate."));
+    CHECK(has(on_move, "*semantics.md §4*"));
 }
 
 TEST_CASE("completion: codes after G and M, cycle snippets in the dialect's own G-code system") {
@@ -315,4 +318,112 @@ TEST_CASE("features see each incremental edit at once") {
     const json::value d = s.client.result("textDocument/definition", test::at("file:///w/i.nc", 7, 9));
     CHECK(span(d.at("range")) == "8:0-8:3");
     s.client.diagnostics("file:///w/i.nc", 2);   // the new version is analysed
+}
+
+TEST_CASE("hover on a variable: its value after the block in the dry run; a system variable's meaning") {
+    Session s("fanuc-mill");
+    const std::string text =
+        "O0001\n"                      // 0
+        "#1=5.\n"                      // 1
+        "#2=#1*2\n"                    // 2   #2 0-2, #1 3-5
+        "G01 X[#1+2.] Z-#2 F#1\n"      // 3
+        "#3=#5+#3001\n"                // 4   #5 3-5 (never set), #3001 6-11
+        "M30\n";                       // 5
+    s.client.open("file:///w/v.nc", text);
+    s.client.diagnostics("file:///w/v.nc", 1);   // the dry run of version 1 is done
+    const std::string two = s.hover("file:///w/v.nc", 2, 1);
+    CHECK(has(two, "**#2** — local variable (#1–#33)"));
+    CHECK(has(two, "Value after this block in the dry run: **10**"));   // #1 * 2 with #1 = 5
+    CHECK(has(s.hover("file:///w/v.nc", 2, 4), "Value after this block in the dry run: **5**"));
+    CHECK(has(s.hover("file:///w/v.nc", 4, 4), "Value after this block in the dry run: **vacant**"));
+    const std::string clock = s.hover("file:///w/v.nc", 4, 8);
+    CHECK(has(clock, "**#3001** — system variable (#3001): clock 1 in ms (the dry-run time)"));   // lsp/features/variables.cpp
+}
+
+TEST_CASE("hover on a call: the called program's first comment and its file; the repeat count") {
+    test::TempFolder folder;
+    folder.write(".kerf.toml", "dialect = \"fanuc-lathe-a\"\n");
+    folder.write("sub.nc", "O2000 (SUB IN OTHER FILE)\nM99\n");
+    LspClient c;
+    c.initialize({}, folder.path());
+    c.log_containing("kerf lsp: indexed");
+    c.open(folder.uri("main.nc"), "O1000\nM98 P31234\nM98 P2000\nM30\nO1234 (GROOVE SUB)\nM99\n");
+    const auto hover = [&](std::uint32_t line, std::uint32_t col) {
+        return str(c.result("textDocument/hover", test::at(folder.uri("main.nc"), line, col)).at("contents").at("value"));
+    };
+    const std::string packed = hover(1, 6);   // P31234: three times O1234 (dialects.md §3.6)
+    CHECK(has(packed, "**O1234** — GROOVE SUB · 3 times"));
+    CHECK(has(packed, "File: `this file`"));
+    const std::string other = hover(2, 6);
+    CHECK(has(other, "**O2000** — SUB IN OTHER FILE"));
+    CHECK(has(other, "File: `" + (folder.path() / "sub.nc").string() + "`"));
+}
+
+TEST_CASE("completion: programs after G65 P, the caller's labels after M99 P, labels after G70 Q, G76 snippets per system") {
+    Session s;
+    const std::string text =
+        "O1000\n"               // 0
+        "N10 G00 X1.\n"         // 1
+        "N20 G65 P\n"           // 2   P at 8, cursor 9
+        "N30 G70 P10 Q\n"       // 3   Q at 12, cursor 13
+        "N40 M98 P2000\n"       // 4
+        "M30\n"                 // 5
+        "O2000 (TWO)\n"         // 6
+        "N5 G01 X2.\n"          // 7
+        "M99 P\n";              // 8   P at 4, cursor 5
+    s.client.open("file:///w/c.nc", text);
+    const json::value programs = s.client.result("textDocument/completion", completion_at("file:///w/c.nc", 2, 9));
+    CHECK(labels(programs) == std::vector<std::string>{"P1000", "P2000"});
+    CHECK(span(item(programs, "P2000")->at("textEdit").at("range")) == "2:8-2:9");
+    // G70 Q: the labels of this program, the nearest first.
+    const json::value q = s.client.result("textDocument/completion", completion_at("file:///w/c.nc", 3, 13));
+    CHECK(labels(q) == std::vector<std::string>{"Q30", "Q20", "Q40", "Q10"});
+    CHECK(span(item(q, "Q30")->at("textEdit").at("range")) == "3:12-3:13");
+    // M99 P in O2000 returns into its caller O1000 (M98 P2000 at N40): the caller's labels.
+    const json::value back = s.client.result("textDocument/completion", completion_at("file:///w/c.nc", 8, 5));
+    CHECK(labels(back) == std::vector<std::string>{"P40", "P30", "P20", "P10"});
+    SECTION("system A: G76 two blocks") {
+        s.client.open("file:///w/t.nc", "O1\nG7\nM30\n");
+        const json::value r = s.client.result("textDocument/completion", completion_at("file:///w/t.nc", 1, 2));
+        const json::object* g76 = item(r, "G76 …");
+        REQUIRE(g76 != nullptr);
+        CHECK(str(g76->at("textEdit").at("newText")) ==
+              "G76 P${1:02}${2:00}${3:60} Q${4:min_depth} R${5:finish_allowance}\n"
+              "G76 X${6:root_diameter} Z${7:end_z} R${8:0} P${9:height} Q${10:first_depth} F${11:lead}");
+    }
+    SECTION("system C: the same cycle is G78") {
+        Session c("fanuc-lathe-c");
+        c.client.open("file:///w/t.nc", "O1\nG7\nM30\n");
+        const json::value r = c.client.result("textDocument/completion", completion_at("file:///w/t.nc", 1, 2));
+        REQUIRE(item(r, "G78 …") != nullptr);
+        CHECK(str(item(r, "G78 …")->at("textEdit").at("newText")).starts_with("G78 P${1:02}${2:00}${3:60} Q"));
+        REQUIRE(item(r, "G76 …") != nullptr);   // G76 is face peck drilling in system C (gcode-tables.md §1)
+        CHECK(str(item(r, "G76 …")->at("detail")) == "G76: face peck drilling / grooving, two blocks (cycles.md §5)");
+    }
+}
+
+TEST_CASE("semantic tokens: spindle words, common and system variables, macro keywords, operators and functions") {
+    Session s("fanuc-mill");
+    s.client.open("file:///w/k.nc", "O2\nN5 S1200 M03\nWHILE [#100 LT #5001] DO 1\n#100=SQRT[#100]+1\nEND 1\nM99\n");
+    const json::array& types = s.init.at("capabilities").at("semanticTokensProvider").at("legend").at("tokenTypes").as_array();
+    const json::array& modifiers = s.init.at("capabilities").at("semanticTokensProvider").at("legend").at("tokenModifiers").as_array();
+    const json::array data = s.client.result("textDocument/semanticTokens/full", test::doc("file:///w/k.nc")).at("data").as_array();
+    std::vector<std::string> got;
+    std::uint32_t line = 0, col = 0;
+    for (std::size_t i = 0; i + 4 < data.size(); i += 5) {
+        const auto dl = static_cast<std::uint32_t>(data[i].as_int64());
+        col = dl ? static_cast<std::uint32_t>(data[i + 1].as_int64()) : col + static_cast<std::uint32_t>(data[i + 1].as_int64());
+        line += dl;
+        std::string mods;
+        for (std::size_t b = 0; b < modifiers.size(); ++b)
+            if (static_cast<std::uint32_t>(data[i + 4].as_int64()) >> b & 1u) mods += "+" + str(modifiers[b]);
+        got.push_back(std::to_string(line) + ":" + std::to_string(col) + "/" + std::to_string(data[i + 2].as_int64()) + " " +
+                      str(types[static_cast<std::size_t>(data[i + 3].as_int64())]) + mods);
+    }
+    // Columns read off the text: "WHILE [#100 LT #5001] DO 1" has WHILE 0-4, #100 7-10, LT 12-13,
+    // #5001 15-19, DO 22-23, 1 at 25; "#100=SQRT[#100]+1" has #100 0-3, SQRT 5-8, #100 10-13, 1 at 16.
+    CHECK(got == std::vector<std::string>{"0:0/2 program", "1:0/2 label", "1:3/5 spindle", "1:9/3 mcode", "2:0/5 keyword",
+                                          "2:7/4 variable+common", "2:12/2 operator", "2:15/5 variable+system", "2:22/2 keyword",
+                                          "2:25/1 number", "3:0/4 variable+common", "3:5/4 function", "3:10/4 variable+common",
+                                          "3:16/1 number", "4:0/3 keyword", "4:4/1 number", "5:0/3 mcode"});
 }

@@ -227,3 +227,40 @@ TEST_CASE("document symbols: programs with their labels and tool changes; worksp
     REQUIRE(by_number.as_array().size() == 1);
     CHECK(str(by_number.as_array()[0].at("containerName")) == "PECK MACRO");
 }
+
+TEST_CASE("definition and references of the other call forms: M98 P L, G66 P, GOTO; workspace symbols of labels") {
+    test::TempFolder folder;
+    folder.write(".kerf.toml", "dialect = \"fanuc-lathe-a\"\n");
+    folder.write("O9010.nc", "O9010 (MODAL MACRO)\nG01 W-1.\nM99\n");
+    const std::string text =
+        "O1000 (MAIN)\n"              // 0
+        "N10 M98 P1234 L3\n"          // 1   "1234" 9-13
+        "N20 G66 P9010 A1.\n"         // 2   "9010" 9-13
+        "N30 G00 X10.\n"              // 3
+        "N40 G67\n"                   // 4
+        "N50 GOTO 100\n"              // 5   "100" 9-12
+        "N100 M30\n"                  // 6
+        "O1234 (GROOVE)\n"            // 7
+        "G01 U-1. F0.1\n"             // 8
+        "M99\n";                      // 9
+    folder.write("main.nc", text);
+    LspClient c;
+    c.initialize({}, folder.path());
+    c.log_containing("kerf lsp: indexed");
+    c.open(folder.uri("main.nc"), text);
+    const auto def = [&](std::uint32_t line, std::uint32_t col) { return where(c.result("textDocument/definition", test::at(folder.uri("main.nc"), line, col))); };
+    CHECK(def(1, 10) == "main.nc 7:0-7:5");     // M98 P1234 L3 → O1234
+    CHECK(def(2, 10) == "O9010.nc 0:0-0:5");    // G66 P9010 → the macro's file
+    CHECK(def(5, 10) == "main.nc 6:0-6:4");     // GOTO 100 → N100
+    json::object p = test::at(folder.uri("main.nc"), 6, 1);
+    p["context"] = json::object{{"includeDeclaration", false}};
+    CHECK(wheres(c.result("textDocument/references", p)) == std::vector<std::string>{"main.nc 5:9-5:12"});
+    p = test::at(folder.uri("main.nc"), 7, 2);
+    p["context"] = json::object{{"includeDeclaration", false}};
+    CHECK(wheres(c.result("textDocument/references", p)) == std::vector<std::string>{"main.nc 1:9-1:13"});
+    // Workspace symbols: the O numbers and the labels, by query.
+    const json::value labels = c.result("workspace/symbol", json::object{{"query", "N100"}});
+    REQUIRE(labels.as_array().size() == 1);
+    CHECK(str(labels.as_array()[0].at("containerName")) == "O1000");
+    CHECK(where(labels.as_array()[0].at("location")) == "main.nc 6:0-6:8");
+}

@@ -14,6 +14,7 @@
 #include "grammar/parse.hpp"
 #include "lsp/document.hpp"
 #include "lsp/reparse.hpp"
+#include "tests/lsp/random_edits.hpp"
 #include "tests/shared_files.hpp"
 
 using namespace kerf;
@@ -137,40 +138,6 @@ Bound step(const Bound& current, const lsp::ByteEdit& edit, const dialects::Dial
     return next;
 }
 
-// A line boundary near `at` (0 or just after a '\n').
-std::uint32_t line_start(const std::string& text, std::uint32_t at) {
-    const std::size_t nl = at == 0 ? std::string::npos : text.rfind('\n', at - 1);
-    return nl == std::string::npos ? 0 : static_cast<std::uint32_t>(nl + 1);
-}
-
-lsp::ByteEdit random_edit(const std::string& text, std::mt19937& rng, std::string& storage) {
-    const auto pick = [&](std::uint32_t n) { return n == 0 ? 0u : static_cast<std::uint32_t>(rng() % (n + 1)); };
-    const auto size = static_cast<std::uint32_t>(text.size());
-    const std::uint32_t a = pick(size);
-    static const char* kPieces[] = {"X", "1", " ", "\n", "(", ")", ";", "G71 P10 Q20", "N10 GOTO 10\n", "#1=#1+1", "%\n", "%",
-                                    "O1234\n", "IF [#1 LT 2] GOTO 5\n", "M98 P41001\n", "\r\n", "12345678901234567890", "Ф"};
-    switch (rng() % 6) {
-        case 0: storage = kPieces[rng() % std::size(kPieces)]; return {a, a, storage};                     // typing
-        case 1: return {a, std::min(size, a + pick(12)), ""};                                                // deleting
-        case 2: {                                                                                            // pasting lines
-            const std::uint32_t at = line_start(text, a);
-            const std::uint32_t from = line_start(text, pick(size));
-            storage = text.substr(from, std::min<std::size_t>(200, size - from));
-            return {at, at, storage};
-        }
-        case 3: {                                                                                            // deleting lines
-            const std::uint32_t at = line_start(text, a);
-            return {at, std::min(size, at + pick(300)), ""};
-        }
-        case 4: storage = kPieces[rng() % std::size(kPieces)]; return {a, std::min(size, a + pick(4)), storage};   // replacing
-        default: {                                                                                           // '%' on its own line
-            const std::uint32_t at = line_start(text, a);
-            storage = "%\n";
-            return {at, at, storage};
-        }
-    }
-}
-
 }  // namespace
 
 TEST_CASE("incremental re-parse equals a whole parse after every edit, on every example and corpus file") {
@@ -185,7 +152,7 @@ TEST_CASE("incremental re-parse equals a whole parse after every edit, on every 
         Bound current = full(text, *d);
         for (int i = 0; i < 12; ++i) {
             std::string storage;
-            const lsp::ByteEdit e = random_edit(current.tree().text, rng, storage);
+            const lsp::ByteEdit e = test::random_edit(current.tree().text, rng, storage);
             INFO("edit " << i << ": [" << e.begin << ", " << e.end << ") -> '" << e.text << "'");
             current = step(current, e, *d);
             ++edits;

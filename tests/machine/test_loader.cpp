@@ -158,8 +158,11 @@ TEST_CASE("built-in values read back: offsets, reference points, limits, cycle p
     CHECK_FALSE(lathe->axis('X')->max.has_value());
     CHECK(lathe->axis('X')->rapid == Approx(24000));
     CHECK_FALSE(lathe->axis('C')->min.has_value());
-    CHECK(axis_value(lathe->reference_points[0], 'X') == Approx(300));
-    CHECK(axis_value(lathe->reference_points[1], 'Z') == Approx(400));
+    // FANUC's usual arrangement: home is machine zero, the work zero (G54) lies on the minus side.
+    CHECK(axis_value(lathe->reference_points[0], 'X') == Approx(0));
+    CHECK(axis_value(lathe->reference_points[1], 'Z') == Approx(-150));
+    CHECK(axis_value(lathe->work_offsets[0], 'X') == Approx(-300));
+    CHECK(axis_value(lathe->work_offsets[0], 'Z') == Approx(-550));
     CHECK(axis_value(lathe->work_shift, 'Z') == Approx(0));
     CHECK(lathe->max_spindle_rpm == Approx(4000));
     CHECK(lathe->max_live_tool_rpm.value() == Approx(6000));

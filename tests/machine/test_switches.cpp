@@ -61,9 +61,10 @@ const std::vector<Expectation>& expectations() {
         {"cutter_comp_startup", "B", "B", {}},                           // semantics.md §6
         {"cutter_comp_corners", "intersection", "intersection", {{"adv400-mill", "arc"}}},   // semantics.md §6
         {"comp_shift_without_motion", "false", "false", {{"iso-legacy-mill", "true"}}},     // semantics.md §6
+        {"length_offset_motion", "next-move", "next-move", {}},           // semantics.md §7 [FANUC parameter]
         {"g41_g42_swapped", "false", "false", {}},                       // gcode-tables.md §8.5
         {"cycle_pq_units", "increment", "increment", {}},                // cycles.md §0
-        {"dwell_p_unit", "ms", "ms", {{"adv400-mill", "s"}, {"adv400-lathe", "s"}}},   // semantics.md §8.2
+        {"dwell_p_unit", "dialect", "ms", {{"adv400-mill", "s"}, {"adv400-lathe", "s"}}},   // semantics.md §8.2
         {"dwell_f_word", "seconds", "seconds", {}},                      // semantics.md §12.15
         {"scaling_unit", "0.001", "0.001", {}},                          // [FANUC] parameter 5400#7 SCR
         {"finish_allowance_u", "diameter", "diameter", {}},              // dialects.md §11.2

@@ -325,14 +325,19 @@ TEST_CASE("plot: the title is escaped, numbers are compact, the document is bala
     CHECK(svg.find("nan") == std::string::npos);
 }
 
-// Positions are as programmed and lengths in mm (docs/trace.md): a G20 program's 1-inch line has
-// length_mm 25.4, and the picture is in inches.
+// Positions are as programmed and lengths in mm (docs/trace.md): a G20 program's events say
+// `inch`, its 1-inch line has length_mm 25.4, and the picture, scale bar and lengths are in inches.
 TEST_CASE("plot: an inch program gets an inch scale bar") {
     Event e = move(EventKind::linear, xyz(0, 0, 0), xyz(1, 0, 0));
     e.length_mm = 25.4;
+    e.inch = true;
     const std::string inch = plot::render_svg({e}, kMill);
     CHECK(inch.find(" in</text>") != std::string::npos);
+    CHECK(inch.find("inches (G20)") != std::string::npos);
+    CHECK(inch.find("feed 1.00 in") != std::string::npos);
     e.length_mm = 1;
+    e.inch = false;
     const std::string mm = plot::render_svg({e}, kMill);
     CHECK(mm.find(" mm</text>") != std::string::npos);
+    CHECK(mm.find("feed 1.0 mm") != std::string::npos);
 }

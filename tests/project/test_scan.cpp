@@ -80,17 +80,19 @@ TEST_CASE("scan: every reference example and corpus file splits into the parser'
     }
 }
 
-TEST_CASE("scan: the corpus's punch file holds twelve programs, O0100 its O line twice") {
+TEST_CASE("scan: the corpus's punch file holds sixteen programs, O0100 its O line twice") {
     const fs::path macro = fs::path(KERF_SHARED_DIR) / "corpus" / "macro";
     if (!fs::is_directory(macro)) {
         WARN("../shared is not there: the corpus programs were not scanned");
         return;
     }
-    // The O lines of ALL-PROG.TXT (lines 2, 8, 124, ... 480 of the file, between '%' on lines 1 and 529).
+    // The O lines of ALL-PROG.TXT (lines 2, 8, 124, ... 480 of the file, between '%' on lines 1 and
+    // 529), and the four programs that start after an M99 on the same line (lines 36, 64, 92, 120:
+    // `M99O0810(Z_AXIS)`, O0820, O0900, O0300; issue 12).
     std::vector<std::int64_t> numbers;
     for (const ScannedProgram& p : scan_programs(kerf::test::read_text(macro / "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__ALL-PROG.TXT")))
         numbers.push_back(p.number);
-    CHECK(numbers == std::vector<std::int64_t>{1, 800, 400, 500, 8000, 8100, 8300, 8400, 100, 600, 8200, 8501});
+    CHECK(numbers == std::vector<std::int64_t>{1, 800, 810, 820, 900, 300, 400, 500, 8000, 8100, 8300, 8400, 100, 600, 8200, 8501});
     // 'O0100(MAIN)' on lines 2 and 3: two programs, the first of them one block long.
     const std::vector<ScannedProgram> o100 = scan_programs(kerf::test::read_text(macro / "zhituaishangc__SK7420_750_N12_FANUC_HuBeiHengLong__O0100"));
     REQUIRE(o100.size() == 2);

@@ -60,9 +60,6 @@ F = {
  # N10 twice and not a jump target (MANIFEST: O0001 N130-N150, O0005 N30/N70): one finding at the second.
  "K3011-duplicate-sequence-number": (M, prog("N10 G00 X0. Y0.", "N20 Z1.", "N10 G01 Z-1. F100."), prog("N10 G00 X0. Y0.", "N20 Z1.", "N30 G01 Z-1. F100."),
                                      [(4, "N10 G01", W)]),
- # 'M99O0002': the line break before O0002 lost (corpus ALL-PROG.TXT).
- "K3012-program-number-inside-block": (M, "O0001\nG00 X0.\nM99O0002\nG00 X1.\nM99\n", "O0001\nG00 X0.\nM99\nO0002\nG00 X1.\nM99\n",
-                                       [(3, "O0002", E)]),
  "K4001-vacant-local-in-arithmetic": (L, prog("#2=#1+10."), prog("#1=5.", "#2=#1+10."), [(2, "#1", W)]),
  "K4002-division-by-zero": (L, prog("#1=10/0"), prog("#1=10/2"), [(2, "10/0", E)]),
  "K4003-write-read-only-variable": (L, prog("#0=1"), prog("#100=1"), [(2, "#0", E)]),
@@ -116,7 +113,7 @@ MACHINE = {
  "K5021-spindle-over-limit": (L, prog("G97 S9000 M03"), prog("G97 S3000 M03"), [(2, "S9000", W)], "# machine-file"),
 }
 # K5015 needs soft limits: the harness sets them from "# soft-limit AXIS MIN MAX".
-SOFT = {"K5015-soft-limit": (L, prog("G00 X900."), prog("G00 X200."), [(2, "G00", E)], "# soft-limit X -10 500")}
+SOFT = {"K5015-soft-limit": (L, prog("G00 X900."), prog("G00 X200."), [(2, "G00", E)], "# soft-limit X -500 10")}   # machine X: home 0, the spindle axis at -300
 # K3010 needs other files: the harness answers the program index's question from
 # "# program-files N FILE..." (the real index is tested in tests/project/test_workspace.cpp).
 INDEX = {"K3010-program-in-several-files": (M, prog("M98 P1000"), prog("M98 P1001"), [(2, "P1000", W)],

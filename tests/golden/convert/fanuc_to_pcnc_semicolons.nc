@@ -1,0 +1,6 @@
+(DIALECT: fanuc-mill)
+O0200;
+N10 G90 G00 X0. Y0.;
+N20 G01 X10. F100.; N30 Y10.;
+N40 G00 X0. Y0. ;
+N50 M02;

@@ -1,0 +1,7 @@
+(DIALECT: fanuc-mill)
+G0 G17 G54 X20. Y20. Z20.
+G52 X10. Y5.
+X30. Y30.
+G55
+X30. Y30.
+M02

@@ -1,0 +1,4 @@
+(DIALECT: adv400-mill)
+O12345
+N1 G90 G00 X0 Y0
+N2 M30

@@ -1,0 +1,5 @@
+(DIALECT: fanuc-lathe-a)
+O0115
+N10 G00 X100. Z100.
+N20 G91 G28 Z0.
+N30 M30
