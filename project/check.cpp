@@ -33,8 +33,7 @@ Analysis analyze(Workspace& workspace, const fs::path& path, std::string text, c
     options.config = r.project->config().check;
     options.max_findings_per_rule = max_per_rule;
     options.time_limit = r.project->limits().time_limit;
-    if (const ProgramSettings& programs = r.project->config().programs; !programs.resident.empty())
-        options.resident = [resident = programs](std::int64_t n) { return resident.resident_contains(n); };
+    options.resident = resident_programs(r.project->config().programs);
     if (r.choice.foreign) {
         // Detection found another control's program: the check says so once (K2009).
         const grammar::Detection::Foreign& f = *r.choice.foreign;

@@ -195,16 +195,17 @@ public:
             if (t.kind != ast::TokenKind::word || !t.has(ast::token_flags::lower_case)) continue;
             reported_ = true;
             std::vector<TextEdit> edits;
-            for (const ast::Token& u : b.tree().tokens)
-                if (u.kind == ast::TokenKind::word && u.has(ast::token_flags::lower_case))
-                    edits.push_back({{u.begin, u.begin + 1}, std::string(1, u.letter)});
+            for (std::uint32_t i = 0; i < b.tree().block_count(); ++i)
+                for (const ast::Token& u : b.tree().block_tokens(i))
+                    if (u.kind == ast::TokenKind::word && u.has(ast::token_flags::lower_case))
+                        edits.push_back({{u.begin, u.begin + 1}, std::string(1, u.letter)});
             const ast::Range first{t.begin, t.begin + 1};
             const std::string_view letter = b.tree().slice(first);
-            out.report(first,
-                       edits.size() == 1 ? fmt::format("lower-case address '{}'", letter)
-                                         : fmt::format("{} lower-case addresses in this file, the first '{}'", edits.size(), letter),
-                       "write the addresses in upper case")
-                .fix = Fix{"upper-case the address letters", std::move(edits)};
+            Finding& f = out.report(first,
+                                    edits.size() == 1 ? fmt::format("lower-case address '{}'", letter)
+                                                      : fmt::format("{} lower-case addresses in this file, the first '{}'", edits.size(), letter),
+                                    "write the addresses in upper case");
+            f.fix = Fix{"upper-case the address letters", std::move(edits)};
             return;
         }
     }
