@@ -1,5 +1,7 @@
 #include "interpreter/trace_compare.hpp"
 
+#include "interpreter/event_fields.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -32,36 +34,45 @@ std::optional<std::string> compare_position(std::string_view what, const Positio
     return std::nullopt;
 }
 
-// Alarm texts and call texts quote sequence numbers ("GOTO 10: no N10", "M98 Q20"), which
-// renumbering changes on purpose; their codes and the events around them carry the meaning.
-bool compares_text(EventKind k) { return k != EventKind::alarm && k != EventKind::call; }
-
-bool is_motion(EventKind k) {
-    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw ||
-           k == EventKind::thread;
-}
-
 // The step-limit alarm (interpreter/run_guard.hpp) ends an endless program wherever the count of
 // blocks runs out, and formatting or conversion changes that count (blank and comment lines are
 // blocks); the time limit ends a run wherever the clock runs out: two runs are compared up to the
 // first alarm of a run bound (kerf's own numbers, interpreter/events.hpp kerf_alarm, docs/trace.md).
 bool is_run_limit(const Event& e) { return e.kind == EventKind::alarm && kerf_alarm::is_run_limit(e.code); }
 
+std::optional<std::string> compare_field(const EventField& f, const Event& a, const Event& b, const CompareOptions& o) {
+    switch (f.type) {
+        case FieldType::position: return compare_position(f.key, position_of(a, f.member), position_of(b, f.member), o);
+        case FieldType::number: {
+            const double x = number_of(a, f.member), y = number_of(b, f.member);
+            if (!near(x, y, o)) return fmt::format("{}: {} vs {}", f.key, x, y);
+            return std::nullopt;
+        }
+        case FieldType::integer: {
+            const long long x = integer_of(a, f.member), y = integer_of(b, f.member);
+            if (x != y) return fmt::format("{}: {} vs {}", f.key, x, y);
+            return std::nullopt;
+        }
+        case FieldType::flag:
+            if (flag_of(a, f.member) != flag_of(b, f.member)) return fmt::format("{}: {} vs {}", f.key, flag_of(a, f.member), flag_of(b, f.member));
+            return std::nullopt;
+        case FieldType::text:
+            if (f.member == EventMember::text && a.text != b.text) return fmt::format("text: '{}' vs '{}'", a.text, b.text);
+            return std::nullopt;   // kind: compared before; units: a flag of its own (inch)
+    }
+    return std::nullopt;
+}
+
+// Every field of the trace that --verify compares (event_fields(): what the trace shows is what is
+// compared, lead_end of a G34 thread included).
 std::optional<std::string> compare_everything(const Event& a, const Event& b, const CompareOptions& o) {
-    if (a.code != b.code) return fmt::format("code: {} vs {}", a.code, b.code);
-    if (a.tool != b.tool) return fmt::format("tool: {} vs {}", a.tool, b.tool);
-    if (a.feed_per_rev != b.feed_per_rev || a.spindle_running != b.spindle_running) return std::string("feed mode or spindle state");
-    if (compares_text(a.kind) && a.text != b.text) return fmt::format("text: '{}' vs '{}'", a.text, b.text);
-    if (a.center.has_value() != b.center.has_value()) return std::string("one arc has a centre, the other not");
-    for (const auto& [what, x, y] : {std::tuple{"start", &a.start, &b.start}, std::tuple{"end", &a.end, &b.end},
-                                      std::tuple{"machine end", &a.machine_end, &b.machine_end}})
-        if (auto d = compare_position(what, *x, *y, o)) return d;
-    if (a.center)
-        if (auto d = compare_position("centre", *a.center, *b.center, o)) return d;
-    for (const auto& [what, x, y] : {std::tuple{"radius", a.radius, b.radius}, std::tuple{"length", a.length_mm, b.length_mm},
-                                      std::tuple{"time", a.time_s, b.time_s}, std::tuple{"feed", a.feed, b.feed},
-                                      std::tuple{"spindle rpm", a.spindle_rpm, b.spindle_rpm}})
-        if (!near(x, y, o)) return fmt::format("{}: {} vs {}", what, x, y);
+    for (const EventField& f : event_fields()) {
+        if (!f.compared) continue;
+        const bool in_a = f.compared(a), in_b = f.compared(b);
+        if (in_a != in_b) return fmt::format("{}: {} vs {}", f.key, in_a ? "present" : "absent", in_b ? "present" : "absent");
+        if (!in_a) continue;
+        if (auto d = compare_field(f, a, b, o)) return d;
+    }
     return std::nullopt;
 }
 

@@ -21,11 +21,6 @@ double snap(double v) {
     return s == 0 ? 0.0 : s;   // no "-0"
 }
 
-bool is_motion(EventKind k) {
-    return k == EventKind::rapid || k == EventKind::linear || k == EventKind::arc_cw || k == EventKind::arc_ccw ||
-           k == EventKind::thread;
-}
-
 // Written into an fmt::memory_buffer with literal pieces appended directly: the trace of a
 // 100 MB program is millions of lines, and a format string per piece costs more than the numbers.
 using Buffer = fmt::memory_buffer;
@@ -83,13 +78,6 @@ void write_string(Buffer& out, std::string_view s) {
     out.push_back('"');
 }
 
-void write_field(Buffer& out, std::string_view key, double v) {
-    put(out, ",\"");
-    put(out, key);
-    put(out, "\":");
-    put_number(out, v);
-}
-
 }  // namespace
 
 TraceWriter::TraceWriter(const ProgramSet& programs, std::string_view axes) : programs_(programs) {
@@ -97,10 +85,8 @@ TraceWriter::TraceWriter(const ProgramSet& programs, std::string_view axes) : pr
         if (axes.find(kAxisLetters[a]) != std::string_view::npos) axes_.push_back(a);
 }
 
-void TraceWriter::write_position(Buffer& out, std::string_view key, const Position& p) const {
-    put(out, ",\"");
-    put(out, key);
-    put(out, "\":{");
+void TraceWriter::write_position(Buffer& out, const Position& p) const {
+    out.push_back('{');
     bool first = true;
     for (const std::size_t a : axes_) {
         if (!first) out.push_back(',');
@@ -113,6 +99,27 @@ void TraceWriter::write_position(Buffer& out, std::string_view key, const Positi
     out.push_back('}');
 }
 
+void TraceWriter::write_value(Buffer& out, const EventField& field, const Event& e) const {
+    switch (field.member) {
+        case EventMember::kind:
+            out.push_back('"');
+            put(out, to_string(e.kind));
+            out.push_back('"');
+            return;
+        case EventMember::file: put(out, quoted_names_[e.source.file]); return;
+        case EventMember::units: put(out, "\"inch\""); return;   // absent: mm
+        case EventMember::text: write_string(out, e.text); return;
+        default: break;
+    }
+    switch (field.type) {
+        case FieldType::position: write_position(out, position_of(e, field.member)); return;
+        case FieldType::number: put_number(out, number_of(e, field.member)); return;
+        case FieldType::integer: put_int(out, integer_of(e, field.member)); return;
+        case FieldType::flag: put(out, flag_of(e, field.member) ? "true" : "false"); return;
+        case FieldType::text: return;
+    }
+}
+
 void TraceWriter::append(fmt::memory_buffer& out, const Event& e) {
     // Files join the set while the run goes on (subprograms from the folder).
     while (quoted_names_.size() < programs_.file_count()) {
@@ -120,42 +127,16 @@ void TraceWriter::append(fmt::memory_buffer& out, const Event& e) {
         write_string(quoted, programs_.file(static_cast<std::uint32_t>(quoted_names_.size())).name());
         quoted_names_.emplace_back(quoted.data(), quoted.size());
     }
-    put(out, "{\"kind\":\"");
-    put(out, to_string(e.kind));
-    put(out, "\",\"file\":");
-    put(out, quoted_names_[e.source.file]);
-    put(out, ",\"line\":");
-    put_int(out, e.source.line);
-    write_position(out, "end", e.end);
-    if (e.inch) put(out, ",\"units\":\"inch\"");   // absent: mm (the traces of metric programs stay as they were)
-    write_position(out, "machine", e.machine_end);
-    if (is_motion(e.kind)) {
-        write_position(out, "start", e.start);
-        write_field(out, "length_mm", e.length_mm);
-        write_field(out, "time_s", e.time_s);
-        if (e.kind != EventKind::rapid) {
-            write_field(out, "feed", e.feed);
-            if (e.kind == EventKind::thread && e.lead_end != e.feed) write_field(out, "lead_end", e.lead_end);
-            put(out, e.feed_per_rev ? ",\"feed_per_rev\":true" : ",\"feed_per_rev\":false");
-            write_field(out, "spindle_rpm", e.spindle_rpm);
-            put(out, e.spindle_running ? ",\"spindle_running\":true" : ",\"spindle_running\":false");
-        }
-    }
-    if (e.center) {
-        write_position(out, "center", *e.center);
-        write_field(out, "radius", e.radius);
-    }
-    if (e.kind == EventKind::dwell) write_field(out, "time_s", e.time_s);
-    if (e.kind == EventKind::spindle) write_field(out, "spindle_rpm", e.spindle_rpm);
-    put(out, ",\"tool\":");
-    put_int(out, e.tool);
-    if (e.code) {
-        put(out, ",\"code\":");
-        put_int(out, e.code);
-    }
-    if (!e.text.empty()) {
-        put(out, ",\"text\":");
-        write_string(out, e.text);
+    out.push_back('{');
+    bool first = true;
+    for (const EventField& field : event_fields()) {
+        if (!field.written(e)) continue;
+        if (!first) out.push_back(',');
+        first = false;
+        out.push_back('"');
+        put(out, field.key);
+        put(out, "\":");
+        write_value(out, field, e);
     }
     out.push_back('}');
 }

@@ -8,12 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/event_fields.hpp"
 #include "interpreter/interpreter.hpp"
 
 namespace kerf::interpreter {
 
-// One JSON object per event: kind, file, line, end (axis letter → number, work coordinates, lathe X
-// as diameter), and per kind: start, center, radius, length_mm, time_s, feed, tool, code, text.
+// One JSON object per event: the fields of event_fields() that the event has, in that order (kind,
+// file, line, end as axis letter → number in work coordinates with lathe X as diameter, ...).
 //
 // The writer of `kerf run --trace`: millions of lines, so what is the same for every line (the
 // quoted file names, the axes of the machine) is prepared once, and numbers take a fast path.
@@ -24,7 +25,8 @@ public:
     void append(fmt::memory_buffer& line, const Event& e);
 
 private:
-    void write_position(fmt::memory_buffer& out, std::string_view key, const Position& p) const;
+    void write_position(fmt::memory_buffer& out, const Position& p) const;
+    void write_value(fmt::memory_buffer& out, const EventField& field, const Event& e) const;
     const ProgramSet& programs_;
     std::vector<std::size_t> axes_;          // indices into kAxisLetters, in order
     std::vector<std::string> quoted_names_;  // per file of `programs_`, grown as files are loaded
