@@ -264,6 +264,7 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
     if (comp_path_) position_ = *comp_path_;
     profile.start = position_;
+    profile.q_block = *last;
     dialects::FunctionId motion = flags_.motion;
     bool ok = true;
     for (std::uint32_t b = *first; ok && b <= *last; ++b) {

@@ -66,6 +66,7 @@ struct RigidTapModal {
 struct Profile {
     Position start{};                       // the cycle start point A
     std::vector<ProfileMove> moves;         // ns … nf in order; moves[0] is A → A′
+    std::uint32_t q_block = 0;              // the block N Q (its index in the file)
 };
 
 // What the executor offers a cycle. Positions are work coordinates as programmed.
@@ -134,8 +135,15 @@ bool expand(Context& ctx);
 
 // The pieces the Haas one-block forms share with the FANUC cycles (haas_lathe.cpp): the same
 // expansion with the values read from one block instead of two.
-// G71/G72 roughing over `profile` (lathe_profile.cpp): `facing` steps the depth along Z (G72).
-void rough_profile(Context& ctx, const Profile& profile, bool facing, double depth, double retract);
+// G71/G72 roughing over `profile` (lathe_profile.cpp): `facing` steps the depth along Z (G72);
+// `q_block_may_return`: the Q block of a type II profile is exempt from the monotonic check (Haas,
+// haas_lathe.cpp).
+struct RoughCycle {
+    bool facing = false;
+    double depth = 0, retract = 0;
+    bool q_block_may_return = false;
+};
+void rough_profile(Context& ctx, const Profile& profile, const RoughCycle& r);
 // G73: the profile `divisions` times, shifted by the relief (radius X, Z) plus the allowance.
 void repeat_pattern(Context& ctx, const Profile& profile, double relief_x, double relief_z, int divisions);
 // G74/G75 (lathe_peck.cpp): pecks of `peck` along Z (face) or X, columns `shift` apart across,

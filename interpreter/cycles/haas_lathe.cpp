@@ -6,7 +6,8 @@
 //
 //   G71/G72 P Q U W D (I K)   staging-diy.haascnc.com "G71 O.D./I.D. Stock Removal Cycle": D depth of
 //                             cut per pass (radius); without D Setting 72 (the machine's g71/g72
-//                             depth); retract Setting 73 (the machine's g71/g72 retract)
+//                             depth); retract Setting 73 (the machine's g71/g72 retract);
+//                             "Type 2 details": the Q block may go back past the start in Z
 //   G73 P Q U W I K D         I/K the stock to remove (radius X, Z), D the number of passes [unverified]
 //   G74 X Z K I D             K the Z peck, I the X step, D the relief at the bottom [unverified]
 //   G75 X Z I K D             I the X peck (radius), K the Z step, D the relief [unverified];
@@ -32,9 +33,17 @@ void rough(Context& ctx, bool facing) {
     const auto profile = profile_of_block(ctx);
     if (!profile) return;
     const Parameters& params = ctx.parameters();
-    const double depth = ctx.mm('D').value_or(facing ? params.g72_depth : params.g71_depth);
-    const double retract = facing ? params.g72_retract : params.g71_retract;
-    rough_profile(ctx, *profile, facing, depth, retract);
+    RoughCycle r;
+    r.facing = facing;
+    // What the block leaves to Settings 72/73 comes from the machine's [cycle_parameters], in mm
+    // (machine/SCHEMA.md): to program units here, as no Haas block ever sets them (an inch
+    // program would otherwise retract 1 in for 1 mm).
+    r.depth = ctx.mm('D').value_or((facing ? params.g72_depth : params.g71_depth) * ctx.per_mm());
+    r.retract = (facing ? params.g72_retract : params.g71_retract) * ctx.per_mm();
+    // Haas G71/G72 "Type 2 details": the Q block is the one exception to the rule that the Z path
+    // of P..Q does not go back past the start (lathe_profile.cpp, rough).
+    r.q_block_may_return = true;
+    rough_profile(ctx, *profile, r);
 }
 
 void pattern(Context& ctx) {
@@ -59,7 +68,7 @@ void peck(Context& ctx, bool face) {
     p.face = face;
     p.peck = ctx.mm(face ? 'K' : 'I').value_or(0);
     p.shift = ctx.mm(face ? 'I' : 'K').value_or(0);
-    p.retract = face ? params.g74_retract : params.g75_retract;
+    p.retract = (face ? params.g74_retract : params.g75_retract) * ctx.per_mm();   // machine mm, as rough()
     p.relief = ctx.mm('D').value_or(0);
     peck_cycle(ctx, p);
 }
@@ -76,8 +85,8 @@ void threading(Context& ctx) {
     ThreadCycle t;
     t.height = k;
     t.first = d;
-    t.min_step = params.g76_min_depth;          // Setting 99, thread minimum cut
-    t.allowance = params.g76_allowance;         // Setting 86, thread finish allowance
+    t.min_step = params.g76_min_depth * ctx.per_mm();   // Setting 99, thread minimum cut (machine mm, as rough())
+    t.allowance = params.g76_allowance * ctx.per_mm();  // Setting 86, thread finish allowance
     t.finishing_passes = 1;
     t.angle = ctx.raw('A').value_or(params.g76_angle);
     t.taper = ctx.mm('I').value_or(0);
