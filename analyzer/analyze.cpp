@@ -98,10 +98,6 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
     }
 }
 
-// Thrown out of the run by the sink when the caller cancels it (the interpreter has no
-// cancellation of its own yet: NOTICES.md asks `flow` for RunOptions::cancel).
-struct RunCancelled {};
-
 // The sink of the dry run: each event to every dynamic check, alarms to the rule that owns their
 // number. Findings about other files (a subprogram loaded from the folder) are dropped: that file
 // is checked on its own. State events (asked for by an observer) go to the observer only.
@@ -114,7 +110,6 @@ public:
             if (r->make_dynamic) checks_.push_back({r->make_dynamic(), Reporter(*r, out, tallies.of(*r))});
     }
     void on_event(const interpreter::Event& e) override {
-        if (hooks_.cancel && hooks_.cancel->load(std::memory_order_relaxed)) throw RunCancelled{};
         if (hooks_.observer) hooks_.observer->on_event(e);
         if (e.kind == interpreter::EventKind::state) return;
         const std::size_t before = out_.size();
@@ -165,11 +160,8 @@ bool run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const di
     options.time_limit = check.time_limit;
     options.emit_state = hooks.emit_state;
     options.after_block = hooks.after_block;
-    try {
-        interpreter::run(programs, *main, dialect, setup, sink, options);
-    } catch (const RunCancelled&) {
-        return false;
-    }
+    options.cancel = hooks.cancel;
+    if (interpreter::run(programs, *main, dialect, setup, sink, options).cancelled) return false;
     sink.finish();
     return true;
 }
