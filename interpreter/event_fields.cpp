@@ -15,6 +15,9 @@ bool always(const Event&) { return true; }
 bool inch(const Event& e) { return e.inch; }
 bool motion(const Event& e) { return is_motion(e.kind); }
 bool cutting(const Event& e) { return is_motion(e.kind) && e.kind != EventKind::rapid; }
+// The state after a block (RunOptions::emit_state): its F and S (`text` holds the modal codes,
+// `tool` the tool and `code` its offset number).
+bool state(const Event& e) { return e.kind == EventKind::state; }
 // The lead at a thread's end differs from its start only in G34 (cycles.md §9).
 bool variable_lead(const Event& e) { return e.kind == EventKind::thread && e.lead_end != e.feed; }
 bool arc(const Event& e) { return e.center.has_value(); }
@@ -48,6 +51,8 @@ constexpr std::array kFields{
     EventField{"radius", M::radius, T::number, arc, arc},
     EventField{"time_s", M::time_s, T::number, dwell, dwell},
     EventField{"spindle_rpm", M::spindle_rpm, T::number, spindle, spindle},
+    EventField{"feed", M::feed, T::number, state, state},
+    EventField{"spindle_rpm", M::spindle_rpm, T::number, state, state},
     EventField{"tool", M::tool, T::integer, always, always},
     EventField{"code", M::code, T::integer, has_code, has_code},
     EventField{"text", M::text, T::text, has_text, compared_text},

@@ -379,12 +379,15 @@ void Executor::emit_state(const SourceRef& where) {
     e.kind = EventKind::state;
     e.source = where;
     e.start = e.end = position_;
+    // Structured (issue 13): the modal codes in `text`, one per group; F, S and T in fields of their own.
     std::string text;
     for (const dialects::CodeInfo* code : modal_)
         if (code) text += (text.empty() ? "" : " ") + code->spelling;
-    text += fmt::format(" F{} S{} T{}", feed_, flags_.css ? css_ : spindle_rpm_, tool_ * 100 + tool_offset_);
     e.text = std::move(text);
     e.feed = feed_;
+    e.spindle_rpm = flags_.css ? css_ : spindle_rpm_;   // the S in force: rpm, or the surface speed under G96
+    e.tool = tool_;
+    e.code = tool_offset_;
     emit(std::move(e));
 }
 

@@ -20,15 +20,6 @@ bool is_move(EventKind k) {
            k == EventKind::thread;
 }
 
-double number_after(std::string_view text, std::string_view key) {
-    const std::size_t at = text.rfind(key);
-    if (at == std::string_view::npos) return 0;
-    double v = 0;
-    const char* b = text.data() + at + key.size();
-    std::from_chars(b, text.data() + text.size(), v);
-    return v;
-}
-
 // What the dry run does, block by block, for the checked file (events of other files are
 // subprograms loaded from the folder: they are checked when they are opened).
 class Collector : public interpreter::EventSink {
@@ -113,16 +104,14 @@ private:
             ++run_.states[static_cast<std::size_t>(slot)].runs;
             return;
         }
-        const std::string_view text = e.text;
-        const std::size_t f = text.rfind(" F");
-        const std::string modal(text.substr(0, f == std::string_view::npos ? text.size() : f));
-        auto [it, added] = modal_ids_.emplace(modal, static_cast<std::uint32_t>(run_.modal_texts.size()));
-        if (added) run_.modal_texts.push_back(modal);
+        auto [it, added] = modal_ids_.emplace(e.text, static_cast<std::uint32_t>(run_.modal_texts.size()));
+        if (added) run_.modal_texts.push_back(e.text);
         BlockState s;
         s.position = e.end;
         s.feed = e.feed;
-        s.spindle = number_after(text, " S");
-        s.tool = static_cast<std::int32_t>(number_after(text, " T"));
+        s.spindle = e.spindle_rpm;
+        s.tool = e.tool;
+        s.tool_offset = e.code;
         s.modal = it->second;
         s.runs = 1;
         slot = static_cast<std::int32_t>(run_.states.size());

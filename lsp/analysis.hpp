@@ -30,7 +30,8 @@ struct BlockState {
     interpreter::Position position{};   // work coordinates (lathe X as diameter)
     double feed = 0;
     double spindle = 0;                 // S as the state event gives it (rpm, or the surface speed under G96)
-    std::int32_t tool = 0;              // T as written (tool * 100 + offset)
+    std::int32_t tool = 0;              // the tool
+    std::int32_t tool_offset = 0;       // its offset number (lathe Tmmnn: nn)
     std::uint32_t modal = 0;            // index into DryRun::modal_texts
     std::uint32_t runs = 0;             // how many times the block ran
 };

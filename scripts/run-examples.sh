@@ -27,6 +27,7 @@ step "0: ended normally" run examples/lathe-shaft.nc
 step "0: ended normally; the picture is $svg" plot examples/lathe-shaft.nc -o "$svg"
 [ -s "$svg" ] && echo "wrote $svg ($(wc -c < "$svg") bytes): open it in a browser" && echo
 step "0 formatted, 1 a file would change or cannot be formatted (defects.nc has syntax errors)" fmt --check examples
+step "0 converted (and its dry run the same as the source's), 1 constructs left or a difference" convert examples/lathe-shaft.nc --to fanuc-lathe-b --verify
 step "0 clean, 1 syntax errors" parse examples/lathe-shaft.nc --explain-dialect --stats
 echo "=== kerf explain G71 --dialect fanuc-lathe-a --lang ru"
 "$kerf" explain G71 --dialect fanuc-lathe-a --lang ru

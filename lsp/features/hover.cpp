@@ -156,7 +156,9 @@ std::string state_text(const Snapshot& s, std::uint32_t block, bool ru) {
     }
     std::string out = fmt::format(fmt::runtime(ru ? "**Пробный прогон после этого кадра**{}:\n\n{}" : "**Dry run after this block**{}:\n\n{}"),
                                   st->runs > 1 ? fmt::format(fmt::runtime(ru ? " (первый из {} проходов)" : " (the first of {} runs)"), st->runs) : "", position);
-    out += fmt::format(" · F {} · S {} · T{:04}", number_text(st->feed), number_text(st->spindle), st->tool);
+    // T as the dialect writes it: tool and offset (`T0101`) or the tool number alone (`T5`).
+    const std::string tool = lex.tool_word == "mmnn" ? fmt::format("T{:02}{:02}", st->tool, st->tool_offset) : fmt::format("T{}", st->tool);
+    out += fmt::format(" · F {} · S {} · {}", number_text(st->feed), number_text(st->spindle), tool);
     out += fmt::format("\n\n{}: {}", ru ? "Модальные" : "Modal", run->modal_texts[st->modal]);
     return out;
 }

@@ -53,7 +53,12 @@ TEST_CASE("kerf run --trace writes one JSON object per event; --state adds the m
         const std::string kind(e.at("kind").as_string());
         if (kind == "state") {
             ++states;
+            // Structured (issue 13): the modal codes in text, F and S and the tool in fields.
             CHECK(e.at("text").as_string().find("G") != json::string::npos);
+            CHECK(e.at("text").as_string().find(" F") == json::string::npos);
+            CHECK(e.contains("feed"));
+            CHECK(e.contains("spindle_rpm"));
+            CHECK(e.contains("tool"));
         }
         if (kind == "arc_cw") {
             ++arcs;

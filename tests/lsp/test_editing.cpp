@@ -121,6 +121,19 @@ TEST_CASE("hover shows the dry-run state at the block and the diagnostics under 
     CHECK(has(on_move, "*semantics.md §4*"));
 }
 
+TEST_CASE("hover: a mill's state shows its tool as the program writes it (T5, not T0500)") {
+    Session s("fanuc-mill");
+    const std::string text = "O0002\nN10 T5 M06\nN20 G90 G00 X10. Y20. S1200 M03\nN30 G01 X30. F250.\nM30\n";
+    s.client.open("file:///w/m.nc", text);
+    s.client.diagnostics("file:///w/m.nc", 1);
+    const std::string after_feed = s.hover("file:///w/m.nc", 3, 1);
+    INFO(after_feed);
+    CHECK(has(after_feed, "X 30 · Y 20"));
+    CHECK(has(after_feed, "F 250 · S 1200 · T5"));
+    CHECK_FALSE(has(after_feed, "T0500"));
+    CHECK(has(after_feed, "Modal: G01 "));
+}
+
 TEST_CASE("completion: codes after G and M, cycle snippets in the dialect's own G-code system") {
     SECTION("system A: G71 and its two-block snippet") {
         Session s;
