@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -35,6 +36,9 @@ struct RunOptions {
     // Wall-clock bound of the run (interpreter/run_guard.hpp): past it the run stops with alarm
     // kerf_alarm::time_limit. 0 = none (the library default: runs stay deterministic; the CLI sets one).
     std::chrono::milliseconds time_limit{0};
+    // Programs the machine keeps in its memory (.kerf.toml [programs] resident): a call to one the
+    // run cannot find is skipped with a message instead of alarm 078 (issue 15). Empty: none.
+    std::function<bool(std::int64_t)> resident;
     // M99 in the main program is the bar-feeder loop: the control starts the program again
     // (dialects.md §3.6). A dry run runs this many passes and ends with a note (RunResult::repeats);
     // times are for the passes run. At least 1.

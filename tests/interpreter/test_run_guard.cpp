@@ -155,4 +155,19 @@ TEST_CASE("run to a block: the run stops after its first execution, also inside 
     CHECK_FALSE(r.result.reached_block);
     CHECK(r.result.completed);
     CHECK(r.result.final_position[X] == Approx(50));
+
+// A system variable outside kerf's tables (#3101 on FANUC, which O8200 of the corpus reads) is
+// kerf's limit 90006, not the program's alarm 115, on a read and on a write, at the block that
+// names it; the run stops there (the control may well have the variable), and --verify and the
+// analyzer take it as the end of the run, like the other limits.
+TEST_CASE("a system variable kerf does not model stops the run as kerf's alarm 90006") {
+    CHECK(ka::is_run_limit(ka::unknown_variable));
+    for (const char* block : {"#1=#3101", "#3101=5"}) {
+        INFO(block);
+        const Run r = run_bare(std::string("O1\n") + block + "\nG00 X1.\nM30\n", "fanuc-mill");
+        require_alarm(r, ka::unknown_variable);
+        CHECK(r.result.alarms[0].source.line == 2);
+        CHECK(r.result.alarms[0].text.find("#3101 is not in kerf's tables") != std::string::npos);
+        CHECK(count_moves_on_line(r, 3) == 0);
+    }
 }
