@@ -100,10 +100,6 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
     }
 }
 
-// Thrown out of the run by the sink when the caller cancels it (the interpreter has no
-// cancellation of its own yet: NOTICES.md asks `flow` for RunOptions::cancel).
-struct RunCancelled {};
-
 // The sink of the dry run: each event to every dynamic check, alarms to the rule that owns their
 // number. Findings about other files (a subprogram loaded from the folder) are dropped: that file
 // is checked on its own. State events (asked for by an observer) go to the observer only.
@@ -117,7 +113,6 @@ public:
         own_guards_ = guards_own_inputs(check);
     }
     void on_event(const interpreter::Event& e) override {
-        if (hooks_.cancel && hooks_.cancel->load(std::memory_order_relaxed)) throw RunCancelled{};
         if (hooks_.observer) hooks_.observer->on_event(e);
         if (e.kind == interpreter::EventKind::state) return;
         const std::size_t before = out_.size();
@@ -193,11 +188,8 @@ bool run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const di
     options.emit_state = hooks.emit_state;
     options.after_block = hooks.after_block;
     options.resident = check.resident;
-    try {
-        interpreter::run(programs, *main, dialect, setup, sink, options);
-    } catch (const RunCancelled&) {
-        return false;
-    }
+    options.cancel = hooks.cancel;
+    if (interpreter::run(programs, *main, dialect, setup, sink, options).cancelled) return false;
     sink.finish();
     return true;
 }

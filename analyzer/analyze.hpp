@@ -77,7 +77,7 @@ struct DryRunHooks {
     interpreter::EventSink* observer = nullptr;   // also sees every event of the run (with state events)
     bool emit_state = false;                       // RunOptions::emit_state, for the observer only
     decltype(interpreter::RunOptions::after_block) after_block;   // RunOptions::after_block
-    const std::atomic<bool>* cancel = nullptr;     // once set, the run stops at its next event
+    const std::atomic<bool>* cancel = nullptr;     // once set, the run stops before its next block (RunOptions::cancel)
 };
 // The dry run's findings (dynamic rules and alarms); nullopt when `hooks.cancel` stopped it.
 std::optional<std::vector<Finding>> check_dry_run(interpreter::ProgramSet& programs, std::uint32_t file,

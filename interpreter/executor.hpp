@@ -302,6 +302,7 @@ private:
 
     // Helpers.
     const LoadedFile& file_of(const Frame& f) const { return programs_.file(f.program.file); }
+    bool reached(std::uint32_t file, std::uint32_t block) const;
     ast::Program program_of(const Frame& f) const;   // a copy: reading ahead may add programs
     SourceRef source(const Frame& f, const ast::BlockView& view) const;
     bool has_function(const ast::BlockView& view, dialects::FunctionId function) const;
