@@ -155,6 +155,7 @@ TEST_CASE("run to a block: the run stops after its first execution, also inside 
     CHECK_FALSE(r.result.reached_block);
     CHECK(r.result.completed);
     CHECK(r.result.final_position[X] == Approx(50));
+}
 
 // A system variable outside kerf's tables (#3101 on FANUC, which O8200 of the corpus reads) is
 // kerf's limit 90006, not the program's alarm 115, on a read and on a write, at the block that
