@@ -9,8 +9,10 @@
 
 #include <fmt/format.h>
 
+#include "analyzer/arguments.hpp"
 #include "analyzer/static_walk.hpp"
 #include "analyzer/suppress.hpp"
+#include "dialects/alarms.hpp"
 #include "interpreter/interpreter.hpp"
 
 namespace kerf::analyzer {
@@ -98,23 +100,19 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
     }
 }
 
-// Thrown out of the run by the sink when the caller cancels it (the interpreter has no
-// cancellation of its own yet: NOTICES.md asks `flow` for RunOptions::cancel).
-struct RunCancelled {};
-
 // The sink of the dry run: each event to every dynamic check, alarms to the rule that owns their
 // number. Findings about other files (a subprogram loaded from the folder) are dropped: that file
 // is checked on its own. State events (asked for by an observer) go to the observer only.
 class FanOut : public interpreter::EventSink {
 public:
     FanOut(const RunContext& run, const Registry& registry, const ActiveRules& rules, Tallies& tallies,
-           std::vector<Finding>& out, const DryRunHooks& hooks)
+           std::vector<Finding>& out, const DryRunHooks& hooks, const CheckOptions& check)
         : run_(run), registry_(registry), rules_(rules), tallies_(tallies), out_(out), hooks_(hooks) {
         for (const Rule* r : rules)
             if (r->make_dynamic) checks_.push_back({r->make_dynamic(), Reporter(*r, out, tallies.of(*r))});
+        own_guards_ = guards_own_inputs(check);
     }
     void on_event(const interpreter::Event& e) override {
-        if (hooks_.cancel && hooks_.cancel->load(std::memory_order_relaxed)) throw RunCancelled{};
         if (hooks_.observer) hooks_.observer->on_event(e);
         if (e.kind == interpreter::EventKind::state) return;
         const std::size_t before = out_.size();
@@ -134,10 +132,33 @@ private:
     void report_alarm(const interpreter::Event& e) {
         const Rule* rule = registry_.for_alarm(e.code);
         if (!active(rules_, rule)) return;
+        if (own_guards_ && e.code >= alarms::user_alarm_first && e.code <= alarms::user_alarm_last &&
+            e.source.file == run_.checked_file && own_guards_->first <= e.source.range.begin &&
+            e.source.range.begin < own_guards_->second)
+            return;   // the macro's own check of a missing argument: no caller gave it any
         const ast::SyntaxTree& tree = *run_.programs.file(e.source.file).whole_tree();
         Reporter reporter(*rule, out_, tallies_.of(*rule));
         Finding& f = reporter.report(trim_range(tree, e.source.range), e.text);
         f.notes.push_back("found by the dry run: the control stops here with an alarm");
+    }
+    // The bytes of the checked program when it is a macro run without a caller, or a program whose
+    // inputs are common variables set elsewhere: a #3000 alarm it raises there is its guard for a
+    // missing argument or input (IF [#1 EQ #0] THEN #3000=...; 01000.nc's dispatcher when #101 is
+    // none of its cases), the program's own check, not a defect (issue 15). nullopt: the program
+    // takes no arguments or inputs, or a caller is known.
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> guards_own_inputs(const CheckOptions& check) const {
+        const interpreter::LoadedFile& loaded = run_.programs.file(run_.checked_file);
+        const ast::TypedFile& typed = *loaded.whole_typed();
+        if (typed.programs().empty()) return std::nullopt;
+        const ProgramArguments arguments = program_arguments(typed, 0, check.caller_arguments);
+        if (arguments.caller_known ||
+            (!arguments.documented && argument_reads(typed, 0).none() && !reads_common_inputs(typed, 0)))
+            return std::nullopt;
+        const ast::Program& p = typed.programs()[0];
+        const ast::SyntaxTree& tree = typed.tree();
+        const std::uint32_t end = p.end_block < tree.block_count() ? tree.blocks[p.end_block].begin
+                                                                   : static_cast<std::uint32_t>(tree.text.size());
+        return std::pair{tree.blocks[p.first_block].begin, end};
     }
     const RunContext& run_;
     const Registry& registry_;
@@ -146,6 +167,7 @@ private:
     std::vector<Finding>& out_;
     const DryRunHooks& hooks_;
     std::vector<DynamicRun> checks_;
+    std::optional<std::pair<std::uint32_t, std::uint32_t>> own_guards_;
 };
 
 bool needs_run(const ActiveRules& rules) {
@@ -159,17 +181,15 @@ bool run_dynamic(interpreter::ProgramSet& programs, std::uint32_t file, const di
     const std::optional<interpreter::ProgramRef> main = check.main ? check.main : programs.first_program(file);
     if (!main || (!needs_run(rules) && !hooks.observer)) return true;
     const RunContext run{programs, file, dialect, setup};
-    FanOut sink(run, registry, rules, tallies, out, hooks);
+    FanOut sink(run, registry, rules, tallies, out, hooks, check);
     interpreter::RunOptions options = check.run;
     options.lenient = true;   // syntax defects are the syntax rules' findings; go on and check the rest
     options.time_limit = check.time_limit;
     options.emit_state = hooks.emit_state;
     options.after_block = hooks.after_block;
-    try {
-        interpreter::run(programs, *main, dialect, setup, sink, options);
-    } catch (const RunCancelled&) {
-        return false;
-    }
+    options.resident = check.resident;
+    options.cancel = hooks.cancel;
+    if (interpreter::run(programs, *main, dialect, setup, sink, options).cancelled) return false;
     sink.finish();
     return true;
 }
@@ -272,7 +292,9 @@ std::vector<Finding> check_static(const interpreter::ProgramSet& programs, std::
     // Uncapped here: finish_findings caps the phases' findings together (as check_file does).
     const std::vector<Suppression> suppressions = find_suppressions(tree);
     Tallies tallies(0, suppressions);
-    const FileContext ctx{typed, dialect, setup, std::move(program_exists), options.program_files};
+    FileContext ctx{typed, dialect, setup, std::move(program_exists), options.program_files};
+    ctx.resident = options.resident;
+    ctx.caller_arguments = options.caller_arguments;
     run_static(ctx, rules, tallies, out, cancel);
     map_diagnostics(tree, tree.diagnostics, registry, rules, tally_of(tallies), out);
     map_diagnostics(tree, typed.diagnostics(), registry, rules, tally_of(tallies), out);
@@ -303,10 +325,44 @@ void finish_findings(std::vector<Finding>& findings, const ast::SyntaxTree& tree
     cap_per_rule(findings, options.max_findings_per_rule, {&seen});
 }
 
+namespace {
+
+// A program of another control (CheckOptions::foreign): one finding, nothing read as FANUC.
+std::optional<std::vector<Finding>> foreign_control(const ast::SyntaxTree& tree, const ast::LineIndex& lines,
+                                                    const Registry& registry, const ActiveRules& rules,
+                                                    const CheckOptions& options) {
+    const Rule* rule = registry.find("foreign-control");
+    if (!options.foreign || !active(rules, rule)) return std::nullopt;
+    const ForeignControl& f = *options.foreign;
+    std::uint32_t at = 0;
+    if (f.line > 0 && f.line <= lines.line_count()) at = lines.line_start(f.line - 1) + (f.column > 0 ? f.column - 1 : 0);
+    at = std::min<std::uint32_t>(at, static_cast<std::uint32_t>(tree.text.size()));
+    std::uint32_t end = at;
+    while (end < tree.text.size() && tree.text[end] != '\n' && tree.text[end] != '\r') ++end;
+    std::vector<Finding> out;
+    Reporter reporter(*rule, out);
+    Finding& finding = reporter.report({at, end},
+                                       fmt::format("this looks like a {} program; kerf reads FANUC-family dialects", f.name),
+                                       "check it with the tools of that control, or name a FANUC-family dialect (--dialect, "
+                                       ".kerf.toml `dialect`) if it is one");
+    if (!f.evidence.empty()) finding.notes.push_back(fmt::format("{}: {}", f.evidence, f.proves));
+    finding.notes.push_back("kerf parse --explain-dialect lists all the evidence");
+    return out;
+}
+
+}  // namespace
+
 std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                                 const interpreter::Setup& setup, const CheckOptions& options) {
     const Registry& registry = registry_of(options);
     const ActiveRules rules = active_rules(registry, options.config);
+    {
+        const interpreter::LoadedFile& loaded = programs.file(file);
+        if (auto foreign = foreign_control(*loaded.whole_tree(), *loaded.whole_lines(), registry, rules, options)) {
+            finalize(*foreign, find_suppressions(*loaded.whole_tree()), *loaded.whole_lines(), registry, options.config);
+            return *std::move(foreign);
+        }
+    }
     std::vector<Finding> out;
     // The analyzer reads files given whole (ProgramSet::add): the static rules walk every block.
     const interpreter::LoadedFile& loaded = programs.file(file);
@@ -326,11 +382,13 @@ std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t
     std::thread run_thread;
     if (parallel) run_thread = std::thread(dry_run);
     const interpreter::ProgramSet::Loader loader = programs.loader();
-    const FileContext ctx{typed, dialect, setup, [&](std::int64_t n) {
-                              if (!parallel) return programs.find_or_load(n, file).has_value();
-                              return loaded.find_program(n).has_value() || (loader && loader(n).has_value());
-                          },
-                          options.program_files};
+    FileContext ctx{typed, dialect, setup, [&](std::int64_t n) {
+                        if (!parallel) return programs.find_or_load(n, file).has_value();
+                        return loaded.find_program(n).has_value() || (loader && loader(n).has_value());
+                    },
+                    options.program_files};
+    ctx.resident = options.resident;
+    ctx.caller_arguments = options.caller_arguments;
     run_static(ctx, rules, static_tallies, out);
     map_diagnostics(tree, tree.diagnostics, registry, rules, tally_of(static_tallies), out);
     map_diagnostics(tree, typed.diagnostics(), registry, rules, tally_of(static_tallies), out);

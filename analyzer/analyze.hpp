@@ -21,6 +21,15 @@
 
 namespace kerf::analyzer {
 
+// A program of another control, as detection found it (grammar/detect.hpp Detection::Foreign): the
+// check reports that once (K2009 foreign-control) instead of reading the file as FANUC.
+struct ForeignControl {
+    std::string id, name;
+    std::uint32_t line = 0, column = 0;   // 1-based, where the evidence first shows (0: the whole file)
+    std::string evidence;                 // what shows it there ("a line starting with '%@MACRO'")
+    std::string proves;
+};
+
 struct CheckOptions {
     const Registry* registry = nullptr;   // nullptr: builtin_rules()
     CheckConfig config;
@@ -34,6 +43,13 @@ struct CheckOptions {
     // severity info (0 = all). Bounds the output and the memory whatever the file.
     std::size_t max_findings_per_rule = 100;
     std::chrono::milliseconds time_limit{0};   // of the dry run (interpreter RunOptions::time_limit)
+    std::optional<ForeignControl> foreign;     // detection found another control's program
+    // Programs resident in the machine (.kerf.toml [programs] resident): no K3003 for calls into
+    // them, and the dry run skips them with a message (interpreter RunOptions::resident).
+    std::function<bool(std::int64_t)> resident;
+    // The argument letters the callers found by the program index pass to program O`number` (as local
+    // variable numbers, #1 A ... #26 Z); empty or unset: no caller known (K4001).
+    std::function<std::vector<int>(std::int64_t number)> caller_arguments;
     // How the dry run starts (project/start.hpp): its passes and preset variables (the analyzer
     // sets lenient, time_limit and emit_state), and the main program when it is not the file's
     // first (a caller's block: a macro run as it is used).
@@ -61,7 +77,7 @@ struct DryRunHooks {
     interpreter::EventSink* observer = nullptr;   // also sees every event of the run (with state events)
     bool emit_state = false;                       // RunOptions::emit_state, for the observer only
     decltype(interpreter::RunOptions::after_block) after_block;   // RunOptions::after_block
-    const std::atomic<bool>* cancel = nullptr;     // once set, the run stops at its next event
+    const std::atomic<bool>* cancel = nullptr;     // once set, the run stops before its next block (RunOptions::cancel)
 };
 // The dry run's findings (dynamic rules and alarms); nullopt when `hooks.cancel` stopped it.
 std::optional<std::vector<Finding>> check_dry_run(interpreter::ProgramSet& programs, std::uint32_t file,

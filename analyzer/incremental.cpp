@@ -45,6 +45,23 @@ bool reported_comment(std::string_view s) {
     return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
 }
 
+// K3011 (duplicate sequence numbers) reads every label of a program: an edit whose labels another
+// block carries too, before the edit (the last walk's tables) or after it (the new text), changes
+// what it says, so the file is walked whole. A label of its own matters only as a jump target.
+bool repeats_a_label(const std::vector<BlockEdit>& edits, const LabelTables& old, const ast::SyntaxTree& tree) {
+    std::vector<std::int64_t> edited;
+    for (const BlockEdit& e : edits) edited.insert(edited.end(), e.labels.begin(), e.labels.end());
+    if (edited.empty()) return false;
+    for (const auto& [program, table] : old)
+        if (std::any_of(edited.begin(), edited.end(), [&](std::int64_t n) { return table.count(n) > 1; })) return true;
+    std::vector<std::int64_t> now = block_labels(tree, 0, static_cast<std::uint32_t>(tree.block_count()));
+    std::sort(now.begin(), now.end());
+    return std::any_of(edited.begin(), edited.end(), [&](std::int64_t n) {
+        const auto [lo, hi] = std::equal_range(now.begin(), now.end(), n);
+        return hi - lo > 1;
+    });
+}
+
 }  // namespace
 
 std::uint64_t static_facts(const ast::SyntaxTree& tree, std::uint32_t first_block, std::uint32_t end_block) {
@@ -57,7 +74,9 @@ std::uint64_t static_facts(const ast::SyntaxTree& tree, std::uint32_t first_bloc
         for (const ast::Token& t : tree.block_tokens(b)) {
             switch (t.kind) {
                 case ast::TokenKind::word:
-                    if (std::string_view("OPQMopqm").find(t.letter) != std::string_view::npos) d.add(tree.spelling(t));
+                    // Lower-case words: K1026 counts and fixes them all at the file's first.
+                    if (std::string_view("OPQMopqm").find(t.letter) != std::string_view::npos || t.has(ast::token_flags::lower_case))
+                        d.add(tree.spelling(t));
                     break;
                 case ast::TokenKind::statement:
                     if (jumps_or_loops(tree.statements[static_cast<std::size_t>(t.payload)].kind)) d.add(tree.spelling(t));
@@ -240,6 +259,7 @@ std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
         bool computed = false;
         targets_ = jump_targets(tree, computed);
     }
+    if (valid_ && repeats_a_label(*in.edits, labels_, tree)) forget();
     if (valid_)
         for (const BlockEdit& e : *in.edits) apply(e);
     if (valid_ && !same_programs(programs_, typed.programs())) forget();

@@ -27,7 +27,7 @@
 namespace kerf::analyzer {
 
 // A hash of what static checks read beyond the block they check (rule.hpp, StaticCheck) in blocks
-// [first_block, end_block): the O, P, Q and M words, the macro statements that jump or loop, empty
+// [first_block, end_block): the O, P, Q and M words, lower-case words, the macro statements that jump or loop, empty
 // and non-ASCII comments, a byte order mark, the blocks that start and end programs, listing
 // ellipses (S0113). Two stretches with the same digest hold the same facts in the same order.
 // N labels are apart (block_labels): they matter only where something jumps to them.

@@ -114,6 +114,13 @@ struct FileContext {
     std::function<bool(std::int64_t)> program_exists;
     // The other files holding program O`number`, as a call reaches them (CheckOptions::program_files).
     std::function<std::vector<std::string>(std::int64_t)> program_files;
+    // Programs the machine keeps resident (.kerf.toml [programs] resident): calls into them are not
+    // findings (CheckOptions::resident). Empty: none.
+    std::function<bool(std::int64_t)> resident;
+    // The locals (#1 A ... #26 Z) callers elsewhere (the program index) pass to program O`number`
+    // (CheckOptions::caller_arguments; analyzer/arguments.hpp adds the file's own calls and the
+    // program's header documentation). Empty: none known.
+    std::function<std::vector<int>(std::int64_t)> caller_arguments;
     const ast::SyntaxTree& tree() const { return typed.tree(); }
     // The labels of program `program` (typed.programs() index), computed on first use.
     const LabelTable& labels(std::size_t program) const;

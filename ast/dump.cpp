@@ -37,6 +37,7 @@ std::string statement_to_string(const SyntaxTree& tree, std::int32_t index) {
             return fmt::format("IF {} GOTO {}", expr_to_string(tree, s.value), expr_to_string(tree, s.label));
         case StatementKind::if_then:
             return fmt::format("IF {} THEN {}", expr_to_string(tree, s.value), statement_to_string(tree, s.then_statement));
+        case StatementKind::if_words: return fmt::format("IF {} (the block's words)", expr_to_string(tree, s.value));
         case StatementKind::goto_: return "GOTO " + expr_to_string(tree, s.label);
         case StatementKind::while_do:
             return fmt::format("WHILE {} DO {}", expr_to_string(tree, s.value), expr_to_string(tree, s.label));

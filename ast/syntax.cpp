@@ -73,6 +73,7 @@ const char* to_string(StatementKind k) {
         case StatementKind::assign: return "assign";
         case StatementKind::if_goto: return "if_goto";
         case StatementKind::if_then: return "if_then";
+        case StatementKind::if_words: return "if_words";
         case StatementKind::goto_: return "goto";
         case StatementKind::while_do: return "while_do";
         case StatementKind::do_: return "do";

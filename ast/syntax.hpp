@@ -139,6 +139,7 @@ enum class StatementKind : std::uint8_t {
     do_,       // DO label
     end,       // END label
     dprnt, bprnt, popen, pclos,   // text = what is between the brackets
+    if_words,  // [Haas] IF [value] followed by the block's words: they run when value holds (lexical if_words)
 };
 const char* to_string(StatementKind k);
 

@@ -61,6 +61,7 @@ inline constexpr int syntax_error = 90002;   // a block with syntax errors in a 
 inline constexpr int internal = 90003;       // a tree the evaluator does not know (macro M0901)
 inline constexpr int move_limit = 90004;     // the run's move limit (Setup::move_limit, machine switch max_moves)
 inline constexpr int time_limit = 90005;     // the run's wall-clock limit (RunOptions::time_limit)
+inline constexpr int unknown_variable = 90006;   // a system variable kerf's tables do not have (K5009)
 // ... and warnings (`message` events that do not stop the run; docs/trace.md).
 inline constexpr int thread_speed_over_limit = 90101;   // lead × rpm over the machine's maximum cutting feed
 inline constexpr int not_modelled = 90102;              // the dry run does not model what the block does (K5009)
@@ -120,6 +121,7 @@ inline constexpr AlarmDef kAlarms[] = {
     {internal, "internal", "kerf: an internal evaluation error (M0901)"},
     {move_limit, "move_limit", "kerf: the run's move limit (machine switch `max_moves`)"},
     {time_limit, "time_limit", "kerf: the run's wall-clock limit (`--time-limit`, `[limits] time_limit`)"},
+    {unknown_variable, "unknown_variable", "kerf: a system variable kerf's tables do not have (the control may have it; the run stops)"},
     {thread_speed_over_limit, "thread_speed_over_limit", "kerf warning: a thread's lead × rpm over the maximum cutting feed"},
     {not_modelled, "not_modelled", "kerf warning: the dry run does not model what the block does"},
     {program_repeats, "program_repeats", "kerf note: M99 ended a pass of the main program; the control starts it again (bar feeder)"},

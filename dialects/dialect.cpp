@@ -55,6 +55,12 @@ const CodeInfo* Dialect::code(std::string_view spelling) const {
     return parsed ? code(parsed->first, parsed->second) : nullptr;
 }
 
+const VariableRange* Dialect::variable_range(std::int64_t number) const {
+    for (const VariableRange& v : variables)
+        if (number >= v.from && number <= v.to) return &v;
+    return nullptr;
+}
+
 std::vector<const CodeInfo*> Dialect::codes_with_function(FunctionId function) const {
     std::vector<const CodeInfo*> out;
     for (const CodeInfo& info : codes_)

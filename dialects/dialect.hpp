@@ -27,6 +27,9 @@ enum class Availability { standard, optional, not_fitted, machine_specific, unli
 enum class SemicolonRole { end_of_block, comment };
 enum class SubprogramCall { packed, p_l, both };
 enum class MachineKind { lathe, mill };
+// Where a jump to N`n` lands when several blocks carry N`n` (GOTO, M97 P, M99 P, M98 Q): the first
+// from the program's top, or the first after the jump, wrapping to the top (`[lexical] label_search`).
+enum class LabelSearch { from_top, forward };
 
 struct CodeInfo {
     char letter = 'G';
@@ -47,6 +50,9 @@ struct CodeInfo {
     std::string ru;
     std::string reference;
     std::string notes;
+    // `implied = ["P1"]`: words the code stands for, read as if the block had them (Haas G110 is
+    // G154 P1); a word the block writes itself wins.
+    std::vector<std::pair<char, double>> implied;
 
     // Derived from the fields above when the dialect is indexed (Dialect::reindex), so hot loops
     // compare bits, not strings: the function's traits plus the group's (traits::one_shot for a G
@@ -83,6 +89,8 @@ struct LexicalRules {
     std::string tool_word = "mmnn";
     bool macro_b = true;
     int max_m_per_block = 1;
+    LabelSearch label_search = LabelSearch::from_top;
+    bool if_words = false;   // [Haas] IF [...] may be followed by the block's words (IF [#1 NE 1.] G65 P9725)
 
     bool is_axis(char letter) const { return axes.find(letter) != std::string::npos; }
     bool is_diameter(char letter) const { return diameter_letters.find(letter) != std::string::npos; }
@@ -93,7 +101,7 @@ struct LexicalRules {
 
 // One clue of dialect detection (dialects/SCHEMA.md `[detect]`; grammar/detect.cpp weighs them).
 struct DetectClue {
-    enum class Kind : std::uint8_t { code, word, absent_word, comment, header, variable, lexical };
+    enum class Kind : std::uint8_t { code, word, absent_word, comment, header, variable, lexical, line };
     Kind kind = Kind::code;
     char letter = 0;                 // code: 'G' / 'M'; word, absent_word: the address letter
     CodeKey key = 0;                 // code
@@ -101,12 +109,38 @@ struct DetectClue {
     std::vector<std::pair<char, std::optional<double>>> with;   // code: words the block must have ("P0": P = 0)
     std::string with_any;            // code: one of these letters too; absent_word: the file has one of them
     std::string without;             // code: none of these letters in the block
-    std::string text;                // comment: the prefix; header: the text; lexical: the observation
+    std::string text;                // comment: the prefix; header: the text; lexical: the observation;
+                                     // line: what a source line starts with or contains
+    bool line_prefix = false;        // line: `starts_with` (else `contains`)
     std::int64_t from = 0, to = 0;   // variable: #from .. #to
     int weight = 0;                  // points for the first occurrence (negative: evidence against)
     std::string proves;              // what the clue proves, for the explanation
     bool own = true;                 // false: a base's clue in an overlay's combination
     int line = 0, column = 0;        // in the data file, for errors found once the dialect is complete
+};
+
+// A range of macro variables the dialect gives a meaning beyond FANUC Custom Macro B's
+// (`[[variables]]`, dialects/SCHEMA.md): the Haas NGC #10000 ranges. The interpreter asks the
+// dialect before its built-in system variables.
+enum class VariableKind : std::uint8_t {
+    common,         // general-purpose, kept for the run (vacant at power-on)
+    alias,          // the same variable as #(alias_of + n − from)
+    work_offsets,   // additional work offsets (G154 P / G54.1 P): `stride` variables per offset, axis order
+    setting,        // a control setting (#20000 + n): read as stored, else vacant
+    parameter,      // a control parameter (#30000 + n): read as stored, else vacant
+    tool_in_spindle,   // the tool in the spindle (Haas #3026)
+    spindle_rpm,       // the commanded spindle speed (Haas #3027)
+};
+struct VariableRange {
+    std::int64_t from = 0, to = 0;
+    VariableKind kind = VariableKind::common;
+    std::int64_t alias_of = 0;   // alias: the variable #from stands for
+    int first_set = 1;           // work_offsets: the offset number of #from (G154 P1)
+    int stride = 20;             // work_offsets: variables from one offset to the next
+    std::string axes;            // work_offsets: the axis of each variable of an offset ("XYZABC"); empty: the machine's order
+    bool read_only = false;
+    bool units = false;          // reading it tells a program its unit (Haas #20009, Setting 9 inch/mm)
+    std::string en, ru, reference;
 };
 
 struct DetectRules {
@@ -125,6 +159,13 @@ public:
     std::vector<std::string> bases;      // `base` inheritance: the dialect this one derives from, its base, ...
     DetectRules detect;                  // [detect]: the evidence that proves this dialect
     LexicalRules lexical;
+    std::vector<VariableRange> variables;   // [[variables]]: ranges beyond FANUC Macro B's
+    // A profile of another control (`foreign = true`): only its [detect] evidence, no tables. When
+    // it wins detection, kerf says so instead of reading the file as FANUC (issue 15).
+    bool foreign = false;
+
+    // The dialect's meaning of variable #`number`, or nullptr (FANUC's built-in ranges apply).
+    const VariableRange* variable_range(std::int64_t number) const;
 
     const CodeInfo* code(char letter, CodeKey key) const;
     const CodeInfo* code(std::string_view spelling) const;   // "G71", "m3", "G12.1"
@@ -186,6 +227,7 @@ struct DialectFile {
     std::vector<CodePatch> patches;
     bool detect_set = false;       // a [detect] table (else a derived dialect takes its base's)
     bool detect_inherit = false;   // [detect] inherit = true: the base's clues and these
+    bool variables_set = false;    // [[variables]] given (a derived dialect appends them to its base's)
     int base_line = 0, base_column = 0;
 };
 
@@ -219,10 +261,15 @@ public:
     std::vector<LoadError> add_text(std::string_view toml_text, std::string_view source_name);
     std::vector<LoadError> add_file(DialectFile file, std::string_view source_name);
     std::span<const DialectFile> overlay_files() const { return overlays_; }
+    // The profiles of other controls (`foreign = true` files), which detection weighs beside the
+    // dialects but which are no dialect to read a file in.
+    std::span<const Dialect> foreign_controls() const { return foreign_; }
+    const Dialect* find_foreign(std::string_view id) const;
 
 private:
     std::vector<LoadError> add_derived(DialectFile file, std::string_view source_name);
     std::deque<Dialect> dialects_;   // a deque keeps pointers stable as dialects are added
+    std::vector<Dialect> foreign_;
     std::vector<DialectFile> overlays_;
 };
 

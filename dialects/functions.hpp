@@ -70,6 +70,7 @@ struct FunctionDef {
 inline constexpr FunctionDef kFunctionDefs[] = {
     {"", 'G', 0, "no function"},
     {"absolute-programming", 'G', 0, "Absolute programming"},
+    {"accuracy-control", 'G', 0, "[Haas] G187: smoothness P1 rough, P2 medium, P3 finish and the corner rounding E of the path"},
     {"arc-approach", 'G', traits::arc_approach, "Seed-004 G12: tangential arc approach to the contour"},
     {"arc-exit", 'G', traits::arc_approach, "Seed-004 G13: tangential arc exit from the contour"},
     {"automatic-corner-override", 'G', 0, "Automatic feed override at inside corners"},
@@ -83,6 +84,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"back-boring-cycle", 'G', traits::cycle, "Back boring cycle"},
     {"bar-feed", 'M', 0, "Bar feed"},
     {"bar-feeder-advance", 'M', 0, "Bar feeder advance"},
+    {"bolt-hole-pattern", 'G', traits::cycle, "[Haas] mill G70/G71/G72: holes on a circle, an arc or a line, each made by the active drilling cycle"},
     {"boring-cycle", 'G', traits::cycle, "Boring cycle, feed out"},
     {"boring-dwell-cycle", 'G', traits::cycle, "Boring cycle with dwell, feed out"},
     {"boring-manual-retract-cycle", 'G', traits::cycle, "Boring cycle with dwell and manual retract"},
@@ -106,6 +108,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"chuck-open", 'M', 0, "Open main chuck"},
     {"circular-ccw", 'G', 0, "Circular (helical) interpolation counter-clockwise"},
     {"circular-cw", 'G', 0, "Circular (helical) interpolation clockwise"},
+    {"circular-pocket-ccw", 'G', traits::cycle, "[Haas] G13: circular pocket milling counter-clockwise (I first radius, K finish radius, Q step, Z depth)"},
+    {"circular-pocket-cw", 'G', traits::cycle, "[Haas] G12: circular pocket milling clockwise (I first radius, K finish radius, Q step, Z depth)"},
     {"clamp-external-main", 'M', 0, "External clamping, main spindle"},
     {"clamp-external-sub", 'M', 0, "External clamping, sub-spindle"},
     {"clamp-internal-main", 'M', 0, "Internal clamping, main spindle"},
@@ -141,6 +145,9 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"drilling-cycle", 'G', traits::cycle, "Drilling cycle (feed in, rapid out)"},
     {"drilling-dwell-cycle", 'G', traits::cycle, "Drilling cycle with dwell at the bottom"},
     {"dwell", 'G', 0, "Dwell (units differ: FANUC X/U s, P ms; ADV400 X/P s)"},
+    {"dynamic-work-offset", 'G', traits::not_modelled, "[Haas] G254: dynamic work offset (the work offset follows the rotary axes)"},
+    {"dynamic-work-offset-cancel", 'G', 0, "[Haas] G255: dynamic work offset cancel"},
+    {"engraving", 'G', traits::cycle, "[Haas] G47: text or serial number engraving"},
     {"exact-stop-check", 'G', 0, "Exact stop at the end of this block only"},
     {"exact-stop-mode", 'G', 0, "Exact stop at every block end (modal)"},
     {"face-boring-cycle", 'G', traits::cycle, "Lathe face boring cycle"},
@@ -170,6 +177,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"local-system-cancel", 'G', 0, "Cancel the local coordinate system (pcnc-mill G152)"},
     {"local-system-current-point", 'G', traits::not_in_plane_transform, "Local coordinate system placed so that the current tool point takes the programmed values"},
     {"local-system-shift", 'G', traits::not_in_plane_transform, "FANUC local coordinate system: origin shifted by the programmed vector"},
+    {"look-ahead-control", 'G', 0, "FANUC G05.1 Q1/Q0 (AI contour control / advanced preview) and G08: look-ahead on or off"},
+    {"look-ahead-limit", 'G', 0, "[Haas] G103 P: the blocks the control may read ahead (P0 or none: no limit)"},
     {"machine-builder-code", 'M', 0, "A machine builder's code whose meaning kerf does not model (user dialects; en/ru say what it does)"},
     {"machine-coordinate-select", 'G', traits::not_in_plane_transform, "One-shot move in machine coordinates (rapid, offsets ignored)"},
     {"machine-coordinate-select-g0-g1", 'G', traits::not_in_plane_transform, "One-shot move in machine coordinates with the active G0 or G1 (F allowed)"},
@@ -185,6 +194,12 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"modal-macro-call", 'G', traits::takes_arguments, "Modal custom macro call (after every move)"},
     {"modal-macro-call-cancel", 'G', 0, "Modal macro call cancel"},
     {"multiple-threading-cycle", 'G', traits::cycle | traits::threading, "Multi-pass threading cycle (two blocks)"},
+    {"one-block-face-peck-cycle", 'G', traits::cycle | traits::peck, "[Haas] lathe G74 X Z I K D: end-face grooving / peck drilling in one block (K Z peck, I X step)"},
+    {"one-block-grooving-cycle", 'G', traits::cycle | traits::peck, "[Haas] lathe G75 X Z I K D: O.D./I.D. grooving in one block (I X peck, K Z step)"},
+    {"one-block-pattern-repeating-cycle", 'G', traits::cycle | traits::profile_cycle, "[Haas] lathe G73 P Q I K D U W: irregular path stock removal in one block (D passes)"},
+    {"one-block-rough-facing-cycle", 'G', traits::cycle | traits::profile_cycle, "[Haas] lathe G72 P Q U W D: end-face stock removal in one block (D depth of cut)"},
+    {"one-block-rough-turning-cycle", 'G', traits::cycle | traits::profile_cycle, "[Haas] lathe G71 P Q U W D: O.D./I.D. stock removal in one block (D depth of cut)"},
+    {"one-block-threading-cycle", 'G', traits::cycle | traits::threading, "[Haas] lathe G76 X Z K D A: multiple pass threading in one block (K thread height, D first depth)"},
     {"optional-stop", 'M', traits::after_motion, "Optional stop"},
     {"part-counter", 'M', 0, "Part counter"},
     {"part-off-control", 'M', 0, "Part-off control"},
@@ -196,6 +211,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"plane-xy", 'G', traits::plane_xy | traits::not_in_plane_transform, "Plane selection XY (Xp-Yp)"},
     {"plane-yz", 'G', traits::plane_yz | traits::not_in_plane_transform, "Plane selection YZ (Yp-Zp)"},
     {"plane-zx", 'G', traits::plane_zx | traits::not_in_plane_transform, "Plane selection ZX (Zp-Xp)"},
+    {"pocket-milling-cycle", 'G', traits::cycle, "[Haas] G150: general purpose pocket milling over the contour of subprogram P"},
     {"polar-coordinate-command", 'G', traits::program_transform, "Polar coordinate command (end point as radius and angle)"},
     {"polar-coordinate-command-cancel", 'G', traits::program_transform, "Polar coordinate command cancel"},
     {"polar-interpolation-off", 'G', traits::plane_transform, "Polar coordinate interpolation cancel"},
@@ -283,6 +299,8 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"tailstock-release", 'M', 0, "Tailstock release"},
     {"tapping-cycle", 'G', traits::cycle, "Tapping cycle (spindle reverses at the bottom)"},
     {"tapping-mode", 'G', 0, "Tapping mode (overrides fixed, no exact-stop check)"},
+    {"thread-chamfer-off", 'M', 0, "[Haas] lathe M24: no chamfer (pull-out) at the end of a thread cycle"},
+    {"thread-chamfer-on", 'M', 0, "[Haas] lathe M23: chamfer (pull-out) at the end of a thread cycle"},
     {"thread-cutting", 'G', traits::threading | traits::not_in_plane_transform, "Thread cutting block (lead F, or E)"},
     {"thread-cutting-cycle", 'G', traits::cycle | traits::threading, "Single thread cutting cycle"},
     {"tool-change", 'M', 0, "Tool change"},
@@ -306,7 +324,7 @@ inline constexpr FunctionDef kFunctionDefs[] = {
     {"work-coordinate-4", 'G', 0, "Work coordinate system 4", 0, 4},
     {"work-coordinate-5", 'G', 0, "Work coordinate system 5", 0, 5},
     {"work-coordinate-6", 'G', 0, "Work coordinate system 6", 0, 6},
-    {"work-coordinate-additional", 'G', 0, "Additional work coordinate systems (G54.1 P1–P48)"},
+    {"work-coordinate-additional", 'G', 0, "Additional work coordinate systems (G54.1 P1–P48, [Haas] G154 P1–P99 and G110–G129)"},
     {"workpiece-transfer-cycle", 'G', traits::cycle, "SPINNER G38: push the part into the sub-spindle (torque limited), check position, clamp"},
 };
 
@@ -484,6 +502,16 @@ inline constexpr FunctionId axial_offset_plus = FunctionId::known("axial-offset-
 inline constexpr FunctionId axial_offset_minus = FunctionId::known("axial-offset-direction-minus");
 inline constexpr FunctionId arc_approach = FunctionId::known("arc-approach");
 inline constexpr FunctionId arc_exit = FunctionId::known("arc-exit");
+inline constexpr FunctionId one_block_rough_turning_cycle = FunctionId::known("one-block-rough-turning-cycle");     // [Haas] G71 D
+inline constexpr FunctionId one_block_rough_facing_cycle = FunctionId::known("one-block-rough-facing-cycle");       // [Haas] G72 D
+inline constexpr FunctionId one_block_pattern_repeating_cycle = FunctionId::known("one-block-pattern-repeating-cycle");   // [Haas] G73 D
+inline constexpr FunctionId one_block_threading_cycle = FunctionId::known("one-block-threading-cycle");             // [Haas] G76 K D
+inline constexpr FunctionId one_block_grooving_cycle = FunctionId::known("one-block-grooving-cycle");               // [Haas] G75 I
+inline constexpr FunctionId one_block_face_peck_cycle = FunctionId::known("one-block-face-peck-cycle");             // [Haas] G74 K
+inline constexpr FunctionId thread_chamfer_on = FunctionId::known("thread-chamfer-on");                             // [Haas] M23
+inline constexpr FunctionId thread_chamfer_off = FunctionId::known("thread-chamfer-off");                           // [Haas] M24
+inline constexpr FunctionId work_coordinate_additional = FunctionId::known("work-coordinate-additional");           // G54.1 P, [Haas] G154 P, G110–G129
+inline constexpr FunctionId dynamic_work_offset = FunctionId::known("dynamic-work-offset");                         // [Haas] G254
 inline constexpr FunctionId machine_builder_code = FunctionId::known("machine-builder-code");   // user dialects: no behaviour
 inline constexpr FunctionId undocumented = FunctionId::known("undocumented");                   // a seed's code without a usable meaning
 // Modes the converter knows read the same in G90 and G91 (converter/convert.cpp), and ADV400's homing.
@@ -492,6 +520,5 @@ inline constexpr FunctionId exact_stop_mode = FunctionId::known("exact-stop-mode
 inline constexpr FunctionId continuous_cutting_mode = FunctionId::known("continuous-cutting-mode");
 inline constexpr FunctionId axis_homing = FunctionId::known("axis-homing");                     // ADV400 G74 (cycles.md §11.4)
 // G54–G59 are work-coordinate-1 ... -6: read FunctionDef::work_coordinate, not the id.
-inline constexpr FunctionId work_coordinate_additional = FunctionId::known("work-coordinate-additional");   // G54.1 Pn
 
 }  // namespace kerf::dialects::functions

@@ -117,7 +117,7 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     info.key = parsed->second;
     const std::string label = fmt::format("{} ({})", where, info.spelling);
     r.check_keys(t, {"code", "aliases", "group", "modal", "default", "function", "words", "parameter_words", "required", "required_one_of",
-                     "availability", "availability_note", "en", "ru", "reference", "notes"},
+                     "availability", "availability_note", "en", "ru", "reference", "notes", "implied"},
                  label);
     info.aliases = r.strings(t, "aliases", label);
     for (const std::string& alias : info.aliases)
@@ -154,6 +154,15 @@ std::optional<CodeInfo> read_code(Reader& r, const toml::table& t, char letter, 
     info.ru = r.string(t, "ru", label, !partial);
     info.reference = r.string(t, "reference", label, !partial);
     info.notes = r.string(t, "notes", label, false);
+    for (const std::string& w : r.strings(t, "implied", label)) {
+        char* end = nullptr;
+        const double v = w.size() > 1 ? std::strtod(w.c_str() + 1, &end) : 0;
+        if (w.size() < 2 || w[0] < 'A' || w[0] > 'Z' || end != w.c_str() + w.size()) {
+            r.error(t.get("implied"), fmt::format("{}.implied: '{}' is not a letter with a value (\"P1\")", label, w));
+            continue;
+        }
+        info.implied.emplace_back(w[0], v);
+    }
     return info;
 }
 
@@ -162,7 +171,7 @@ LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, s
     const std::string where = "lexical";
     r.check_keys(t, {"semicolon", "paren_comments", "line_comments", "incremental_letters", "axes", "diameter_letters",
                      "comma_words", "plain_direct_drawing", "subprogram_call", "decimal_comma", "calculator_decimal",
-                     "dwell_p_unit", "program_digits", "tool_word", "macro_b", "max_m_per_block"},
+                     "dwell_p_unit", "program_digits", "tool_word", "macro_b", "max_m_per_block", "label_search", "if_words"},
                  where);
     for (const auto& [key, node] : t) set.emplace_back(key.str());
     if (t.contains("semicolon")) {
@@ -224,6 +233,13 @@ LexicalRules read_lexical(Reader& r, const toml::table& t, LexicalRules rules, s
             r.error(t.get("tool_word"), fmt::format("lexical.tool_word: unknown value '{}' (mmnn or number)", rules.tool_word));
     }
     rules.macro_b = r.boolean(t, "macro_b", where, rules.macro_b);
+    rules.if_words = r.boolean(t, "if_words", where, rules.if_words);
+    if (t.contains("label_search")) {
+        const std::string s = r.string(t, "label_search", where, false);
+        if (s == "from-top") rules.label_search = LabelSearch::from_top;
+        else if (s == "forward") rules.label_search = LabelSearch::forward;
+        else r.error(t.get("label_search"), fmt::format("lexical.label_search: unknown value '{}' (from-top or forward)", s));
+    }
     if (const toml::node* n = t.get("max_m_per_block")) {
         if (const auto v = n->value<std::int64_t>(); v && *v >= 1 && *v <= 9)
             rules.max_m_per_block = static_cast<int>(*v);
@@ -368,7 +384,7 @@ void read_detect(Reader& r, const toml::table& root, DialectFile& file) {
     }
     file.detect_set = true;
     DetectRules& rules = file.dialect.detect;
-    r.check_keys(*t, {"default", "inherit", "codes", "words", "comments", "headers", "variables", "lexical"}, "detect");
+    r.check_keys(*t, {"default", "inherit", "codes", "words", "comments", "headers", "variables", "lexical", "lines"}, "detect");
     rules.fallback = r.boolean(*t, "default", "detect", false);
     file.detect_inherit = r.boolean(*t, "inherit", "detect", false);
     each_table(r, *t, "codes", "detect", [&](const toml::table& e, const std::string& where) {
@@ -460,6 +476,71 @@ void read_detect(Reader& r, const toml::table& root, DialectFile& file) {
         c.spelling = "text after ';' that reads as no block";
         rules.clues.push_back(std::move(c));
     });
+    each_table(r, *t, "lines", "detect", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"starts_with", "contains", "weight", "proves"}, where);
+        DetectClue c;
+        c.kind = DetectClue::Kind::line;
+        c.line_prefix = e.contains("starts_with");
+        if (c.line_prefix == e.contains("contains")) {
+            r.error(&e, fmt::format("{}: give either `starts_with` or `contains`", where));
+            return;
+        }
+        c.text = r.string(e, c.line_prefix ? "starts_with" : "contains", where, true);
+        if (c.text.empty() || !read_weight(r, e, where, c)) return;
+        c.spelling = fmt::format("a line {} '{}'", c.line_prefix ? "starting with" : "with", c.text);
+        rules.clues.push_back(std::move(c));
+    });
+}
+
+// [[variables]]: ranges of macro variables the dialect defines (the Haas NGC #10000 ranges).
+void read_variables(Reader& r, const toml::table& root, DialectFile& file) {
+    file.variables_set = root.contains("variables");
+    each_table(r, root, "variables", "top level", [&](const toml::table& e, const std::string& where) {
+        r.check_keys(e, {"from", "to", "kind", "alias_of", "first_set", "stride", "axes", "read_only", "units", "en", "ru", "reference"}, where);
+        VariableRange v;
+        const auto integer = [&](std::string_view key) -> std::optional<std::int64_t> {
+            const toml::node* n = e.get(key);
+            return n ? n->value<std::int64_t>() : std::nullopt;
+        };
+        const auto from = integer("from"), to = integer("to");
+        if (!from || !to || *from < 1 || *to < *from) {
+            r.error(&e, fmt::format("{}: expected integers 1 <= from <= to", where));
+            return;
+        }
+        v.from = *from;
+        v.to = *to;
+        const std::string kind = r.string(e, "kind", where, true);
+        if (kind == "common") v.kind = VariableKind::common;
+        else if (kind == "alias") v.kind = VariableKind::alias;
+        else if (kind == "work-offsets") v.kind = VariableKind::work_offsets;
+        else if (kind == "setting") v.kind = VariableKind::setting;
+        else if (kind == "parameter") v.kind = VariableKind::parameter;
+        else if (kind == "tool-in-spindle") v.kind = VariableKind::tool_in_spindle;
+        else if (kind == "spindle-rpm") v.kind = VariableKind::spindle_rpm;
+        else {
+            r.error(e.get("kind"), fmt::format("{}.kind: unknown value '{}' (common, alias, work-offsets, setting, parameter, "
+                                               "tool-in-spindle, spindle-rpm)", where, kind));
+            return;
+        }
+        if (v.kind == VariableKind::alias) {
+            const auto to_number = integer("alias_of");
+            if (!to_number || *to_number < 1) {
+                r.error(&e, fmt::format("{}: an alias needs `alias_of`, the variable #from stands for", where));
+                return;
+            }
+            v.alias_of = *to_number;
+        }
+        if (const auto s = integer("first_set")) v.first_set = static_cast<int>(*s);
+        if (const auto s = integer("stride")) v.stride = static_cast<int>(*s);
+        if (v.stride < 1 || v.stride > 100) r.error(e.get("stride"), fmt::format("{}.stride: expected 1..100", where));
+        if (e.contains("axes")) v.axes = r.letters(e, "axes", where);
+        v.read_only = r.boolean(e, "read_only", where, false);
+        v.units = r.boolean(e, "units", where, false);
+        v.en = r.string(e, "en", where, true);
+        v.ru = r.string(e, "ru", where, true);
+        v.reference = r.string(e, "reference", where, true);
+        file.dialect.variables.push_back(std::move(v));
+    });
 }
 
 }  // namespace
@@ -473,12 +554,26 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     DialectFile file;
     Dialect& d = file.dialect;
     r.check_keys(root, {"id", "name", "machine", "reference", "overlay", "applies_to", "combined_ids", "base", "remove",
-                        "lexical", "g", "m", "patch", "detect"},
+                        "lexical", "g", "m", "patch", "detect", "variables", "foreign"},
                  "top level");
     d.id = r.string(root, "id", "top level", true);
     d.name = r.string(root, "name", "top level", true);
     d.reference = r.string(root, "reference", "top level", false);
     file.overlay = r.boolean(root, "overlay", "top level", false);
+    d.foreign = r.boolean(root, "foreign", "top level", false);
+    if (d.foreign) {
+        // A profile of another control: its name and the evidence, nothing to read a program with.
+        for (const char* key : {"machine", "overlay", "base", "lexical", "g", "m", "patch", "variables"})
+            if (root.contains(key))
+                r.error(root.get(key), fmt::format("{}: a foreign control profile (`foreign = true`) has only id, name, "
+                                                   "reference and [detect]", key));
+        read_detect(r, root, file);
+        d.set_codes({});   // no codes: the (empty) lookup tables still exist for detection's code clues
+        if (!file.detect_set) r.error(&root, "a foreign control profile needs the [detect] evidence that recognises it");
+        result.errors = std::move(r.errors);
+        if (result.errors.empty()) result.file = std::move(file);
+        return result;
+    }
     file.base = r.string(root, "base", "top level", false);
     if (const toml::node* b = root.get("base")) {
         file.base_line = static_cast<int>(b->source().begin.line);
@@ -514,6 +609,7 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     read_remove(r, root, file);
     read_patches(r, root, file);
     read_detect(r, root, file);
+    read_variables(r, root, file);
     std::vector<CodeInfo> codes = read_codes(r, root, 'G');
     std::vector<CodeInfo> ms = read_codes(r, root, 'M');
     codes.insert(codes.end(), std::make_move_iterator(ms.begin()), std::make_move_iterator(ms.end()));
@@ -545,6 +641,8 @@ void override_lexical(LexicalRules& lex, const DialectFile& file) {
         else if (key == "tool_word") lex.tool_word = o.tool_word;
         else if (key == "macro_b") lex.macro_b = o.macro_b;
         else if (key == "max_m_per_block") lex.max_m_per_block = o.max_m_per_block;
+        else if (key == "label_search") lex.label_search = o.label_search;
+        else if (key == "if_words") lex.if_words = o.if_words;
     }
 }
 
@@ -577,6 +675,7 @@ void apply_patch(CodeInfo& c, const CodePatch& p) {
         else if (key == "ru") c.ru = f.ru;
         else if (key == "reference") c.reference = f.reference;
         else if (key == "notes") c.notes = f.notes;
+        else if (key == "implied") c.implied = f.implied;
     }
 }
 
@@ -623,6 +722,7 @@ Dialect derive_dialect(const Dialect& base, const DialectFile& file, std::string
     } else {
         out.detect.fallback = false;   // one default dialect: the base stays it
     }
+    out.variables.insert(out.variables.end(), d.variables.begin(), d.variables.end());
     std::vector<CodeInfo> codes(base.codes().begin(), base.codes().end());
     for (const auto& [spelling, at] : file.remove) {
         const auto parsed = parse_code_spelling(spelling);

@@ -10,6 +10,12 @@ const Dialect* Registry::find(std::string_view id) const {
     return nullptr;
 }
 
+const Dialect* Registry::find_foreign(std::string_view id) const {
+    for (const Dialect& d : foreign_)
+        if (d.id == id) return &d;
+    return nullptr;
+}
+
 std::vector<std::string> Registry::ids() const {
     std::vector<std::string> out;
     for (const Dialect& d : dialects_) out.push_back(d.id);
@@ -33,6 +39,12 @@ std::vector<LoadError> Registry::add_text(std::string_view toml_text, std::strin
 }
 
 std::vector<LoadError> Registry::add_file(DialectFile file, std::string_view source_name) {
+    if (file.dialect.foreign) {
+        const auto same = std::find_if(foreign_.begin(), foreign_.end(), [&](const Dialect& d) { return d.id == file.dialect.id; });
+        if (same != foreign_.end()) *same = std::move(file.dialect);
+        else foreign_.push_back(std::move(file.dialect));
+        return {};
+    }
     if (!file.base.empty()) return add_derived(std::move(file), source_name);
     if (!file.overlay) {
         std::vector<LoadError> errors = check_detect(file.dialect, source_name);

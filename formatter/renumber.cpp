@@ -24,12 +24,13 @@ struct Reference {
     std::uint32_t token = 0;              // the word, or the statement token
     std::optional<ast::Range> label;      // GOTO: the label expression inside the statement
     std::int64_t value = 0;
-    std::vector<std::uint32_t> programs;  // the programs whose labels it may mean
+    // The programs whose labels it may mean, each with the block it lands on there (none: no block
+    // carries the label; references::jump_target, which follows the dialect's label search).
+    std::vector<std::pair<std::uint32_t, std::optional<std::uint32_t>>> targets;
 };
 
 // What one program's N words become.
 struct ProgramNumbers {
-    std::map<std::int64_t, std::int64_t> renamed;   // old N (first block with it) → new N
     std::set<std::int64_t> created;                 // every new N of the program
 };
 
@@ -41,11 +42,12 @@ public:
         if (!syntax_clean()) return problems_;
         collect_references();
         if (!problems_.empty()) return problems_;
-        std::vector<std::set<std::int64_t>> referenced(file_.programs().size());
+        std::set<std::uint32_t> targets;   // the blocks something jumps to
         for (const Reference& r : references_)
-            for (const std::uint32_t p : r.programs) referenced[p].insert(r.value);
+            for (const auto& [program, block] : r.targets)
+                if (block) targets.insert(*block);
         std::vector<ProgramNumbers> numbers(file_.programs().size());
-        for (std::uint32_t p = 0; p < file_.programs().size(); ++p) numbers[p] = number_program(p, referenced[p]);
+        for (std::uint32_t p = 0; p < file_.programs().size(); ++p) numbers[p] = number_program(p, targets);
         if (!problems_.empty()) return problems_;
         for (const Reference& r : references_) resolve(r, numbers);
         if (!problems_.empty()) return problems_;
@@ -102,9 +104,11 @@ private:
                 continue;
             }
             // A label of a program in another file (M98 P Q) keeps its value: that file keeps its numbers.
-            references::LabelScope scope = references::label_scope(file_, r);
+            const references::LabelScope scope = references::label_scope(file_, r);
             const std::optional<ast::Range> label = r.kind == references::Kind::goto_label ? std::optional(r.range) : std::nullopt;
-            references_.push_back({r.block, r.token, label, *r.value, std::move(scope.programs)});
+            Reference ref{r.block, r.token, label, *r.value, {}};
+            for (const std::uint32_t p : scope.programs) ref.targets.emplace_back(p, references::jump_target(file_, p, r));
+            references_.push_back(std::move(ref));
         }
     }
 
@@ -136,20 +140,16 @@ private:
 
     // --- numbering ---------------------------------------------------------------------------------
 
-    // The N the interpreter would find for a label: the first block of the program with it.
-    ProgramNumbers number_program(std::uint32_t program, const std::set<std::int64_t>& referenced) {
+    // New numbers for the blocks of a program; `targets` are the blocks jumps land on (the
+    // interpreter's label search: the first from the top, or the next one after the jump).
+    ProgramNumbers number_program(std::uint32_t program, const std::set<std::uint32_t>& targets) {
         ProgramNumbers out;
         const ast::Program& p = file_.programs()[program];
-        std::set<std::int64_t> seen;
         std::int64_t next = style_.number_start;
         for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
             if (tree_.blocks[b].kind != ast::BlockKind::code) continue;
             const ast::BlockView view = file_.block(b);
-            const auto n = view.sequence_number();
-            const std::optional<std::int64_t> old =
-                n && *n == std::floor(*n) ? std::optional<std::int64_t>(static_cast<std::int64_t>(*n)) : std::nullopt;
-            const bool first_of_label = old && seen.insert(*old).second;
-            const bool target = first_of_label && referenced.count(*old);
+            const bool target = targets.count(b) > 0;
             switch (style_.block_numbers) {
                 case BlockNumbers::keep: break;
                 case BlockNumbers::remove:
@@ -168,7 +168,6 @@ private:
                     }
                     plan_.blocks[b] = next;
                     out.created.insert(next);
-                    if (first_of_label) out.renamed.emplace(*old, next);
                     next += style_.number_step;
                     break;
             }
@@ -180,9 +179,12 @@ private:
     // reference to no block keeps its value, unless renumbering would create that number.
     void resolve(const Reference& r, const std::vector<ProgramNumbers>& numbers) {
         std::optional<std::int64_t> value;
-        for (const std::uint32_t p : r.programs) {
-            const auto it = numbers[p].renamed.find(r.value);
-            const std::optional<std::int64_t> mapped = it != numbers[p].renamed.end() ? std::optional(it->second) : std::nullopt;
+        for (const auto& [p, target] : r.targets) {
+            std::optional<std::int64_t> mapped;
+            if (target) {
+                const auto it = plan_.blocks.find(*target);
+                mapped = it != plan_.blocks.end() && it->second != Renumbering::kRemove ? it->second : r.value;
+            }
             if (!mapped && numbers[p].created.count(r.value)) {
                 refuse(r.block, tree_.tokens[r.token].range(),
                        fmt::format("it refers to N{}, which no block has, and renumbering would create N{}", r.value, r.value),

@@ -175,11 +175,12 @@ void check_tree(const ast::SyntaxTree& tree) {
     for (std::size_t i = 0; i < n_statements; ++i) {
         const ast::Statement& s = tree.statements[i];
         check_range(s.range, n_text);
-        KERF_CHECK(static_cast<int>(s.kind) <= static_cast<int>(ast::StatementKind::pclos), i);
+        KERF_CHECK(static_cast<int>(s.kind) <= static_cast<int>(ast::StatementKind::if_words), i);
         expr_ref(i, s.target, s.kind == ast::StatementKind::assign);
         expr_ref(i, s.value,
                  s.kind == ast::StatementKind::assign || s.kind == ast::StatementKind::if_goto ||
-                     s.kind == ast::StatementKind::if_then || s.kind == ast::StatementKind::while_do);
+                     s.kind == ast::StatementKind::if_then || s.kind == ast::StatementKind::while_do ||
+                     s.kind == ast::StatementKind::if_words);
         expr_ref(i, s.label,
                  s.kind == ast::StatementKind::if_goto || s.kind == ast::StatementKind::while_do ||
                      s.kind == ast::StatementKind::goto_ || s.kind == ast::StatementKind::do_ ||

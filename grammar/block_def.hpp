@@ -242,6 +242,12 @@ struct macro_enabled_parser : builder_primitive<macro_enabled_parser> {
 };
 macro_enabled_parser const macro_enabled{};
 
+// [Haas] `IF [...] G65 P9725`: an IF whose action is the rest of the block (lexical if_words).
+struct if_words_enabled_parser : builder_primitive<if_words_enabled_parser> {
+    bool scan(Builder& b, It&, It) const { return b.rules.if_words; }
+};
+if_words_enabled_parser const if_words_enabled{};
+
 // DPRNT[...] text: brackets nest (#100[53] is a format), the text ends at the matching ']'.
 struct bracket_text_parser : builder_primitive<bracket_text_parser> {
     bool scan(Builder& b, It& first, It last) const {
@@ -280,6 +286,9 @@ struct make_statement_t {
                 s.label = b.pop();
                 s.value = b.pop();
                 break;
+            case StatementKind::if_words:
+                s.value = b.pop();
+                break;
             case StatementKind::if_then:
                 s.then_statement = b.statement_stack.back();
                 b.statement_stack.pop_back();
@@ -313,7 +322,8 @@ auto const assign_stmt =
 auto const goto_stmt = x3::omit[x3::raw[kw("goto") >> blanks >> label][make_statement_t{StatementKind::goto_}]];
 auto const if_stmt =
     transactional[x3::omit[x3::raw[kw("if") >> blanks >> bracket >> blanks >> kw("goto") >> blanks >> label][make_statement_t{StatementKind::if_goto}]]] |
-    x3::omit[x3::raw[kw("if") >> blanks >> bracket >> blanks >> kw("then") >> blanks >> assign_stmt][make_statement_t{StatementKind::if_then}]];
+    transactional[x3::omit[x3::raw[kw("if") >> blanks >> bracket >> blanks >> kw("then") >> blanks >> assign_stmt][make_statement_t{StatementKind::if_then}]]] |
+    (if_words_enabled >> x3::omit[x3::raw[kw("if") >> blanks >> bracket][make_statement_t{StatementKind::if_words}]]);
 auto const while_stmt =
     x3::omit[x3::raw[kw("while") >> blanks >> bracket >> blanks >> kw("do") >> blanks >> label][make_statement_t{StatementKind::while_do}]];
 auto const do_stmt = x3::omit[x3::raw[kw("do") >> blanks >> label][make_statement_t{StatementKind::do_}]];

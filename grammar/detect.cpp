@@ -22,6 +22,7 @@ dialects::LexicalRules permissive_rules() {
     r.line_comments = {"::", ";;"};
     r.comma_words = "ACR";
     r.macro_b = true;
+    r.if_words = true;   // Haas IF [...] G65: its words are evidence too
     return r;
 }
 
@@ -45,6 +46,7 @@ struct Facts {
     std::vector<std::pair<std::string_view, std::uint32_t>> header;      // comments before the first code
     std::vector<std::pair<double, std::uint32_t>> variables;             // #n with a plain number n
     std::vector<std::uint32_t> prose_after_semicolon;                    // offsets
+    std::vector<std::pair<std::string_view, std::uint32_t>> lines;       // source lines without leading blanks, offset
 };
 
 bool letter_ok(char L) { return L >= 'A' && L <= 'Z'; }
@@ -76,6 +78,15 @@ Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
                 {b, t.begin, number, value, number ? dialects::code_key(value) : std::nullopt});
             f.block_words.emplace_back(t.letter, value);
         }
+    }
+    const std::string_view text = tree.text;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find_first_of("\r\n", at);
+        if (end == std::string_view::npos) end = text.size();
+        std::size_t begin = at;
+        while (begin < end && (text[begin] == ' ' || text[begin] == '\t')) ++begin;
+        if (begin < end) f.lines.emplace_back(text.substr(begin, end - begin), static_cast<std::uint32_t>(begin));
+        at = end + 1;
     }
     for (const ast::Expr& e : tree.exprs) {
         if (e.kind != ast::ExprKind::variable || e.a < 0) continue;
@@ -142,11 +153,11 @@ std::vector<std::uint32_t> occurrences(const DetectClue& c, const Facts& f, cons
         }
         case DetectClue::Kind::comment:
             for (const auto& [text, offset] : f.comments)
-                if (text.starts_with(c.spelling)) at.push_back(offset);
+                if (text.starts_with(c.text)) at.push_back(offset);
             break;
         case DetectClue::Kind::header:
             for (const auto& [text, offset] : f.header)
-                if (upper(text).find(upper(c.spelling)) != std::string::npos) at.push_back(offset);
+                if (upper(text).find(upper(c.text)) != std::string::npos) at.push_back(offset);
             break;
         case DetectClue::Kind::variable:
             for (const auto& [n, offset] : f.variables)
@@ -154,6 +165,10 @@ std::vector<std::uint32_t> occurrences(const DetectClue& c, const Facts& f, cons
             break;
         case DetectClue::Kind::lexical:
             at = f.prose_after_semicolon;   // the one observation the schema knows
+            break;
+        case DetectClue::Kind::line:
+            for (const auto& [line, offset] : f.lines)
+                if (c.line_prefix ? line.starts_with(c.text) : line.find(c.text) != std::string_view::npos) at.push_back(offset);
             break;
     }
     return at;
@@ -271,6 +286,13 @@ Detection detect_dialect(std::string_view text, const dialects::Registry& regist
         scores.push_back(std::move(s));
     }
     Detection out;
+    // Profiles of other controls: the best one counts when it outweighs every dialect (a Syntec
+    // macro reads partly as FANUC, but its ':=' and '%@MACRO' weigh more).
+    std::optional<Score> foreign;
+    for (const dialects::Dialect& d : registry.foreign_controls()) {
+        Score s = weigh(d, facts, lines);
+        if (s.total > 0 && (!foreign || s.total > foreign->total)) foreign = std::move(s);
+    }
     const Score* best = nullptr;
     for (const Score& s : scores)   // ties go to the dialect registered first
         if (s.total > 0 && (!best || s.total > best->total)) best = &s;
@@ -299,6 +321,22 @@ Detection detect_dialect(std::string_view text, const dialects::Registry& regist
                                 "(`[detect] default = true`, dialects/SCHEMA.md): name the dialect in .kerf.toml, "
                                 "a (DIALECT: id) header comment or --dialect",
                                 out.dialect));
+    }
+    if (foreign && foreign->total > (best ? best->total : 0)) {
+        Detection::Foreign f;
+        f.id = foreign->dialect->id;
+        f.name = foreign->dialect->name;
+        f.score = foreign->total;
+        // The earliest clue: where the file first shows what it is.
+        const auto first = std::min_element(foreign->clues.begin(), foreign->clues.end(), [](const Clue& a, const Clue& b) {
+            return std::pair(a.line, a.column) < std::pair(b.line, b.column);
+        });
+        if (first != foreign->clues.end()) f.first = *first;
+        out.reasons.push_back(fmt::format("this looks like a {} program (score {}, more than any dialect): kerf reads "
+                                          "FANUC-family dialects", f.name, f.score));
+        out.reasons.push_back(fmt::format("  {} {}:", f.id, f.score));
+        for (const Clue& c : foreign->clues) out.reasons.push_back(clue_line(c));
+        out.foreign = std::move(f);
     }
     for (const Score* s : ranked) {
         out.reasons.push_back(fmt::format("  {} {}{}:", s->dialect->id, s->total,

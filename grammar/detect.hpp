@@ -32,6 +32,15 @@ struct Detection {
     bool evidence = true;              // false: nothing in the file pointed anywhere; `dialect` is the fallback
     std::vector<Clue> clues;           // every clue found, by dialect
     std::vector<std::pair<std::string, int>> scores;   // the candidates with a score, best first
+    // A profile of another control (`foreign = true` in the registry) outweighed every dialect: its
+    // id and name, and the first clue that proved it (line, column, what). `dialect` is still the
+    // best dialect (or the fallback), for a caller that reads the file anyway.
+    struct Foreign {
+        std::string id, name;
+        int score = 0;
+        Clue first;
+    };
+    std::optional<Foreign> foreign;
 };
 
 struct DetectOptions {

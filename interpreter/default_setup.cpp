@@ -123,12 +123,14 @@ Setup make_setup(const machine::Machine& m) {
                                                                                   : compensation::StartType::b;
     s.radius_comp.corners = sw.cutter_comp_corners == machine::CompCorners::arc ? compensation::CornerStyle::arc
                                                                                 : compensation::CornerStyle::intersection;
+    s.radius_comp.end_tolerance = sw.arc_tolerance;
     s.comp_shift_without_motion = sw.comp_shift_without_motion;
     s.g41_g42_swapped = sw.g41_g42_swapped;
     s.corner_slowdown_step = sw.corner_slowdown == machine::CornerSlowdown::step;
     s.iso_g43_approach = sw.iso_g43 == machine::IsoG43::approach_shorten;
     s.length_offset_at_once = sw.length_offset_motion == machine::LengthOffsetMotion::at_once;
     s.tool_offset_count = m.tool_offset_count;
+    s.m_codes = m.m_codes;
     for (const auto& [number, tool] : m.tools) s.tools[number] = tool_offset_of(tool);
     s.step_limit = static_cast<std::uint64_t>(sw.max_blocks);
     s.move_limit = static_cast<std::uint64_t>(sw.max_moves);

@@ -43,9 +43,14 @@ inline constexpr int syntax_error = 90002;   // a block with syntax errors in a 
 inline constexpr int internal = 90003;       // a tree the evaluator does not know (macro M0901)
 inline constexpr int move_limit = 90004;     // the run's move limit (Setup::move_limit): a cycle or loop without end?
 inline constexpr int time_limit = 90005;     // the run's wall-clock limit (RunOptions::time_limit)
+// A system variable (#1000 and up) the interpreter's tables do not have: the control may well have
+// it (O8200 reads #3101 as π), so the run stops there as kerf's limit, not the program's alarm 115.
+inline constexpr int unknown_variable = 90006;
 // The alarms that end a run at one of its bounds (interpreter/run_guard.hpp), not at a defect of
 // the program at that block: the formatter's --verify compares two runs only up to them.
-inline constexpr bool is_run_limit(int code) { return code == step_limit || code == move_limit || code == time_limit; }
+inline constexpr bool is_run_limit(int code) {
+    return code == step_limit || code == move_limit || code == time_limit || code == unknown_variable;
+}
 }  // namespace kerf_alarm
 
 // Codes of kerf's warning messages (`message` events that do not stop the run; docs/trace.md).

@@ -242,6 +242,10 @@ RunResult Executor::run(ProgramRef main) {
             pop_frame();
             continue;
         }
+        if (options_.cancel && options_.cancel->load(std::memory_order_relaxed)) {
+            result_.cancelled = true;
+            break;
+        }
         if (auto limit = guard_.block(++result_.blocks)) {
             const ast::BlockView view = file_of(f).block(f.block);
             view_ = nullptr;
@@ -249,11 +253,22 @@ RunResult Executor::run(ProgramRef main) {
             alarm(f, view, limit->number, std::move(limit->text));
             break;
         }
-        execute_block(f);
+        const std::uint32_t file = f.program.file, block = f.block;
+        execute_block(f);   // `f` may be gone: a call pushes a frame
+        if (options_.run_to && file == options_.run_to->file && reached(file, block)) {
+            result_.reached_block = true;
+            break;
+        }
     }
     result_.final_position = position_;
     result_.inch = flags_.inch;
     return result_;
+}
+
+// Whether block `block` of file `file` is RunOptions::run_to's (by its start in the file's text).
+bool Executor::reached(std::uint32_t file, std::uint32_t block) const {
+    const LoadedFile& loaded = programs_.file(file);
+    return loaded.file_range(loaded.block(block)).begin == options_.run_to->begin;
 }
 
 void Executor::execute_block(Frame& frame) {

@@ -138,6 +138,7 @@ public:
     std::optional<macro::Value> read(int number) override;
     macro::WriteResult write(int number, macro::Value value) override;
     bool read_only(int number) const override;
+    bool modelled(int number) const override;
 
 private:
     Executor& executor_;
@@ -199,10 +200,13 @@ private:
     int work_system_ = 0;            // 0..5 = G54..G59
     int additional_system_ = 0;      // n of G54.1 Pn while one is selected (then work_system_ is unused)
     std::array<Position, 6> work_offsets_{};   // G54..G59 (writable by #5221.., G10 L2)
-    std::map<int, Position> additional_offsets_;   // G54.1 Pn (writable by #7001.., #14001.., G10 L20)
+    // [dialect variables] the dialect's [[variables]] ranges (executor_dialect_variables.cpp).
+    std::map<std::int64_t, macro::Value> dialect_variables_;
+    bool thread_chamfer_ = true;     // [Haas] M23 / M24: chamfer out of a thread cycle
+    std::map<int, Position> additional_offsets_;   // G54.1 Pn, Haas G154 Pn (writable by #7001.., #14001.., G10 L20)
     const Position& active_work_offset() const;    // G54–G59 or G54.1 Pn
-    // G54.1 Pn / G10 L20 Pn: n from 1 to the machine's count, else alarm PS0030 (and nullopt).
-    std::optional<int> additional_number(const ast::BlockView& view, const BlockWords::Word* p);
+    // G54.1 Pn / G154 Pn / G10 L20 Pn: n from 1 to the machine's count, else alarm PS0030 (and nullopt).
+    std::optional<int> additional_number(const ast::BlockView& view, std::optional<double> p);
     Position external_offset_{};
     Position work_shift_{};          // G10 P0 (lathe), subtracted (semantics.md §2.6)
     Position local_shift_{};         // G52
@@ -284,12 +288,21 @@ private:
     enum class MPhase { before_motion, after_motion };
     void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words, MPhase phase);
     void call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    // [local calls] [Haas] M97 P: a label of the running program as a subroutine (executor_local_call.cpp).
+    void call_local_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    // A call to a program the run cannot find that the machine keeps resident (RunOptions::resident):
+    // said in a message and skipped; false when the program is not resident (alarm 078 follows).
+    bool skip_resident_call(const Frame& frame, const ast::BlockView& view, std::int64_t program, std::string_view how);
+    // [dialect variables] (executor_dialect_variables.cpp): nullopt/undefined when the range says so.
+    std::optional<macro::Value> read_dialect_variable(const dialects::VariableRange& range, int number);
+    macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value);
     void main_program_pass(Frame& frame, const ast::BlockView& view, const Word* p);   // M99 in the main program
     bool apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words);
     void emit_state(const SourceRef& where);
 
     // Helpers.
     const LoadedFile& file_of(const Frame& f) const { return programs_.file(f.program.file); }
+    bool reached(std::uint32_t file, std::uint32_t block) const;
     ast::Program program_of(const Frame& f) const;   // a copy: reading ahead may add programs
     SourceRef source(const Frame& f, const ast::BlockView& view) const;
     bool has_function(const ast::BlockView& view, dialects::FunctionId function) const;
@@ -335,6 +348,8 @@ private:
     void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const;
     void arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view);
     motion::Plane plane() const { return flags_.plane; }
+    // The block a jump to N`n` lands on in the frame's program: the first from the top, or with the
+    // dialect's label_search = forward the first after the frame's current block, wrapping to the top.
     std::optional<std::uint32_t> find_label(const Frame& f, double n) const;
     void pop_frame();
     void change_offsets(const std::function<void()>& change);
@@ -343,6 +358,7 @@ private:
 
     // System variables (executor_system.cpp).
     std::optional<macro::Value> read_system(int number);
+    bool system_modelled(int number) const;
     macro::WriteResult write_system(int number, macro::Value value);
     bool system_read_only(int number) const;
     std::optional<std::pair<int, std::size_t>> additional_variable(int number) const;   // #7001.., #14001..

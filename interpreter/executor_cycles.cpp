@@ -27,6 +27,7 @@ public:
         : ex_(ex), code_(code), view_(view), words_(words), has_end_(has_end), end_(end) {}
 
     dialects::FunctionId function() const override { return code_.function; }
+    bool thread_chamfer() const override { return ex_.thread_chamfer_; }
     std::string spelling() const override { return code_.spelling; }
     bool has(char letter) const override { return words_.get(letter) != nullptr; }
     bool takes(char letter) const override { return code_.takes_word(std::string_view(&letter, 1)); }
@@ -263,6 +264,7 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
     if (comp_path_) position_ = *comp_path_;
     profile.start = position_;
+    profile.q_block = *last;
     dialects::FunctionId motion = flags_.motion;
     bool ok = true;
     for (std::uint32_t b = *first; ok && b <= *last; ++b) {

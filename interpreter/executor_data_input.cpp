@@ -61,7 +61,7 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
         e.text = n == 0 ? "external work offset" : fmt::format("work offset G{}", 53 + n);
     } else if (l && std::lround(l->value) == 20) {
         // G10 L20 Pn: the additional work offset of G54.1 Pn ([FANUC]); G91 adds.
-        const auto number = additional_number(view, p);
+        const auto number = additional_number(view, p ? std::optional<double>(p->value) : std::nullopt);
         if (!number) return;
         change_offsets([&] { write_axes(additional_offsets_[*number], words, rules, flags_.incremental, value_of); });
         e.text = fmt::format("work offset G54.1 P{}", *number);

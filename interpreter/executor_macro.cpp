@@ -6,43 +6,13 @@
 
 #include "dialects/functions.hpp"
 #include "interpreter/executor.hpp"
+#include "interpreter/macro/arguments.hpp"
 
 namespace kerf::interpreter {
 
 namespace fn = dialects::functions;
 
 namespace {
-
-// Argument specification I: address → local variable (dialects.md §3.7; [FANUC] custom macro).
-int specification_one(char letter) {
-    switch (letter) {
-        case 'A': return 1;  case 'B': return 2;  case 'C': return 3;  case 'I': return 4;
-        case 'J': return 5;  case 'K': return 6;  case 'D': return 7;  case 'E': return 8;
-        case 'F': return 9;  case 'H': return 11; case 'M': return 13; case 'Q': return 17;
-        case 'R': return 18; case 'S': return 19; case 'T': return 20; case 'U': return 21;
-        case 'V': return 22; case 'W': return 23; case 'X': return 24; case 'Y': return 25;
-        case 'Z': return 26; default: return 0;
-    }
-}
-
-// Specification II: A B C, then up to ten sets I J K → #4..#33 (I_n = #(3n+1), J_n = #(3n+2),
-// K_n = #(3n+3)). A set ends when a letter does not come later in I J K than the previous one,
-// so `I1 K3 I4` is I1 K1 I2. The first set is specification I's I J K (#4 #5 #6), so one
-// mapping serves both, and where both name one variable the later word wins ([FANUC]).
-class ArgumentMapper {
-public:
-    int variable(char letter) {
-        const int ijk = letter == 'I' ? 0 : letter == 'J' ? 1 : letter == 'K' ? 2 : -1;
-        if (ijk < 0) return specification_one(letter);
-        if (ijk <= last_ijk_) ++set_;
-        last_ijk_ = ijk;
-        return set_ < 10 ? 4 + 3 * set_ + ijk : 0;   // an 11th set has no variable
-    }
-
-private:
-    int set_ = 0;
-    int last_ijk_ = -1;
-};
 
 // DPRNT[...] output ([FANUC] "External output commands"): characters are printed as written, `*`
 // prints a space, blanks are not printed, and `#n[ab]` prints variable n with a integer digits and
@@ -124,6 +94,11 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
             if (!c) return false;
             if (*c) return execute_statement(frame, view, tree.statements[static_cast<std::size_t>(s.then_statement)]);
             return true;
+        }
+        case ast::StatementKind::if_words: {
+            // [Haas] IF [...] G65 P9725: the block's words run only when the condition holds.
+            const auto c = condition();
+            return c.value_or(false);
         }
         case ast::StatementKind::if_goto:
         case ast::StatementKind::goto_: {
@@ -219,7 +194,7 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
                                                                                     const ast::BlockView& view,
                                                                                     const ast::MacroCall& call) {
     const ast::SyntaxTree& tree = view.tree();
-    ArgumentMapper mapper;
+    macro::ArgumentMapper mapper;
     std::vector<std::pair<int, macro::Value>> arguments;
     for (const std::uint32_t ti : call.arguments) {
         const ast::Token& t = tree.tokens[ti];
@@ -250,7 +225,8 @@ bool Executor::push_macro_frame(const Frame& frame, const ast::BlockView& view, 
                                 bool modal) {
     const auto target = programs_.find_or_load(program, frame.program.file);
     if (!target) {
-        alarm(frame, view, 78, fmt::format("G6{}: program O{:04} not found (alarm 078)", modal ? 6 : 5, program));
+        if (!skip_resident_call(frame, view, program, modal ? "G66" : "G65"))
+            alarm(frame, view, 78, fmt::format("G6{}: program O{:04} not found (alarm 078)", modal ? 6 : 5, program));
         return false;
     }
     int macros = 0;

@@ -299,8 +299,19 @@ void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) 
 
 std::optional<std::uint32_t> Executor::find_label(const Frame& f, double n) const {
     const LoadedFile& file = file_of(f);
-    for (std::uint32_t b = program_of(f).first_block; file.in_program(f.program.program, b); ++b)
-        if (const auto seq = file.block(b).sequence_number(); seq && *seq == n) return b;
+    const std::uint32_t first = program_of(f).first_block;
+    const auto has_label = [&](std::uint32_t b) {
+        const auto seq = file.block(b).sequence_number();
+        return seq && *seq == n;
+    };
+    // [Haas] forward from the jump, then from the top (dialects/SCHEMA.md label_search; the
+    // references resolver's find_label_from searches the same way).
+    const bool forward = dialect_.lexical.label_search == dialects::LabelSearch::forward && f.block > first;
+    if (forward)
+        for (std::uint32_t b = f.block; file.in_program(f.program.program, b); ++b)
+            if (has_label(b)) return b;
+    for (std::uint32_t b = first; file.in_program(f.program.program, b) && (!forward || b < f.block); ++b)
+        if (has_label(b)) return b;
     return std::nullopt;
 }
 
@@ -317,7 +328,8 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
     std::optional<ProgramRef> target = frame.program;
     if (call) target = programs_.find_or_load(call->program, frame.program.file);
     if (!target) {
-        alarm(frame, view, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
+        if (!skip_resident_call(frame, view, call->program, "M98"))
+            alarm(frame, view, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
         return;
     }
     if (static_cast<int>(frames_.size()) > setup_.max_call_depth) {
@@ -328,7 +340,8 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
     sub.program = *target;
     sub.block = program_of(sub).first_block;
     if (q) {
-        const auto label = find_label(sub, q->value);
+        // Without P the label is one of the running program: searched from the call (Haas forward search).
+        const auto label = find_label(call ? sub : frame, q->value);
         if (!label) {
             alarm(frame, view, 78, fmt::format("M98 Q{}: no sequence number N{} in the called program (alarm 078)", q->value, q->value));
             return;
@@ -410,6 +423,11 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
         } else if (f == fn::subprogram_call) {
             call_subprogram(frame, view, words);
             return;
+        } else if (f == fn::local_subprogram_call) {
+            call_local_subprogram(frame, view, words);   // [Haas] M97 (executor_local_call.cpp)
+            return;
+        } else if (f == fn::thread_chamfer_on || f == fn::thread_chamfer_off) {
+            thread_chamfer_ = f == fn::thread_chamfer_on;   // [Haas] M23 / M24 (cycles/haas_lathe.cpp)
         } else if (f == fn::subprogram_return) {
             e.kind = EventKind::return_;
             emit(e);

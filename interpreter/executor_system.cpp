@@ -88,8 +88,28 @@ macro::WriteResult ExecutorSystemVariables::write(int number, macro::Value value
     return executor_.write_system(number, value);
 }
 bool ExecutorSystemVariables::read_only(int number) const { return executor_.system_read_only(number); }
+bool ExecutorSystemVariables::modelled(int number) const { return executor_.system_modelled(number); }
+
+// Below #1000 (locals, commons) and in the tool offset tables kerf knows what exists (the offset
+// count is the machine's); elsewhere in the system variables a number read_system does not answer
+// may exist on the control: kerf's tables list the FANUC manual's variables, not all of them
+// (O8200 reads #3101 as π).
+bool Executor::system_modelled(int number) const {
+    // The ranges read_system answers from the manual's tables: a number in them it does not answer
+    // does not exist (a fourth axis's #5004 on three axes: alarm 115).
+    constexpr std::pair<int, int> kTables[] = {{1000, 1035}, {1100, 1135}, {3000, 3012}, {3901, 3902}, {4001, 4330}};
+    if (number < 1000 || dialect_.variable_range(number)) return true;
+    if (number >= kEndPoint && number <= kWorkOffsetsEnd) return true;
+    for (const auto& [first, last] : kTables)
+        if (number >= first && number <= last) return true;
+    const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
+    for (const OffsetRange& r : lathe ? std::span<const OffsetRange>(kLatheOffsets) : std::span<const OffsetRange>(kMillOffsets))
+        if (number >= r.first && number < r.first + r.count) return true;
+    return false;
+}
 
 bool Executor::system_read_only(int number) const {
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return range->read_only;
     // Modal information and positions are read-only (#4001-#4330, #5001-#5200); alarm 116.
     return (number >= 4001 && number <= 4330) || (number >= kEndPoint && number < kWorkOffsets) ||
            number == 3007 || number == 3011 || number == 3012;
@@ -97,6 +117,8 @@ bool Executor::system_read_only(int number) const {
 
 std::optional<macro::Value> Executor::read_system(int number) {
     using macro::Value;
+    // The dialect's own ranges first (Haas NGC #10000..: executor_dialect_variables.cpp).
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return read_dialect_variable(*range, number);
     const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
     // Tool offsets.
     for (const OffsetRange& r : lathe ? std::span<const OffsetRange>(kLatheOffsets) : std::span<const OffsetRange>(kMillOffsets)) {
@@ -181,6 +203,7 @@ std::optional<std::pair<int, std::size_t>> Executor::additional_variable(int num
 
 macro::WriteResult Executor::write_system(int number, macro::Value value) {
     using macro::WriteResult;
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return write_dialect_variable(*range, number, value);
     const double v = value.or_zero();
     const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
     if (number == 3000) {

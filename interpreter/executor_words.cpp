@@ -188,13 +188,13 @@ const Position& Executor::active_work_offset() const {
     return it == additional_offsets_.end() ? kZero : it->second;
 }
 
-std::optional<int> Executor::additional_number(const ast::BlockView& view, const BlockWords::Word* p) {
-    const long n = p ? std::lround(p->value) : 1;
-    if (n >= 1 && n <= setup_.additional_work_offset_count && (!p || p->value == static_cast<double>(n)))
+std::optional<int> Executor::additional_number(const ast::BlockView& view, std::optional<double> p) {
+    const long n = p ? std::lround(*p) : 1;
+    if (n >= 1 && n <= setup_.additional_work_offset_count && (!p || *p == static_cast<double>(n)))
         return static_cast<int>(n);
     alarm(*frame_, view, alarms::offset_number,
           fmt::format("additional work offset P{:g}: the machine has P1 to P{} (alarm 030, additional_work_offset_count)",
-                      p ? p->value : 1.0, setup_.additional_work_offset_count));
+                      p.value_or(1.0), setup_.additional_work_offset_count));
     return std::nullopt;
 }
 
@@ -222,8 +222,13 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
                 });
             }
         } else if (f == fn::work_coordinate_additional) {
-            // G54.1 Pn: the additional work coordinate system n ([FANUC]; no P is P1).
-            const auto n = additional_number(view, words.get('P'));
+            // G54.1 Pn ([FANUC]; no P is P1), Haas G154 Pn; Haas G110–G129 carry their P as data
+            // (`implied = ["P1"]`, haas-mill.toml: G110 is G154 P1, haas.co.uk "Programmable Offsets").
+            std::optional<double> p;
+            if (const auto* w = words.get('P')) p = w->value;
+            for (const auto& [letter, value] : c.info->implied)
+                if (letter == 'P' && !p) p = value;
+            const auto n = additional_number(view, p);
             if (!n) return false;
             change_offsets([&] { additional_system_ = *n; });
         } else if (f == fn::programmable_data_input) {

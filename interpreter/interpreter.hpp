@@ -3,10 +3,13 @@
 // machine differences from the Setup; the interpreter does no I/O.
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -33,6 +36,9 @@ struct RunOptions {
     // Wall-clock bound of the run (interpreter/run_guard.hpp): past it the run stops with alarm
     // kerf_alarm::time_limit. 0 = none (the library default: runs stay deterministic; the CLI sets one).
     std::chrono::milliseconds time_limit{0};
+    // Programs the machine keeps in its memory (.kerf.toml [programs] resident): a call to one the
+    // run cannot find is skipped with a message instead of alarm 078 (issue 15). Empty: none.
+    std::function<bool(std::int64_t)> resident;
     // M99 in the main program is the bar-feeder loop: the control starts the program again
     // (dialects.md §3.6). A dry run runs this many passes and ends with a note (RunResult::repeats);
     // times are for the passes run. At least 1.
@@ -40,6 +46,17 @@ struct RunOptions {
     // Macro variables set before the first block (`kerf run --set "#100=5"`, .kerf.toml [run] set):
     // the values a shop's common variables hold when the program is started.
     std::vector<std::pair<int, double>> preset;
+    // Cancellation: once another thread sets the flag, the run stops before its next block
+    // (RunResult::cancelled). The language server cancels the run of an older version of a document.
+    const std::atomic<bool>* cancel = nullptr;
+    // Run to a block: the run stops after the first execution of the block of file `file` (an index
+    // of the ProgramSet) that starts at byte `begin` (RunResult::reached_block). A block that
+    // calls stops after the call is made, a jump after it jumps.
+    struct BlockAt {
+        std::uint32_t file = 0;
+        std::uint32_t begin = 0;
+    };
+    std::optional<BlockAt> run_to;
 };
 
 struct RunResult {
@@ -59,6 +76,8 @@ struct RunResult {
     // Work positions (final_position) are in the program's unit at the end: inches when this is
     // set (G20, C: G70); distances and times are always mm and s.
     bool inch = false;
+    bool cancelled = false;             // RunOptions::cancel stopped the run (the result is partial)
+    bool reached_block = false;         // RunOptions::run_to: the run stopped after that block
 };
 
 RunResult run(ProgramSet& programs, ProgramRef main, const dialects::Dialect& dialect, const Setup& setup,

@@ -74,6 +74,11 @@ struct Setup {
     bool atan_minus_180 = false;       // Macro B ATAN result in -180..180 instead of 0..360 ([FANUC] NAT)
     bool dwell_f_seconds = true;       // `G4 F1` dwells F seconds (semantics.md §8.2, §12.15); false: ignored
     int tool_offset_count = 64;        // offset numbers 1..count exist
+    std::vector<int> m_codes;          // the machine builder's M codes (machine file m_codes); empty: not listed
+    // The machine comes from a machine file (the user's): its limits are the machine's. A built-in
+    // machine's spindle limit and M codes per block are guesses, so the rules that compare a
+    // program with them (K5021, K2006) stay silent without a machine file (issue 15).
+    bool machine_given = false;
     std::map<int, ToolOffset> tools;   // by offset number
     std::uint64_t step_limit = 10'000'000;
     std::uint64_t move_limit = 10'000'000;   // moves a run emits before it stops (machine switch max_moves)

@@ -38,6 +38,11 @@ std::string machine_to_toml(const Machine& m) {
     if (m.max_cutting_feed) root.insert("max_cutting_feed", *m.max_cutting_feed);
     root.insert("tool_offset_count", m.tool_offset_count);
     root.insert("additional_work_offset_count", m.additional_work_offset_count);
+    if (!m.m_codes.empty()) {
+        toml::array codes;
+        for (const int c : m.m_codes) codes.push_back(fmt::format("M{:02}", c));
+        root.insert("m_codes", std::move(codes));
+    }
 
     toml::table axes;
     for (const Axis& a : m.axes) {

@@ -373,7 +373,7 @@ LoadResult load_machine_text(std::string_view toml_text, std::string_view source
     r.check_keys(root,
                  {"id", "name", "kind", "base", "reference", "dialects", "diameter_x", "input_increment",
                   "calculator_decimal", "max_spindle_rpm", "max_live_tool_rpm", "max_cutting_feed",
-                  "tool_offset_count", "additional_work_offset_count", "axes", "work_offsets", "work_shift", "reference_points", "tools",
+                  "tool_offset_count", "additional_work_offset_count", "m_codes", "axes", "work_offsets", "work_shift", "reference_points", "tools",
                   "cycle_parameters", "tailstock", "switches"},
                  "top level");
 
@@ -459,6 +459,28 @@ LoadResult load_machine_text(std::string_view toml_text, std::string_view source
     if (const auto v = r.integer(root, "tool_offset_count", "", 1, 9999)) m.tool_offset_count = static_cast<int>(*v);
     if (const auto v = r.integer(root, "additional_work_offset_count", "", 0, 300))
         m.additional_work_offset_count = static_cast<int>(*v);
+    if (const toml::node* n = root.get("m_codes")) {
+        // The builder's M codes: "M25" or 25, each once (machine/SCHEMA.md).
+        m.m_codes.clear();
+        const toml::array* a = n->as_array();
+        if (!a) r.error(n, "m_codes: expected an array of M codes (\"M25\" or 25)");
+        for (const toml::node& item : a ? *a : toml::array{}) {
+            std::optional<std::int64_t> code;
+            if (item.is_integer()) code = item.as_integer()->get();
+            else if (const auto text = item.value<std::string>()) {
+                const auto spelled = dialects::parse_code_spelling(*text);
+                if (spelled && spelled->first == 'M' && spelled->second % 10 == 0) code = spelled->second / 10;
+            }
+            if (!code || *code < 0 || *code > 9999) {
+                r.error(&item, "m_codes: each entry is an M code, \"M25\" or 25 (0 .. 9999)");
+                continue;
+            }
+            if (std::find(m.m_codes.begin(), m.m_codes.end(), static_cast<int>(*code)) != m.m_codes.end())
+                r.error(&item, fmt::format("m_codes: M{} is listed twice", *code));
+            else
+                m.m_codes.push_back(static_cast<int>(*code));
+        }
+    }
 
     if (const toml::table* t = r.table(root, "work_offsets", "")) mr.read_work_offsets(*t);
     if (const toml::node* n = root.get("work_shift")) mr.read_axis_values(*n, "work_shift", m.work_shift);

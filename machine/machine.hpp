@@ -248,6 +248,9 @@ struct Machine {
     AxisValues work_shift;                      // G10 P0 register at power-on (lathe, semantics.md §2.6)
     std::array<AxisValues, 4> reference_points{};   // 1 = G28, 2–4 = G30 P2..P4; machine coordinates
     int tool_offset_count = 64;                 // offset numbers 1..count exist; unlisted ones are zero
+    // The machine builder's M codes this machine has (`m_codes = ["M25", "M165"]`): with the list,
+    // an M code neither the dialect nor the list has is a warning (K2011); without it, a note (K2010).
+    std::vector<int> m_codes;
     std::map<int, ToolOffset> tools;            // by offset number
     CycleParameters cycle_parameters;
     Tailstock tailstock;

@@ -33,6 +33,13 @@ Analysis analyze(Workspace& workspace, const fs::path& path, std::string text, c
     options.config = r.project->config().check;
     options.max_findings_per_rule = max_per_rule;
     options.time_limit = r.project->limits().time_limit;
+    options.resident = resident_programs(r.project->config().programs);
+    if (r.choice.foreign) {
+        // Detection found another control's program: the check says so once (K2009).
+        const grammar::Detection::Foreign& f = *r.choice.foreign;
+        options.foreign = an::ForeignControl{f.id, f.name, static_cast<std::uint32_t>(f.first.line),
+                                             static_cast<std::uint32_t>(f.first.column), f.first.what, f.first.proves};
+    }
     options.program_files = [&workspace, path](std::int64_t number) {
         std::vector<std::string> names;
         for (const IndexedProgram& p : workspace.find_programs(number, path))

@@ -23,6 +23,7 @@ bool load_program(DryRun& run, Workspace& workspace, const fs::path& file, std::
     if (!start.main) return false;
     run.main = *start.main;
     run.options = std::move(start.options);
+    run.options.resident = resident_programs(run.project->config().programs);
     return true;
 }
 

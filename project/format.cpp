@@ -7,6 +7,7 @@
 #include "ast/typed.hpp"
 #include "formatter/format.hpp"
 #include "formatter/verify.hpp"
+#include "project/start.hpp"
 #include "grammar/parse.hpp"
 
 namespace kerf::project {
@@ -42,6 +43,7 @@ void verify_result(Workspace& workspace, const fs::path& file, std::string text,
     v.setup = *resolved.setup;
     v.loader = workspace.loader_for(file);
     v.run.time_limit = resolved.project->limits().time_limit;
+    v.run.resident = resident_programs(resolved.project->config().programs);
     const std::string name = file.string();
     const formatter::VerifyResult result = formatter::verify(name, std::move(text), *r.formatted, v);
     if (!result.difference) return;

@@ -52,4 +52,9 @@ RunStart run_start(const RunSettings& settings, interpreter::ProgramSet& program
     return start;
 }
 
+std::function<bool(std::int64_t)> resident_programs(const ProgramSettings& programs) {
+    if (programs.resident.empty()) return {};
+    return [programs](std::int64_t n) { return programs.resident_contains(n); };
+}
+
 }  // namespace kerf::project

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,5 +30,10 @@ struct RunStart {
 // (the command line's --call); else the file's first program is the main program.
 RunStart run_start(const RunSettings& settings, interpreter::ProgramSet& programs, std::uint32_t file,
                    const dialects::Dialect& dialect, const std::string& name);
+
+// The programs the machine keeps in memory ([programs] resident) as the interpreter asks for them
+// (RunOptions::resident: a call to one the run cannot find is said and skipped); empty when the
+// project lists none. kerf run, plot, check and fmt --verify take the same (issue 15).
+std::function<bool(std::int64_t)> resident_programs(const ProgramSettings& programs);
 
 }  // namespace kerf::project

@@ -41,6 +41,7 @@ Project::SetupEntry load_setup(const fs::path& file, const dialects::Dialect& di
                                   fmt::format("machine '{}' is a {} but dialect '{}' is for {}s", m.id, kind_name(m.kind),
                                               dialect.id, kind_name(dialect.machine))});
     entry.setup = interpreter::make_setup(m);
+    entry.setup->machine_given = true;
     return entry;
 }
 
@@ -69,6 +70,7 @@ DialectChoice choose_dialect(const Overrides& overrides, const Config& config, s
         c.why = d.evidence ? fmt::format("dialect {} detected (score {})", c.id, d.confidence)
                            : fmt::format("dialect {}: no dialect evidence in the file", c.id);
         c.evidence = d.reasons;
+        c.foreign = d.foreign;
     }
     return c;
 }

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "dialects/dialect.hpp"
+#include "grammar/detect.hpp"
 #include "interpreter/program_set.hpp"
 #include "interpreter/setup.hpp"
 #include "project/config.hpp"
@@ -60,6 +61,9 @@ struct DialectChoice {
     std::string why;                     // "dialect fanuc-mill from --dialect", "... detected (score 7)"
     std::vector<std::string> evidence;   // detection's reasons (the header comment when it decided)
     bool no_evidence = false;            // detection found nothing in the file (the folder rule or the default chose)
+    // Detection found a program of another control (a `foreign = true` profile outweighed every
+    // dialect): `kerf check` then says so once instead of reading the file as FANUC (issue 15).
+    std::optional<grammar::Detection::Foreign> foreign;
 };
 
 // For a file without evidence: the dialect most programs of its folder were detected as, and why

@@ -253,6 +253,24 @@ std::optional<std::uint32_t> find_label(const ast::TypedFile& file, std::uint32_
     return std::nullopt;
 }
 
+std::optional<std::uint32_t> find_label_from(const ast::TypedFile& file, std::uint32_t program, std::int64_t label,
+                                             std::uint32_t from) {
+    if (file.dialect().lexical.label_search != dialects::LabelSearch::forward) return find_label(file, program, label);
+    const std::vector<std::uint32_t> blocks = label_blocks(file, program, label);
+    const auto after = std::upper_bound(blocks.begin(), blocks.end(), from);
+    if (after != blocks.end()) return *after;
+    if (!blocks.empty()) return blocks.front();
+    return std::nullopt;
+}
+
+std::optional<std::uint32_t> jump_target(const ast::TypedFile& file, std::uint32_t program, const Reference& r) {
+    if (!r.value) return std::nullopt;
+    // A jump inside its own program searches from where it stands; M99 P and M98 P Q name a label
+    // of another program, whose search starts at that program's top.
+    const bool own = program == r.program && r.kind != Kind::return_label && !r.label_program;
+    return own ? find_label_from(file, program, *r.value, r.block) : find_label(file, program, *r.value);
+}
+
 std::vector<std::uint32_t> callers_of(const ast::TypedFile& file, std::uint32_t program) {
     std::vector<std::uint32_t> out;
     const auto number = file.programs()[program].number;

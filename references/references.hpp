@@ -73,6 +73,14 @@ std::optional<std::uint32_t> program_numbered(const ast::TypedFile& file, std::i
 // The block a jump to N`label` in `program` lands on: the first block of the program that carries
 // it (the control searches from the program's start; dialects.md §2 "Sequence number").
 std::optional<std::uint32_t> find_label(const ast::TypedFile& file, std::uint32_t program, std::int64_t label);
+// The block a reference of this file jumps to in `program` (one of label_scope's programs): with
+// the dialect's `label_search = "forward"` (Haas) a jump from a block of that same program lands on
+// the first N`label` after the jumping block, wrapping to the program's top; else, and for labels of
+// another program (M98 P Q, M99 P), on the first from the top (find_label).
+std::optional<std::uint32_t> jump_target(const ast::TypedFile& file, std::uint32_t program, const Reference& r);
+// The same for a label `label` jumped to from block `from` of `program` (the interpreter's search).
+std::optional<std::uint32_t> find_label_from(const ast::TypedFile& file, std::uint32_t program, std::int64_t label,
+                                             std::uint32_t from);
 // Every block of `program` with N`label` (more than one: the first wins, the analyzer's K3002).
 std::vector<std::uint32_t> label_blocks(const ast::TypedFile& file, std::uint32_t program, std::int64_t label);
 

@@ -97,6 +97,7 @@ TEST_CASE("the macro error ids are the FANUC alarm numbers the dry run raises") 
     CHECK(interpreter::kerf_alarm::step_limit == alarms::step_limit);
     CHECK(interpreter::kerf_alarm::move_limit == alarms::move_limit);
     CHECK(interpreter::kerf_alarm::time_limit == alarms::time_limit);
+    CHECK(interpreter::kerf_alarm::unknown_variable == alarms::unknown_variable);
     CHECK(interpreter::kerf_warning::not_modelled == alarms::not_modelled);
     CHECK(interpreter::kerf_warning::program_repeats == alarms::program_repeats);
 }

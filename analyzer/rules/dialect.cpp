@@ -1,4 +1,6 @@
 // Dialect rules: what the dialect table says about codes and words (dialects/SCHEMA.md).
+#include <algorithm>
+#include <map>
 #include <set>
 
 #include "analyzer/rules/common.hpp"
@@ -16,16 +18,89 @@ void for_codes(const BlockContext& b, F&& f) {
         for (const ast::CodeRef& c : *codes) f(c);
 }
 
+// A G code the dialect does not have: alarm 010 (improper G code). M codes are not G codes: an M
+// code the table lacks is left to the machine builder's PMC (K2010/K2011 below).
 class UnknownCode : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
-        for_codes(b, [&](const ast::CodeRef& c) {
-            if (c.info || !c.key) return;
+        for (const ast::CodeRef& c : b.g) {
+            if (c.info || !c.key) continue;
             const ast::Token& t = b.token(c.token);
             out.report(t.range(), fmt::format("{} is not a code of {} (alarm 010)", b.tree().spelling(t), b.file.dialect.id),
                        "check the code number, or choose the dialect of the machine (--dialect)");
-        });
+        }
     }
+};
+
+// M codes the dialect's table does not list: a machine builder's code (coolant, clamps, probe
+// macro calls). The control passes them to the machine's PMC, it raises no alarm 010. Without a
+// list of the machine's M codes: one note per file naming them all (K2010); with the machine file's
+// list (m_codes), a warning for each code of neither list, once per file (K2011: the machine does
+// not have it).
+class UnlistedMCode : public StaticCheck {
+public:
+    explicit UnlistedMCode(bool machine_list) : machine_list_(machine_list) {}
+    void block(const BlockContext& b, Reporter& out) override {
+        const std::vector<int>& listed = b.file.setup.m_codes;
+        if (listed.empty() == machine_list_ || (!machine_list_ && noted_)) return;   // K2010 without a machine list, K2011 with one
+        for (const ast::CodeRef& c : b.m) {
+            const auto number = unlisted(c, listed);
+            if (!number || std::find(seen_.begin(), seen_.end(), *number) != seen_.end()) continue;
+            const ast::Token& t = b.token(c.token);
+            if (!machine_list_) {
+                note(b.file, t.range(), out);
+                return;
+            }
+            seen_.push_back(*number);
+            out.report(t.range(), fmt::format("{} is neither in the table of {} nor among the machine's M codes (machine file m_codes)",
+                                              b.tree().spelling(t), b.file.dialect.id),
+                       "check the code number, or add it to the machine file's m_codes");
+        }
+    }
+    void state(StateKey& key) const override {
+        key.add(noted_);
+        for (const int number : seen_) key.add(number);
+    }
+
+private:
+    // The M code number of a code the dialect does not list and the machine file does not either.
+    static std::optional<int> unlisted(const ast::CodeRef& c, const std::vector<int>& listed) {
+        if (c.info || !c.key || *c.key % 10 != 0) return std::nullopt;
+        const int number = *c.key / 10;
+        if (std::find(listed.begin(), listed.end(), number) != listed.end()) return std::nullopt;
+        return number;
+    }
+    // K2010: one note for the file at its first unlisted M code, naming every unlisted code of the
+    // file where it is first used (M words are among the facts incremental checking digests, so an
+    // edit that changes them walks the file whole).
+    void note(const FileContext& file, ast::Range at, Reporter& out) {
+        noted_ = true;
+        std::map<int, ast::Range> first;
+        std::vector<ast::CodeRef> g, m;
+        for (std::uint32_t i = 0; i < file.tree().block_count(); ++i) {
+            if (file.tree().blocks[i].kind != ast::BlockKind::code) continue;
+            file.typed.block(i).collect_codes(g, m);
+            for (const ast::CodeRef& c : m)
+                if (const auto number = unlisted(c, file.setup.m_codes)) first.try_emplace(*number, file.tree().tokens[c.token].range());
+        }
+        std::string codes;
+        for (const auto& [number, where] : first) codes += fmt::format("{}M{:02}", codes.empty() ? "" : ", ", number);
+        Finding& f = out.report(at,
+                                fmt::format("{} {} not in the table of {}: {} machine builder's M code{}?", codes,
+                                            first.size() == 1 ? "is" : "are", file.dialect.id, first.size() == 1 ? "a" : "the",
+                                            first.size() == 1 ? "" : "s"),
+                                "list the machine's own M codes in its machine file (m_codes), or use the dialect of the machine");
+        for (const auto& [number, where] : first) f.related.push_back({where, fmt::format("M{:02} first here", number)});
+    }
+    bool machine_list_;
+    bool noted_ = false;      // K2010: the file's note is made
+    std::vector<int> seen_;   // K2011: the codes reported in this file
+};
+struct UnlistedMCodeNote : UnlistedMCode {
+    UnlistedMCodeNote() : UnlistedMCode(false) {}
+};
+struct MCodeNotOnMachine : UnlistedMCode {
+    MCodeNotOnMachine() : UnlistedMCode(true) {}
 };
 
 class NotFitted : public StaticCheck {
@@ -133,7 +208,10 @@ class TooManyM : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         const int limit = b.file.dialect.lexical.max_m_per_block;
-        if (limit <= 0 || static_cast<int>(b.m.size()) <= limit) return;
+        // FANUC takes up to three M codes per block with parameter 3404#7 M3B, which most current
+        // machines set (the corpus' Doosan programs write two): only a machine file makes the
+        // dialect's limit the machine's (issue 15).
+        if (!b.file.setup.machine_given || limit <= 0 || static_cast<int>(b.m.size()) <= limit) return;
         const ast::Token& t = b.token(b.m[static_cast<std::size_t>(limit)].token);
         out.report(t.range(), fmt::format("{} M codes in one block; this control takes {}", b.m.size(), limit),
                    "split the M codes over several blocks");
@@ -187,8 +265,24 @@ public:
 void add_dialect(Registry& r) {
     const auto rule = rule_maker(Category::dialect);
     r.add(static_rule<UnknownCode>(rule("K2001", "unknown-code", S::error,
-        {"A G or M code the dialect does not have.", "The control stops with alarm 010 (improper G code).",
-         "G384 X10.", "G84 X10.", "gcode-tables.md; mcodes.md; dialects.md §1"})));
+        {"A G code the dialect does not have (M codes: K2010/K2011).", "The control stops with alarm 010 (improper G code).",
+         "G384 X10.", "G84 X10.", "gcode-tables.md; dialects.md §1"})));
+    // Detection found another control's program (analyzer/analyze.cpp reports it, nothing else).
+    r.add(rule("K2009", "foreign-control", S::warning,
+        {"A program of another control (Syntec, Fagor, a Macro Executor source, GRBL, a 3D printer, LinuxCNC): "
+         "the evidence of a foreign control profile (dialects/data/foreign-*.toml) outweighs every dialect's.",
+         "Read as FANUC, its statements would be dozens of false errors; on a FANUC control it would not run.",
+         "%@MACRO\n#100:=0;", "(name the dialect if the file is FANUC-family: --dialect fanuc-mill)",
+         "issue 15; dialects/SCHEMA.md Foreign controls"}));
+    r.add(static_rule<UnlistedMCodeNote>(rule("K2010", "unlisted-m-code", S::info,
+        {"The M codes the dialect's table does not list, one note per file (when the machine file lists no M codes).",
+         "M codes beyond the standard ones belong to the machine builder: the control hands them to the machine, "
+         "which may or may not have them. No alarm 010 (that is for G codes).",
+         "M25 G49", "(m_codes = [\"M25\"] in the machine file)", "mcodes.md; issue 15"})));
+    r.add(static_rule<MCodeNotOnMachine>(rule("K2011", "m-code-not-on-machine", S::warning,
+        {"An M code that neither the dialect's table nor the machine file's m_codes list has.",
+         "The machine has no such function: the block waits for an M-fin that never comes, or the PMC raises an alarm.",
+         "M77", "M07", "machine/SCHEMA.md m_codes; issue 15"})));
     r.add(opt_in(static_rule<NotFitted>(rule("K2002", "code-not-fitted", S::warning,
         {"A code the dialect table marks as an option or as not fitted (opt-in: for machines without options).",
          "A machine without the option raises alarm 010 on the code.",

@@ -1,7 +1,9 @@
 // Macro B rules read from the expressions (dialects.md §3.7; interpreter/macro/evaluate.hpp).
 #include <bitset>
 
+#include "analyzer/arguments.hpp"
 #include "analyzer/rules/common.hpp"
+#include "analyzer/rules/expressions.hpp"
 #include "dialects/alarms.hpp"
 
 namespace kerf::analyzer::rules {
@@ -11,55 +13,14 @@ namespace {
 using S = Severity;
 namespace fn = dialects::functions;
 
-// Calls `f(expr index, in_arithmetic)` for every node under `root`.
-template <class F>
-void walk(const ast::SyntaxTree& tree, std::int32_t root, bool arithmetic, F&& f) {
-    if (root < 0) return;
-    const ast::Expr& e = tree.exprs[static_cast<std::size_t>(root)];
-    f(root, arithmetic);
-    switch (e.kind) {
-        case ast::ExprKind::binary: {
-            const ast::BinaryOp op = e.binary_op();
-            const bool arith = op == ast::BinaryOp::add || op == ast::BinaryOp::sub || op == ast::BinaryOp::mul ||
-                               op == ast::BinaryOp::div || op == ast::BinaryOp::mod;
-            walk(tree, e.a, arith, f);
-            walk(tree, e.b, arith, f);
-            break;
-        }
-        case ast::ExprKind::variable: walk(tree, e.a, false, f); break;   // #[...]: an index, not a value
-        case ast::ExprKind::number: break;
-        default:
-            walk(tree, e.a, arithmetic, f);
-            walk(tree, e.b, arithmetic, f);
-    }
-}
-
-// The expressions a block reads (statement values and conditions, word values) and the constant
-// variable numbers it assigns, in execution order.
-template <class Read, class Assign>
-void block_expressions(const BlockContext& b, Read&& read, Assign&& assign) {
-    const ast::SyntaxTree& tree = b.tree();
-    auto statement = [&](const ast::Statement& st, auto& self) -> void {
-        read(st.value);
-        read(st.label);
-        if (st.kind == ast::StatementKind::assign) {
-            read(tree.exprs[static_cast<std::size_t>(st.target)].a);   // the index of #[...]
-            assign(st.target);
-        }
-        if (st.then_statement >= 0) self(tree.statements[static_cast<std::size_t>(st.then_statement)], self);
-    };
-    for (const ast::Token& t : b.view.tokens()) {
-        if (t.kind == ast::TokenKind::statement) statement(tree.statements[static_cast<std::size_t>(t.payload)], statement);
-        else if (t.kind == ast::TokenKind::word && t.has(ast::token_flags::value_expr)) read(t.payload);
-    }
-}
-
 // #1–#33 read in arithmetic before anything assigned them, in a main program (one that ends
 // with M30/M02: it has no arguments). Vacant in arithmetic is 0: a silent wrong value.
 class VacantLocal : public StaticCheck {
 public:
     void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
         assigned_.reset();
+        // G65 arguments (callers, or the header's `G65 P9994 A B C`) are set when the macro runs.
+        arguments_ = program_arguments(file.typed, program, file.caller_arguments).locals;
         const ast::Program& p = file.typed.programs()[program];
         main_ = false;
         for (std::uint32_t b = p.first_block; b < p.end_block && !main_; ++b) {
@@ -75,7 +36,7 @@ public:
                 const ast::Expr& e = tree.exprs[static_cast<std::size_t>(i)];
                 if (e.kind != ast::ExprKind::variable || !arithmetic) return;
                 const auto n = constant_of(tree, e.a);
-                if (!n || *n < 1 || *n > 33 || assigned_[static_cast<std::size_t>(*n)]) return;
+                if (!n || *n < 1 || *n > 33 || assigned_[static_cast<std::size_t>(*n)] || arguments_[static_cast<std::size_t>(*n)]) return;
                 out.report(e.range(), fmt::format("#{} is read in arithmetic but nothing set it: vacant counts as 0", *n),
                            fmt::format("assign #{} first, or use a common variable #100 and up", *n));
             });
@@ -84,13 +45,14 @@ public:
             if (const auto n = constant_of(tree, tree.exprs[static_cast<std::size_t>(target)].a); n && *n >= 1 && *n <= 33)
                 assigned_.set(static_cast<std::size_t>(*n));
         };
-        block_expressions(b, read, assign);
+        block_expressions(b.tree(), b.view, read, assign);
     }
 
     void state(StateKey& key) const override { key.add(static_cast<std::int64_t>(assigned_.to_ullong() * 2 + main_)); }
 
 private:
     std::bitset<34> assigned_;
+    LocalSet arguments_;
     bool main_ = false;
 };
 
@@ -107,7 +69,7 @@ public:
                     out.report(e.range(), "division by zero (alarm 112)", "check the divisor");
             });
         };
-        block_expressions(b, read, [](std::int32_t) {});
+        block_expressions(b.tree(), b.view, read, [](std::int32_t) {});
     }
 };
 
@@ -115,7 +77,7 @@ class WriteReadOnly : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         const ast::SyntaxTree& tree = b.tree();
-        block_expressions(b, [](std::int32_t) {}, [&](std::int32_t target) {
+        block_expressions(b.tree(), b.view, [](std::int32_t) {}, [&](std::int32_t target) {
             const ast::Expr& e = tree.exprs[static_cast<std::size_t>(target)];
             if (const auto n = constant_of(tree, e.a); n && *n == 0)
                 out.report(e.range(), "#0 is always vacant and cannot be written (alarm 116)", "assign another variable");
@@ -128,7 +90,8 @@ public:
 void add_macro(Registry& r) {
     const auto rule = rule_maker(Category::macro);
     r.add(static_rule<VacantLocal>(rule("K4001", "vacant-local-in-arithmetic", S::warning,
-        {"A local variable #1–#33 read in arithmetic in a main program before anything assigned it.",
+        {"A local variable #1–#33 read in arithmetic in a main program before anything assigned it (not a G65 argument: "
+         "one its callers pass, or its header documents as `G65 P9994 A B C`).",
          "A vacant variable counts as 0 in arithmetic: the move or the count is silently wrong.",
          "#2=#1+10.\nG01 X#2", "#1=5.\n#2=#1+10.\nG01 X#2", "dialects.md §3.7; [FANUC] vacant variables"})));
     r.add(with_alarms(static_rule<DivisionByZero>(rule("K4002", "division-by-zero", S::error,

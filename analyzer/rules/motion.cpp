@@ -1,6 +1,9 @@
 // Dynamic motion rules: they read the events of the dry run (docs/trace.md), so moves inside
 // subprograms, macros and (once expanded) cycles are checked as they actually run.
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "analyzer/analyze.hpp"
 #include "analyzer/rules/common.hpp"
@@ -119,35 +122,87 @@ public:
     }
 };
 
-// Mills: a rapid that moves across the part at a depth where the program cut before.
+// Mills: a rapid that moves across the part at a depth where the program cut before. Feed moves
+// before a tool goes down (G1 X Y at the change height after a tool change, 1006.nc N5895, or at
+// the clearance height after a retract, N5670) cut nothing; a sideways rapid of at most 1 mm is a
+// boring bar backing off the wall inside its bore (O0051 'G00 Y-.025 (BACK OFF SIDE OF BORE)'); a
+// rapid back to a point where the tool plunged since it last went down, no deeper than it cut
+// there, returns through its own pocket (O0057 N2102 'G00X1.4248Y-1.6769' after each pass, for
+// the next step down). Not a move across the part (issue 15).
 class RapidIntoCut : public DynamicCheck {
 public:
     void event(const RunContext& run, const Event& e, Reporter& out) override {
         if (run.dialect.machine != dialects::MachineKind::mill) return;
-        constexpr std::size_t x = 0, y = 1, z = 2;
+        constexpr std::size_t z = 2;
+        const bool down = e.end[z] < e.start[z] - kEps, up = e.end[z] > e.start[z] + kEps;
+        if (e.kind == EventKind::tool_change || (e.kind == EventKind::rapid && up)) {
+            approached_ = false;   // retracted: the next cut starts a new descent
+            plunges_.clear();
+            floor_ = 1e300;
+            if (e.kind == EventKind::tool_change) return;
+        }
         if (is_feed_move(e)) {
-            cut_level_ = std::max(cut_level_, std::min(e.start[z], e.end[z]));
-            for (const auto& p : {e.start, e.end}) {
-                lo_x_ = std::min(lo_x_, p[x]), hi_x_ = std::max(hi_x_, p[x]);
-                lo_y_ = std::min(lo_y_, p[y]), hi_y_ = std::max(hi_y_, p[y]);
+            if (approached_ || down) {
+                whole_.add(e);
+                floor_ = std::min(floor_, std::min(e.start[z], e.end[z]));
             }
+            if (down && plunges_.size() < kMaxPlunges) plunges_.push_back({e.start[0], e.start[1]});
+            approached_ = approached_ || down;
             return;
         }
-        if (e.kind != EventKind::rapid || e.source.file != run.checked_file || reported_) return;
-        const bool across = std::abs(e.end[x] - e.start[x]) > 1e-6 || std::abs(e.end[y] - e.start[y]) > 1e-6;
-        const bool inside = e.end[x] > lo_x_ && e.end[x] < hi_x_ && e.end[y] > lo_y_ && e.end[y] < hi_y_;
-        if (!across || !inside || std::max(e.start[z], e.end[z]) > cut_level_ + 1e-6) return;
+        if (e.kind != EventKind::rapid) return;
+        approached_ = approached_ || down;
+        if (e.source.file != run.checked_file || reported_) return;
+        const double level = std::max(e.start[z], e.end[z]);
+        if (sideways(e) * mm_per_unit(e) <= kBackOffMm || !whole_.inside(e.end) || level > whole_.level + kEps) return;
+        if (level >= floor_ - kEps && returns_to_plunge(e)) return;
         reported_ = true;
         out.report(where(run, e),
-                   fmt::format("rapid move across the part at Z{:g}, not above the level Z{:g} where the program cut", e.end[z],
-                               cut_level_),
+                   std::abs(level - whole_.level) <= kEps
+                       ? fmt::format("rapid move across the part at Z{:g}, the depth where the program cut", e.end[z])
+                       : fmt::format("rapid move across the part at Z{:g}, below the level Z{:g} where the program cut", e.end[z],
+                                     whole_.level),
                    "retract Z above the part before the rapid move");
     }
 
 private:
-    double cut_level_ = -1e300;
-    double lo_x_ = 1e300, hi_x_ = -1e300, lo_y_ = 1e300, hi_y_ = -1e300;
+    static constexpr double kBackOffMm = 1.0, kEps = 1e-6;
+    // A descent plunges at a handful of points (one per step down); more than this and the rapid is
+    // judged by the whole cut alone (the bound on what the rule keeps per run).
+    static constexpr std::size_t kMaxPlunges = 64;
+    // Where feed moves cut: the box of their ends and the highest of their lowest points (`level`:
+    // below it the program has cut somewhere).
+    struct Area {
+        double lo_x = 1e300, hi_x = -1e300, lo_y = 1e300, hi_y = -1e300;
+        double level = -1e300;
+        void add(const Event& e) {
+            constexpr std::size_t x = 0, y = 1, z = 2;
+            level = std::max(level, std::min(e.start[z], e.end[z]));
+            for (const auto& p : {e.start, e.end}) {
+                lo_x = std::min(lo_x, p[x]), hi_x = std::max(hi_x, p[x]);
+                lo_y = std::min(lo_y, p[y]), hi_y = std::max(hi_y, p[y]);
+            }
+        }
+        bool inside(const interpreter::Position& p) const { return p[0] > lo_x && p[0] < hi_x && p[1] > lo_y && p[1] < hi_y; }
+    };
+    // The rapid ends (in X/Y, within 0.01 mm) where a feed move of this descent went down.
+    bool returns_to_plunge(const Event& e) const {
+        const double tolerance = 0.01 / mm_per_unit(e);
+        return std::any_of(plunges_.begin(), plunges_.end(), [&](const std::array<double, 2>& p) {
+            return std::hypot(e.end[0] - p[0], e.end[1] - p[1]) <= tolerance;
+        });
+    }
+    static double sideways(const Event& e) { return std::hypot(e.end[0] - e.start[0], e.end[1] - e.start[1]); }
+    // Positions are in program units (inch under G20): the move's length in mm over its length.
+    static double mm_per_unit(const Event& e) {
+        const double programmed = std::hypot(e.end[0] - e.start[0], e.end[1] - e.start[1], e.end[2] - e.start[2]);
+        return programmed > 1e-9 && e.length_mm > 0 ? e.length_mm / programmed : 1.0;
+    }
+    Area whole_;                                  // every cut of the run
+    std::vector<std::array<double, 2>> plunges_;   // X/Y where feed moves went down since the last retract
+    double floor_ = 1e300;                         // the lowest point cut since the last retract
     bool reported_ = false;
+    bool approached_ = false;   // the tool went down since the last tool change or retract (or the start)
 };
 
 // The interpreter says which codes it could not expand yet (cycles, compensation): those parts
@@ -193,11 +248,12 @@ void add_motion(Registry& r) {
     r.add(dynamic_rule<FirstOnly<NoTool, NoToolSay>>(rule("K5008", "cut-without-tool", S::warning,
         {"A feed move before any tool is selected.", "The control cuts with whatever tool is in the spindle or turret.",
          "G01 X10. F0.2", "T0101\nG01 X10. F0.2", "dialects.md §3.5"})));
-    r.add(opt_in(dynamic_rule<NotExpanded>(rule("K5009", "not-checked-by-dry-run", S::info,
+    r.add(opt_in(with_alarms(dynamic_rule<NotExpanded>(rule("K5009", "not-checked-by-dry-run", S::info,
         {"A block whose motion the dry run does not model (a code the reference leaves open, such as seed 004's G44 "
-         "without H, or a cycle no part of kerf expands), so its motion is not checked.",
+         "without H, or a cycle no part of kerf expands), so its motion is not checked; or a system variable kerf's "
+         "tables do not have, where the dry run stops (kerf's alarm 90006).",
          "Nothing on the machine: a note about kerf's coverage (opt-in).", "G44 X10. Y5.", "G43 H1 Z10.",
-         "docs/trace.md"}))));
+         "docs/trace.md"})), {{alarms::unknown_variable, alarms::unknown_variable}})));
     r.add(dynamic_rule<FirstOnly<NoSpeed, NoSpeedSay>>(rule("K5010", "spindle-without-speed", S::warning,
         {"M03/M04 with no spindle speed programmed.", "The spindle does not turn (S0) and the first cut breaks the tool.",
          "M03\nG01 X10. F0.2", "S800 M03\nG01 X10. F0.2", "semantics.md §4.1"})));

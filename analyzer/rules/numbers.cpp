@@ -27,6 +27,8 @@ bool inch_block(const BlockContext& b) {
 // X10 where an integer is least increments (dialects.md §2 Numbers): 0.010 mm, not 10 mm; under
 // G20 0.0010 in (IS-B 0.0001 in); on a rotary axis 0.010°.
 class MissingDecimalPoint : public StaticCheck {
+    static constexpr double kDeliberateIncrements = 10000;
+
 public:
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.setup.calculator_decimal) return;
@@ -41,6 +43,9 @@ public:
             if (!is_axis(t) && !arc_word) continue;
             const double value = b.tree().number_value(t);
             if (value == 0) continue;   // X0 is zero either way
+            // Five digits and more are increments on purpose: nobody forgets the point of a 10 m
+            // move (ALL-PROG's C_RUN "G91 G01 C360000": one turn in 0.001° increments).
+            if (std::fabs(value) >= kDeliberateIncrements) continue;
             const std::string_view spelling = b.tree().spelling(t);
             const char axis = t.role() == ast::Role::axis_incremental ? b.file.dialect.lexical.incremental_axis_of(t.letter) : t.letter;
             const bool rotary = axis == 'A' || axis == 'B' || axis == 'C' ? b.file.setup.rotary[static_cast<std::size_t>(3 + axis - 'A')] : false;
@@ -99,9 +104,17 @@ private:
 };
 
 // M08. T0101. N10.: a decimal point on an address that takes whole numbers.
+// An M code the dialect's table does not list may be a macro call by M code ([FANUC] custom macro
+// call using an M code, parameters 6080–6089: `M165 P9814 D1.415` on the Doosan O1000): the
+// block's other words are its arguments, whatever their letters usually address (issue 15).
+bool unlisted_m_code(const BlockContext& b) {
+    return std::any_of(b.m.begin(), b.m.end(), [](const ast::CodeRef& c) { return !c.info && c.key; });
+}
+
 class PointOnInteger : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
+        if (takes_arguments(b) || unlisted_m_code(b)) return;   // macro arguments: any letter, any value
         for (const ast::Token& t : b.view.tokens()) {
             if (t.kind != ast::TokenKind::word || !t.is_number() || !t.has(ast::token_flags::has_point)) continue;
             const std::string_view spelling = b.tree().spelling(t);
@@ -170,16 +183,36 @@ public:
     void block(const BlockContext&, Reporter&) override {}
 };
 
+// Lower-case addresses, one finding per file (the p2g generator writes every axis letter in lower
+// case: one finding says it, not 64) at the first; its fix upper-cases them all. Lower-case words
+// are among the facts incremental checking digests (analyzer/incremental.cpp), so the file-wide
+// count and fix stay true after an edit.
 class LowerCase : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
+        if (reported_) return;
         for (const ast::Token& t : b.view.tokens()) {
             if (t.kind != ast::TokenKind::word || !t.has(ast::token_flags::lower_case)) continue;
-            out.report({t.begin, t.begin + 1}, fmt::format("lower-case address '{}'", b.tree().text[t.begin]),
-                       fmt::format("write '{}'", t.letter))
-                .fix = Fix{"upper-case the address letter", {{{t.begin, t.begin + 1}, std::string(1, t.letter)}}};
+            reported_ = true;
+            std::vector<TextEdit> edits;
+            for (std::uint32_t i = 0; i < b.tree().block_count(); ++i)
+                for (const ast::Token& u : b.tree().block_tokens(i))
+                    if (u.kind == ast::TokenKind::word && u.has(ast::token_flags::lower_case))
+                        edits.push_back({{u.begin, u.begin + 1}, std::string(1, u.letter)});
+            const ast::Range first{t.begin, t.begin + 1};
+            const std::string_view letter = b.tree().slice(first);
+            Finding& f = out.report(first,
+                                    edits.size() == 1 ? fmt::format("lower-case address '{}'", letter)
+                                                      : fmt::format("{} lower-case addresses in this file, the first '{}'", edits.size(), letter),
+                                    "write the addresses in upper case");
+            f.fix = Fix{"upper-case the address letters", std::move(edits)};
+            return;
         }
     }
+    void state(StateKey& key) const override { key.add(reported_); }
+
+private:
+    bool reported_ = false;
 };
 
 }  // namespace
@@ -210,7 +243,7 @@ void add_numbers(Registry& r) {
          "ISO/EIA tape code has no such characters: some controls reject the block or show garbage (opt-in).",
          "(ТОКАРНЫЙ 90°)", "(TOKARNYJ 90 DEG)", "dialects.md §2 Characters"}))));
     r.add(fixable(static_rule<LowerCase>(rule("K1026", "lower-case-address", S::info,
-        {"An address letter in lower case.", "FANUC ISO code has upper-case addresses; some controls reject lower case.",
+        {"Address letters in lower case (one finding per file).", "FANUC ISO code has upper-case addresses; some controls reject lower case.",
          "g01 z-18.5", "G01 Z-18.5", "dialects.md §2; corpus p2g"}))));
 }
 

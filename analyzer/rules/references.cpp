@@ -1,6 +1,8 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -56,9 +58,14 @@ public:
     }
 };
 
+// Where the control searches a label from the top (FANUC, dialects.md §2), a jump to a repeated
+// label lands on the first. Where it searches forward from the jump (Haas, `label_search =
+// "forward"`), repeated labels are the local labels of macro sections (O09985 N4, N77, N78) and each
+// jump has one target: nothing to report.
 class AmbiguousLabel : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
+        if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
         for (const Target& t : local_targets(b))
             if (const int n = labels(b).count(t.label); n > 1) {
                 Finding& f = out.report(b.token(t.token).range(),
@@ -95,17 +102,28 @@ bool in_this_file(const BlockContext& b, std::int64_t number) {
 }
 
 // M98 P / G65 P / G66 P: the program must exist (this file, or a file the program index reaches).
+// One finding per missing program and file (issue 15: O09994 calls O9810 23 times); calls into the
+// programs the machine keeps resident (.kerf.toml [programs] resident) are not findings.
 class ProgramNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const CalledProgram& call : called_programs(b)) {
-            if (b.file.program_exists(call.number)) continue;
+            if (reported_.count(call.number) || b.file.program_exists(call.number)) continue;
+            if (b.file.resident && b.file.resident(call.number)) continue;
+            reported_.insert(call.number);
             out.report(b.token(call.token).range(),
                        fmt::format("program O{:04} is not in this file, the files of its folder or the library folders (alarm 078)", call.number),
-                       fmt::format("put O{:04} into this file or a file of its folder, or name the folder that holds it in "
-                                   ".kerf.toml [programs] library", call.number));
+                       fmt::format("put O{:04} into a file of its folder, name the folder that holds it in .kerf.toml "
+                                   "[programs] library, or, if the machine keeps it in memory (a probe macro), list it in "
+                                   "[programs] resident", call.number));
         }
     }
+    void state(StateKey& key) const override {
+        for (const std::int64_t n : reported_) key.add(n);
+    }
+
+private:
+    std::set<std::int64_t> reported_;   // the numbers reported in this file (one finding each)
 };
 
 // A call whose program is in several other files (project/index.hpp): which one runs depends on
@@ -260,7 +278,8 @@ public:
         if (computed_) return;   // GOTO #1 may reach any label
         const auto n = b.view.sequence_number();
         if (n && std::binary_search(targets_->begin(), targets_->end(), static_cast<std::int64_t>(*n))) dead_ = false;
-        if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted)) {
+        if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted) &&
+            !heading(b)) {
             out.report(block_text_range(b), "no path reaches this block: it follows the end of the program or a GOTO",
                        "remove the dead blocks, or give them a label that a GOTO or M98 Q jumps to");
             reported_ = true;
@@ -269,6 +288,14 @@ public:
     }
 
 private:
+    // "N900 ( ALARMS )" between a GOTO and the labels below it (Renishaw O09994): a heading that
+    // does nothing when it is not run, not dead code worth a finding.
+    static bool heading(const BlockContext& b) {
+        const auto tokens = b.view.tokens();
+        return std::all_of(tokens.begin(), tokens.end(), [](const ast::Token& t) {
+            return t.kind == ast::TokenKind::comment || t.kind == ast::TokenKind::eob || (t.kind == ast::TokenKind::word && t.letter == 'N');
+        });
+    }
     static bool unconditional_goto(const BlockContext& b) {
         if (b.view.block().has(ast::block_flags::deleted)) return false;
         for (const std::uint32_t s : b.statements())
@@ -277,6 +304,61 @@ private:
     }
     std::shared_ptr<const std::vector<std::int64_t>> targets_;   // sorted
     bool computed_ = false, dead_ = false, reported_ = false;
+};
+
+// The same N on several blocks of one program (the MANIFEST's student programs: O0001 N130–N150,
+// O0005 N30/N70): searching for the block, restarting the program at it or renumbering it finds
+// the first one. Labels that jumps land on are K3002's; in a dialect whose label search goes forward
+// from the jump (Haas), repeated labels are local labels on purpose and not reported (issue 15).
+class DuplicateSequenceNumber : public StaticCheck {
+public:
+    void begin_program(const FileContext& file, std::size_t, Reporter&) override {
+        // The same for every program of the file (as K3007's): an edit that changes a target or a
+        // label is checked whole (static_facts digests them).
+        if (!targets_) targets_ = std::make_shared<const std::vector<std::int64_t>>(jump_targets(file.tree(), computed_));
+        reported_ = false;
+    }
+    // One finding per program, at the first block that repeats a number: it names every repeated
+    // number of the program with its blocks.
+    void block(const BlockContext& b, Reporter& out) override {
+        // Where labels are searched forward from the jump (Haas), N numbers are local labels: the
+        // Renishaw macros repeat N76 (INCH) / N77 (METRIC) in each section on purpose (issue 15).
+        if (reported_ || b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
+        const auto n = repeated(b.file, b.program, b.view);
+        if (!n) return;
+        const auto program = static_cast<std::uint32_t>(b.program);
+        if (references::label_blocks(b.file.typed, program, *n).front() == b.view.index()) return;   // the first one
+        reported_ = true;
+        std::vector<std::int64_t> numbers;
+        const ast::Program& p = b.file.typed.programs()[b.program];
+        for (std::uint32_t i = p.first_block; i < p.end_block; ++i)
+            if (const auto m = repeated(b.file, b.program, b.file.typed.block(i)); m && std::find(numbers.begin(), numbers.end(), *m) == numbers.end())
+                numbers.push_back(*m);
+        std::string list;
+        for (const std::int64_t m : numbers) list += fmt::format("{}N{}", list.empty() ? "" : ", ", m);
+        Finding& f = out.report(block_text_range(b),
+                                fmt::format("{} {} on several blocks of this program: a search or a restart finds the first",
+                                            list, numbers.size() == 1 ? "is" : "are"),
+                                "give each block a number of its own (kerf fmt --block-numbers renumber)");
+        for (const std::int64_t m : numbers) {
+            const auto at = references::label_blocks(b.file.typed, program, m);
+            for (std::size_t k = 0; k < at.size(); ++k)
+                f.related.push_back({block_range(b.file, at[k]), k == 0 ? fmt::format("N{}: the first", m) : fmt::format("N{} again", m)});
+        }
+    }
+    void state(StateKey& key) const override { key.add(reported_); }
+
+private:
+    // The block's N when another block of the program has it too and no jump lands on it (K3002's).
+    std::optional<std::int64_t> repeated(const FileContext& file, std::size_t program, const ast::BlockView& view) const {
+        const auto n = view.sequence_number();
+        if (!n || *n != std::floor(*n)) return std::nullopt;
+        const auto label = static_cast<std::int64_t>(*n);
+        if (file.labels(program).count(label) < 2 || std::binary_search(targets_->begin(), targets_->end(), label)) return std::nullopt;
+        return label;
+    }
+    std::shared_ptr<const std::vector<std::int64_t>> targets_;   // sorted
+    bool computed_ = false, reported_ = false;
 };
 
 class ProgramNumbers : public StaticCheck {
@@ -350,7 +432,8 @@ void add_references(Registry& r) {
     // One missing program is one finding: K3003 at the call hides the dry run's alarm 078 (K4009) there.
     r.add(explaining(static_rule<ProgramNotFound>(rule("K3003", "program-not-found", S::error,
         {"M98 P, G65 P or G66 P to a program that is in no file kerf can reach: this file, the files of its "
-         "folder (by the O numbers inside them) and the .kerf.toml's [programs] library folders.",
+         "folder (by the O numbers inside them) and the .kerf.toml's [programs] library folders; once per program "
+         "and file, and not for the [programs] resident ranges.",
          "The control stops with alarm 078 when the call is reached.", "M98 P1234", "M98 P1000 (O1000 in a file of the folder)",
          "dialects.md §3.6"})), {{alarms::program_not_found, alarms::program_not_found}}));
     r.add(with_alarms(static_rule<LoopsPairs>(rule("K3004", "loop-mismatch", S::error,
@@ -375,6 +458,11 @@ void add_references(Registry& r) {
         {"An O number in O8000–O9999, the ranges FANUC parameter 3202 can protect.",
          "A protected program cannot be edited or loaded over; macro makers use these numbers on purpose.",
          "O9001", "O1001", "[FANUC] parameter 3202 NE8/NE9"})));
+    r.add(static_rule<DuplicateSequenceNumber>(rule("K3011", "duplicate-sequence-number", S::warning,
+        {"The same sequence number on several blocks of one program (not a jump target: that is K3002).",
+         "A search for the block, a restart at it or a renumbering finds the first: the operator restarts at the wrong place.",
+         "N130 M06 T02\nN140 G43 H02\nN130 G00 X0 Y0", "N130 M06 T02\nN140 G43 H02\nN250 G00 X0 Y0",
+         "corpus MANIFEST 'duplicate N numbers' (O0001, O0005); dialects.md §2 Sequence number"})));
     r.add(static_rule<ProgramInSeveralFiles>(rule("K3010", "program-in-several-files", S::warning,
         {"M98 P, G65 P or G66 P to a program number that several other files of the folder (or the library "
          "folders) hold.",

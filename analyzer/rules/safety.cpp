@@ -1,5 +1,7 @@
 // Static safety rules read in text order with the modal state of the listing (semantics.md §4–§7).
 #include "analyzer/rules/common.hpp"
+#include "analyzer/rules/expressions.hpp"
+#include "interpreter/events.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -111,27 +113,105 @@ public:
     }
 };
 
-// Mill: G43 H2 after T1 M06 applies the length of another tool.
+// Mill: G43 H2 after T1 M06 applies the length of another tool. The tool in the spindle is the
+// one the last tool change (M06) loaded: a T word alone pre-selects the next tool and leaves the
+// spindle's as it is (`T9 M6` then `T1`: T9 still cuts, issue 15), as the interpreter runs it
+// (executor_words.cpp: pending_tool_, M06 changes it in).
 class LengthOffsetMismatch : public StaticCheck {
 public:
-    void begin_program(const FileContext&, std::size_t, Reporter&) override { tool_.reset(); }
+    void begin_program(const FileContext&, std::size_t, Reporter&) override {
+        selected_.reset();
+        spindle_.reset();
+    }
     void state(StateKey& key) const override {
-        key.add(tool_.has_value());
-        key.add(tool_.value_or(0));
+        key.add(selected_.has_value());
+        key.add(selected_.value_or(0));
+        key.add(spindle_.has_value());
+        key.add(spindle_.value_or(0));
     }
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.dialect.lexical.tool_word != "number") return;
-        if (const auto t = number_word(b, 'T')) tool_ = static_cast<std::int64_t>(t->value);
+        if (const auto t = number_word(b, 'T')) selected_ = static_cast<std::int64_t>(t->value);
+        if (b.has_function(fn::tool_change)) spindle_ = selected_;
         if (!b.has_function(fn::tool_length_comp_plus) && !b.has_function(fn::tool_length_comp_minus)) return;
         const auto h = number_word(b, 'H');
-        if (!h || !tool_ || static_cast<std::int64_t>(h->value) == *tool_) return;
+        if (!h || !spindle_ || static_cast<std::int64_t>(h->value) == *spindle_) return;
         out.report(b.token(h->token).range(),
-                   fmt::format("H{} is not the length of the tool T{} in the spindle", static_cast<std::int64_t>(h->value), *tool_),
-                   fmt::format("write H{} unless the offset numbering differs on purpose", *tool_));
+                   fmt::format("H{} is not the length of the tool T{} in the spindle", static_cast<std::int64_t>(h->value), *spindle_),
+                   fmt::format("write H{} unless the offset numbering differs on purpose", *spindle_));
     }
 
 private:
-    std::optional<std::int64_t> tool_;
+    std::optional<std::int64_t> selected_;   // the last T word: the tool the next M06 loads
+    std::optional<std::int64_t> spindle_;    // the tool the last M06 loaded
+};
+
+// A main program that moves without G20 or G21 runs in whatever unit the control was left in. That
+// matters when the program is written in the other unit than the machine's power-on one: an inch
+// program (coordinates to 0.0001, the resolution inch posts write) on a machine that starts in mm,
+// as CGIP09902.NC and CGIP11719.NC of the corpus (T02 DIA 0.5000 1/2 ENDMILL, X-0.1522; no G20),
+// which the dry run and a machine left in G21 read 25.4 times too small (issue 15). A metric program
+// on a metric machine is left alone (the seeds never write G21), as is a subprogram (M99: its
+// caller's unit) and a program that reads the unit (#4006, or a variable the dialect marks `units`,
+// Haas Setting 9 #20009).
+class UnitsNotSet : public StaticCheck {
+public:
+    void begin_program(const FileContext&, std::size_t, Reporter&) override {
+        first_move_.reset();
+        unit_set_ = reads_unit_ = main_ = false;
+        fractional_ = four_places_ = 0;
+    }
+    void block(const BlockContext& b, Reporter&) override {
+        unit_set_ = unit_set_ || b.has_function(fn::inch_input) || b.has_function(fn::metric_input);
+        main_ = main_ || b.has_function(fn::program_end) || b.has_function(fn::program_end_rewind);
+        const auto axes = b.view.axis_words();
+        if (!first_move_ && !axes.empty()) first_move_ = block_text_range(b);
+        for (const ast::AxisWord& a : axes) {
+            const std::string_view spelling = b.tree().spelling(b.token(a.token));
+            const std::size_t point = spelling.find('.');
+            if (point == std::string_view::npos || point + 1 == spelling.size()) continue;
+            ++fractional_;
+            four_places_ += spelling.size() - point - 1 == 4;
+        }
+        const ast::SyntaxTree& tree = b.tree();
+        block_expressions(tree, b.view, [&](std::int32_t root) {
+            walk(tree, root, false, [&](std::int32_t i, bool) {
+                const ast::Expr& e = tree.exprs[static_cast<std::size_t>(i)];
+                if (e.kind != ast::ExprKind::variable) return;
+                const auto n = constant_of(tree, e.a);
+                const dialects::VariableRange* range = n ? b.file.dialect.variable_range(static_cast<std::int64_t>(*n)) : nullptr;
+                reads_unit_ = reads_unit_ || (n && *n == kUnitModal) || (range && range->units);
+            });
+        }, [](std::int32_t) {});
+    }
+    void end_program(const FileContext& file, std::size_t, Reporter& out) override {
+        if (reported_ || !main_ || unit_set_ || reads_unit_ || !first_move_ || inch_at_power_on(file.dialect)) return;
+        // Inch resolution: at least 5 coordinates, a quarter of those with decimals, to 0.0001.
+        if (four_places_ < 5 || four_places_ * 4 < fractional_) return;
+        reported_ = true;   // once per file
+        out.report(*first_move_,
+                   fmt::format("the program moves without G20 or G21 and writes {} coordinates to 0.0001, the resolution of "
+                               "inch programs: a machine that starts in mm (as this one) reads them 25.4 times too small",
+                               four_places_),
+                   "program G20 (inch) or G21 (mm) in the safe-start block");
+    }
+    void state(StateKey& key) const override {
+        for (const bool flag : {unit_set_, reads_unit_, main_, reported_, first_move_.has_value()}) key.add(flag);
+        key.add(fractional_);
+        key.add(four_places_);
+    }
+
+private:
+    static constexpr int kUnitModal = 4006;   // [FANUC] #4006: the G20/G21 of modal group 06
+    // The power-on unit: the dialect's default code of the unit group (G21 on FANUC, semantics.md §1.3).
+    static bool inch_at_power_on(const dialects::Dialect& d) {
+        for (const dialects::CodeInfo* c : d.codes_with_function(fn::inch_input))
+            if (c->power_on_default) return true;
+        return false;
+    }
+    std::optional<ast::Range> first_move_;
+    bool unit_set_ = false, reads_unit_ = false, main_ = false, reported_ = false;
+    std::size_t fractional_ = 0, four_places_ = 0;
 };
 
 // G28 X0 Z0 in absolute mode goes through the work zero (the part) on its way home.
@@ -142,6 +222,8 @@ public:
         for (const ast::AxisWord& a : b.view.axis_words()) {
             if (a.incremental) continue;
             const ast::Token& t = b.token(a.token);
+            // A table turning to B0 on its way home moves no tool through the part (O09994 "G28 B0.").
+            if (const auto axis = interpreter::axis_of_letter(t.letter); axis && b.file.setup.rotary[static_cast<std::size_t>(*axis)]) continue;
             out.report(t.range(),
                        fmt::format("G28 in absolute mode moves first to the work position {}: through the part if it is in the way",
                                    b.tree().spelling(t)),
@@ -157,7 +239,8 @@ class SpindleOverLimit : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         const double limit = b.file.setup.max_rpm;
-        if (limit <= 0) return;
+        // A built-in machine's limit is a guess (machine/data: [inference]): only a machine file's counts.
+        if (!b.file.setup.machine_given || limit <= 0) return;
         const auto s = number_word(b, 'S');   // first: most blocks have no S
         if (!s || s->value <= limit || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
         out.report(b.token(s->token).range(), fmt::format("S{:g} rpm is over the machine's spindle limit of {:g} rpm", s->value, limit),
@@ -208,6 +291,14 @@ void add_safety(Registry& r) {
     r.add(static_rule<ToolWithoutOffset>(rule("K5018", "tool-without-offset", S::warning,
         {"A lathe tool word with offset 00 (T0100).", "The tool cuts with no geometry or wear offset: off by the tool's length.",
          "T0100", "T0101", "dialects.md §3.5"})));
+    r.add(static_rule<UnitsNotSet>(rule("K5024", "units-not-set", S::warning,
+        {"A main program that moves without ever programming G20 or G21 (nor reading the unit, #4006) and writes its "
+         "coordinates to 0.0001, the resolution of inch programs, for a machine that starts in mm.",
+         "The control keeps the unit it was left in: an inch program runs 25.4 times too small on a machine left in "
+         "G21, and the dry run reads it in the machine's power-on unit.",
+         "G90 G54 G00 X1.5234 Y2.1250\nG01 Z-0.1250 F10.\nX2.5000 Y3.0625\nX0.5000\nM30",
+         "G20 G90 G54 G00 X1.5234 Y2.1250\nG01 Z-0.1250 F10.\nX2.5000 Y3.0625\nX0.5000\nM30",
+         "corpus CGIP09902.NC (issue 15); semantics.md §1.3 power-on state"})));
     r.add(static_rule<LengthOffsetMismatch>(rule("K5019", "length-offset-mismatch", S::warning,
         {"G43 H with a number other than the tool in the spindle (mills).",
          "The length of another tool is applied: the tool goes too deep or cuts air.", "T1 M06\nG43 H2 Z50.",

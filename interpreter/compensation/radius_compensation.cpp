@@ -174,11 +174,18 @@ std::optional<RadiusCompensation::Join> RadiusCompensation::join(const Element& 
     const auto connect_to_b = [&](Join& out) {
         if (b.arc || cancel_block) out.entry.push_back(line_to(b.start));
     };
-    if (c == CornerClass::straight || pa.side != pb.side) {
+    // Tangent arcs whose ends are rounded to the program's last digit (O0057 N2101: a 0.5 in arc
+    // running into a 0.35 in one inside it; 1006.nc N6150: half circles whose centres differ by
+    // 0.0001 in) turn by a hair: their offsets touch rather than cross, and where they "meet" is
+    // noise. An inside corner whose offsets end within the end tolerance of each other is joined
+    // by the shift between them: it errs by less than that tolerance (with no radius, not at all).
+    const bool tangent = c == CornerClass::straight ||
+                         (c == CornerClass::inside && motion::norm(b.start - a.end) <= settings_.end_tolerance);
+    if (tangent || pa.side != pb.side) {
         // A tangent run (or a side change: seed 004 ex. 2 "the centre first shifts from point 3
         // to point 4"): where the offsets meet, else a straight shift between them at the start of
         // the next block (a D change, ex. 3 "the tool first shifts up by 2 mm").
-        const auto p = c == CornerClass::straight ? std::nullopt : motion::meet(a, b, corner);
+        const auto p = tangent ? std::nullopt : motion::meet(a, b, corner);
         if (p && motion::norm(*p - corner) <= 2 * std::max(pa.radius, pb.radius) + kClose) j.end = *p;
         else if (motion::norm(b.start - a.end) > kClose) j.entry.push_back(line_to(b.start));
         return j;

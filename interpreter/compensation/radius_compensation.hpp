@@ -23,6 +23,10 @@ enum class CornerStyle {
 struct Settings {
     StartType start = StartType::b;   // semantics.md §6 "type A/B (a parameter, default B)"
     CornerStyle corners = CornerStyle::intersection;
+    // mm: how far an arc's programmed end may lie off its circle (Setup::arc_tolerance, motion/arc.hpp);
+    // the joint of two such arcs lands up to that far past the first one's end without the block
+    // being short (Haas 1006.nc N6150: two half circles whose centres differ by 0.0001 in).
+    double end_tolerance = 0.01;
 };
 
 // A programmed element and the compensation in force in its block.

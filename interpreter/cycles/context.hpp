@@ -66,6 +66,7 @@ struct RigidTapModal {
 struct Profile {
     Position start{};                       // the cycle start point A
     std::vector<ProfileMove> moves;         // ns … nf in order; moves[0] is A → A′
+    std::uint32_t q_block = 0;              // the block N Q (its index in the file)
 };
 
 // What the executor offers a cycle. Positions are work coordinates as programmed.
@@ -122,6 +123,8 @@ public:
     virtual void m_code(int number) = 0;                   // a clamp/unclamp M code issued by the cycle
     virtual void message(std::string text) = 0;
     virtual void alarm(int number, std::string text) = 0;
+    // [Haas] M23 (true, the default) / M24: a thread cycle chamfers out of the thread (haas_lathe.cpp).
+    virtual bool thread_chamfer() const { return true; }
     // An alarm a profile block causes (a move that breaks monotony): reported at that block.
     virtual void alarm_at(std::uint32_t block, int number, std::string text) = 0;
 };
@@ -129,6 +132,44 @@ public:
 // Expands the cycle of the block; false when `ctx.function()` is no cycle this folder knows (the
 // executor then keeps its placeholder message).
 bool expand(Context& ctx);
+
+// The pieces the Haas one-block forms share with the FANUC cycles (haas_lathe.cpp): the same
+// expansion with the values read from one block instead of two.
+// G71/G72 roughing over `profile` (lathe_profile.cpp): `facing` steps the depth along Z (G72);
+// `q_block_may_return`: the Q block of a type II profile is exempt from the monotonic check (Haas,
+// haas_lathe.cpp).
+struct RoughCycle {
+    bool facing = false;
+    double depth = 0, retract = 0;
+    bool q_block_may_return = false;
+};
+void rough_profile(Context& ctx, const Profile& profile, const RoughCycle& r);
+// G73: the profile `divisions` times, shifted by the relief (radius X, Z) plus the allowance.
+void repeat_pattern(Context& ctx, const Profile& profile, double relief_x, double relief_z, int divisions);
+// G74/G75 (lathe_peck.cpp): pecks of `peck` along Z (face) or X, columns `shift` apart across,
+// `retract` after each peck, `relief` away from the next column at the bottom.
+struct PeckCycle {
+    bool face = false;
+    double peck = 0, shift = 0, retract = 0, relief = 0;
+};
+void peck_cycle(Context& ctx, const PeckCycle& p);
+// G76 (lathe_thread.cpp): the passes of a multiple threading cycle to the block's end point.
+enum class ThreadInfeed { machine, flank, alternating, radial };
+struct ThreadCycle {
+    double height = 0;           // k, radius
+    double first = 0;            // Δd, radius
+    double min_step = 0;         // Δdmin
+    double allowance = 0;        // finishing allowance d
+    int finishing_passes = 1;
+    double angle = 60;           // tool angle, degrees
+    double taper = 0;            // radius start − end (i)
+    double chamfer = 0;          // pull-out length along Z
+    bool constant_depth = false; // every pass Δd deep (Haas P3/P4) instead of Δd·√n
+    ThreadInfeed infeed = ThreadInfeed::machine;
+};
+void thread_cycle(Context& ctx, const ThreadCycle& t, double lead);
+// Profile N P .. N Q with its checks (empty profile: alarm 065); nullopt after an alarm.
+std::optional<Profile> profile_of_block(Context& ctx);
 
 // The families (one file each).
 void lathe_profile(Context& ctx);   // G70–G73, cycles.md §1–§4 (lathe_profile.cpp)
@@ -139,6 +180,7 @@ bool spinner(Context& ctx);         // SPINNER G38, G138, G238, G384/G380, M329,
                                     // (spinner.cpp); false when the function is none of them
 bool drilling(Context& ctx);        // mill G73–G89, lathe G83–G89, ADV400 G81/G83/G84, §10–§11 (drilling.cpp);
                                     // false when the function is no drilling cycle
+bool haas_lathe(Context& ctx);      // [Haas] one-block G71/G72/G73/G74/G75/G76 (haas_lathe.cpp); false for others
 
 // The end point and R of a single cycle block: a repeat block takes the coordinate it omits and R
 // from the last cycle (lathe_single.cpp).

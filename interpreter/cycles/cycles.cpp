@@ -28,6 +28,7 @@ bool expand(Context& ctx) {
     const dialects::FunctionId f = ctx.function();
     if (inside_rigid_tapping(ctx, f)) return true;
     if (spinner(ctx)) return true;
+    if (haas_lathe(ctx)) return true;   // [Haas] one-block G71–G76 (haas_lathe.cpp)
     if (f == fn::finishing_cycle || f == fn::rough_turning_cycle || f == fn::rough_facing_cycle ||
         f == fn::pattern_repeating_cycle)
         lathe_profile(ctx);

@@ -22,6 +22,7 @@ struct Peck {
     double shift;      // step between columns (P of G74, Q of G75)
     double retract;    // e, after each peck (first block)
     double relief;     // Δd at the bottom, away from the next column (second R)
+    char shift_word;   // the word that gives the step, for the alarm
 };
 
 // One column: pecks of `peck` with rapid retracts by e; the last peck clipped at the bottom
@@ -50,7 +51,7 @@ void peck_cycle(Context& ctx, const Peck& p) {
     const double step_dir = sign(get(end, across) - get(a, across));
     if (step_dir != 0 && p.shift <= 0) {
         ctx.alarm(62, fmt::format("{}: the end point moves in {} but the step {} is missing or zero (FANUC alarm 062)",
-                                  ctx.spelling(), across == Coord::x ? 'X' : 'Z', p.axis == Coord::z ? 'P' : 'Q'));
+                                  ctx.spelling(), across == Coord::x ? 'X' : 'Z', p.shift_word));
         return;
     }
     double column = get(a, across);
@@ -74,6 +75,11 @@ void peck_cycle(Context& ctx, const Peck& p) {
 
 }  // namespace
 
+void peck_cycle(Context& ctx, const PeckCycle& p) {
+    // The Haas one-block forms name the step I (G74: X step) or K (G75: Z step).
+    peck_cycle(ctx, Peck{p.face ? Coord::z : Coord::x, p.peck, p.shift, p.retract, p.relief, p.face ? 'I' : 'K'});
+}
+
 void lathe_peck(Context& ctx) {
     const bool face = ctx.function() == fn::face_peck_drilling_cycle;
     Parameters& params = ctx.parameters();
@@ -85,7 +91,7 @@ void lathe_peck(Context& ctx) {
     }
     // P and Q count least input increments (§0): G74 P = X step, Q = peck; G75 P = peck, Q = Z step.
     const double p = ctx.pq('P').value_or(0), q = ctx.pq('Q').value_or(0);
-    Peck peck{face ? Coord::z : Coord::x, face ? q : p, face ? p : q, retract, ctx.mm('R').value_or(0)};
+    Peck peck{face ? Coord::z : Coord::x, face ? q : p, face ? p : q, retract, ctx.mm('R').value_or(0), face ? 'P' : 'Q'};
     peck_cycle(ctx, peck);
 }
 

@@ -71,9 +71,10 @@ void finishing(Context& ctx, const Profile& profile) {
 // Roughing in levels of `level` (X for G71, Z for G72), passes along the other axis, 45° relief
 // by e, then one pass along the allowance contour (cycles.md §2 "Expansion, type I").
 struct Rough {
-    Coord level;         // the axis the depth of cut steps in
-    double depth;        // Δd
-    double retract;      // e
+    Coord level;                        // the axis the depth of cut steps in
+    double depth;                       // Δd
+    double retract;                     // e
+    bool q_block_may_return = false;    // type II: the Q block is exempt from the monotonic check
 };
 
 bool rough_levels(Context& ctx, const Profile& profile, const Rough& r, const Contour& allowance_contour, Pt a, Pt a_allow) {
@@ -214,6 +215,13 @@ bool rough_levels_two(Context& ctx, const Profile& profile, const Rough& r, cons
     return true;
 }
 
+// The contour without the trailing segments of block `block` (a prefix of `contour`).
+Contour before_block(const Contour& contour, const Profile& profile, std::uint32_t block) {
+    Contour out = contour;
+    while (!out.empty() && profile.moves[out.back().move].block == block) out.pop_back();
+    return out;
+}
+
 void rough(Context& ctx, const Profile& profile, const Rough& r) {
     const bool dia = ctx.diameter_x();
     if (r.depth <= 0) {
@@ -224,12 +232,18 @@ void rough(Context& ctx, const Profile& profile, const Rough& r) {
     // Type II: the first block names both axes (`N1000 G0 X60 W0`, cycles.md §2).
     const bool type2 = first.x_word && first.z_word;
     const Contour finish = contour_of(profile, 1, dia);
+    // [Haas] "The Z Axis PQ path must not exceed the original starting location. The only
+    // exception is on the Q block." (Haas G71 "Type 2 details", staging-diy.haascnc.com/type-2-details-0):
+    // a Haas type II profile may end with its Q block going back, `N20 G00 G40 Z0.1` (corpus
+    // enier290188 lathe_hp_2, round_head_plug, valve, weld_pin). The Q block is then left out of the
+    // check only; roughing and the semi-finishing pass keep it (it lies outside the stock).
+    const Contour checked = r.q_block_may_return && type2 ? before_block(finish, profile, profile.q_block) : finish;
     // The alarm stands at the profile block whose move reverses (an integer `Z-8` read as 0.008 is
     // the usual cause), where the programmer has to look.
-    const auto reversal = [&](Coord c) { return first_reversal(finish, c); };
+    const auto reversal = [&](Coord c) { return first_reversal(checked, c); };
     const Coord axis = type2 ? other(r.level) : reversal(Coord::x) ? Coord::x : Coord::z;
     if (const std::optional<std::size_t> bad = reversal(axis)) {
-        ctx.alarm_at(profile.moves[finish[*bad].move].block, alarms::profile_not_monotonic,
+        ctx.alarm_at(profile.moves[checked[*bad].move].block, alarms::profile_not_monotonic,
                      fmt::format("{}: this move reverses {} in the type {} profile, which must be monotonic (cycles.md §2; "
                                  "FANUC alarm 064)",
                                  ctx.spelling(), axis == Coord::x ? 'X' : 'Z', type2 ? "II" : "I"));
@@ -287,24 +301,42 @@ bool first_block(Context& ctx, dialects::FunctionId f) {
 
 }  // namespace
 
-void lathe_profile(Context& ctx) {
-    const dialects::FunctionId f = ctx.function();
-    if (f != fn::finishing_cycle && first_block(ctx, f)) return;
+void rough_profile(Context& ctx, const Profile& profile, const RoughCycle& r) {
+    rough(ctx, profile, {r.facing ? Coord::z : Coord::x, r.depth, r.retract, r.q_block_may_return});
+}
+
+void repeat_pattern(Context& ctx, const Profile& profile, double relief_x, double relief_z, int divisions) {
+    Parameters p;
+    p.g73_relief_x = relief_x;
+    p.g73_relief_z = relief_z;
+    p.g73_divisions = divisions;
+    pattern(ctx, profile, p);
+}
+
+std::optional<Profile> profile_of_block(Context& ctx) {
     const auto p = ctx.raw('P'), q = ctx.raw('Q');
     if (!p || !q) {
         ctx.alarm(62, fmt::format("{} without P and Q: no profile to run (FANUC alarm 062)", ctx.spelling()));
-        return;
+        return std::nullopt;
     }
-    const auto profile = ctx.profile(*p, *q);
-    if (!profile) return;
+    auto profile = ctx.profile(*p, *q);
+    if (!profile) return std::nullopt;
     if (profile->moves.empty()) {
         ctx.alarm(65, fmt::format("{} P{} Q{}: the profile has no move (FANUC alarm 065)", ctx.spelling(), *p, *q));
-        return;
+        return std::nullopt;
     }
+    return profile;
+}
+
+void lathe_profile(Context& ctx) {
+    const dialects::FunctionId f = ctx.function();
+    if (f != fn::finishing_cycle && first_block(ctx, f)) return;
+    const auto profile = profile_of_block(ctx);
+    if (!profile) return;
     const Parameters& params = ctx.parameters();
     if (f == fn::finishing_cycle) finishing(ctx, *profile);
-    else if (f == fn::rough_turning_cycle) rough(ctx, *profile, {Coord::x, params.g71_depth, params.g71_retract});
-    else if (f == fn::rough_facing_cycle) rough(ctx, *profile, {Coord::z, params.g72_depth, params.g72_retract});
+    else if (f == fn::rough_turning_cycle) rough(ctx, *profile, {Coord::x, params.g71_depth, params.g71_retract, false});
+    else if (f == fn::rough_facing_cycle) rough(ctx, *profile, {Coord::z, params.g72_depth, params.g72_retract, false});
     else pattern(ctx, *profile, params);
 }
 

@@ -94,26 +94,17 @@ void multiple_threading(Context& ctx) {
         ctx.alarm(62, fmt::format("{}: thread height P and first depth Q must be positive (FANUC alarm 062)", ctx.spelling()));
         return;
     }
-    const Position a = ctx.position();
-    const Position end = ctx.end_point();
     const double lead = thread_lead(ctx);
-    const double taper = ctx.mm('R').value_or(0) * (ctx.diameter_x() ? 2 : 1);   // i, radius: start − end
-    const double side = sign(a[0] - end[0]);                                      // + outside (OD)
-    const double toward_end = sign(end[2] - a[2]);
-    const double flank = std::tan(params.g76_angle * std::numbers::pi / 360.0);
-    const double flank_dir = ctx.settings().infeed == Infeed::flank            ? toward_end
-                             : ctx.settings().infeed == Infeed::opposite_flank ? -toward_end
-                                                                                : 0.0;
-    const double chamfer = params.g76_chamfer * lead / 10.0;
-    const double dia = ctx.diameter_x() ? 2 : 1;
-    std::vector<double> depths = rough_depths(k, first, params.g76_min_depth, params.g76_allowance);
-    for (int m = 0; m < std::max(1, params.g76_finishing_passes); ++m) depths.push_back(k);
-    for (const double d : depths) {
-        Position to = end;
-        to[0] = end[0] + side * dia * (k - d);
-        const double z_start = a[2] + flank_dir * (d - depths.front()) * flank;
-        if (!pass(ctx, a, to[0] + taper, z_start, to, lead, chamfer)) return;
-    }
+    ThreadCycle t;
+    t.height = k;
+    t.first = first;
+    t.min_step = params.g76_min_depth;
+    t.allowance = params.g76_allowance;
+    t.finishing_passes = params.g76_finishing_passes;
+    t.angle = params.g76_angle;
+    t.taper = ctx.mm('R').value_or(0);   // i, radius: start − end
+    t.chamfer = params.g76_chamfer * lead / 10.0;
+    thread_cycle(ctx, t, lead);
 }
 
 // G92: rapid to X + 2R, thread to (X, Z) with the run-out of the machine, rapid X, rapid Z (§8.2).
@@ -126,6 +117,39 @@ void single_threading(Context& ctx) {
 }
 
 }  // namespace
+
+void thread_cycle(Context& ctx, const ThreadCycle& t, double lead) {
+    const Position a = ctx.position();
+    const Position end = ctx.end_point();
+    const double taper = t.taper * (ctx.diameter_x() ? 2 : 1);
+    const double side = sign(a[0] - end[0]);                                      // + outside (OD)
+    const double toward_end = sign(end[2] - a[2]);
+    const double flank = std::tan(t.angle * std::numbers::pi / 360.0);
+    const Infeed machine = ctx.settings().infeed;
+    const bool on_flank = t.infeed == ThreadInfeed::flank || t.infeed == ThreadInfeed::alternating ||
+                          (t.infeed == ThreadInfeed::machine && machine != Infeed::radial);
+    const double flank_dir = !on_flank                                                         ? 0.0
+                             : t.infeed == ThreadInfeed::machine && machine == Infeed::opposite_flank ? -toward_end
+                                                                                                      : toward_end;
+    const double dia = ctx.diameter_x() ? 2 : 1;
+    std::vector<double> depths;
+    if (t.constant_depth) {
+        for (double d = t.first; d < t.height - t.allowance - kEps && depths.size() < 10000; d += t.first) depths.push_back(d);
+        depths.push_back(t.height - t.allowance);
+    } else {
+        depths = rough_depths(t.height, t.first, t.min_step, t.allowance);
+    }
+    for (int m = 0; m < std::max(1, t.finishing_passes); ++m) depths.push_back(t.height);
+    for (std::size_t i = 0; i < depths.size(); ++i) {
+        const double d = depths[i];
+        Position to = end;
+        to[0] = end[0] + side * dia * (t.height - d);
+        // Alternating flanks (Haas P2/P4, double edge cutting): every second pass on the other flank.
+        const double dir = t.infeed == ThreadInfeed::alternating && i % 2 == 1 ? -flank_dir : flank_dir;
+        const double z_start = a[2] + dir * (d - depths.front()) * flank;
+        if (!pass(ctx, a, to[0] + taper, z_start, to, lead, t.chamfer)) return;
+    }
+}
 
 void lathe_thread(Context& ctx) {
     if (ctx.function() == fn::multiple_threading_cycle) multiple_threading(ctx);

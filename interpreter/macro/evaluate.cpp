@@ -102,6 +102,13 @@ std::string no_such_variable(int number, const std::string& text) {
     return fmt::format("variable #{} (`{}`) does not exist on this control", number, text);
 }
 
+// A system variable kerf's tables do not have: the control may have it; the run cannot go on.
+std::string not_modelled(int number, const std::string& text) {
+    const std::string name = text == fmt::format("#{}", number) ? text : fmt::format("#{} (`{}`)", number, text);
+    return fmt::format("system variable {} is not in kerf's tables for this control: the dry run stops here "
+                       "(kerf's limit, not an alarm of the program)", name);
+}
+
 // No negative zero in results: -0 would print as "-0." and FANUC has no such value.
 double clean(double x) { return x == 0.0 ? 0.0 : x; }
 
@@ -300,6 +307,8 @@ Value Evaluator::read_variable(const Expr& e) {
     const auto number = variable_number(static_cast<std::int32_t>(&e - tree_.exprs.data()));
     if (!number) return Value::vacant_value();
     const std::optional<Value> v = variables_.read(*number);
+    if (!v && !variables_.system().modelled(*number))
+        return fail_value(e.range(), codes::variable_number, kerf_alarm::unknown_variable, not_modelled(*number, quote(e)));
     if (!v)
         return fail_value(e.range(), codes::variable_number, 115, no_such_variable(*number, quote(e)));
     return *v;
@@ -694,6 +703,8 @@ std::optional<Error> assign(const ast::SyntaxTree& tree, const ast::Statement& s
     switch (variables.write(*number, v)) {
         case WriteResult::ok: return std::nullopt;
         case WriteResult::undefined:
+            if (!variables.system().modelled(*number))
+                return Error{target.range(), codes::variable_number, kerf_alarm::unknown_variable, not_modelled(*number, text)};
             return Error{target.range(), codes::variable_number, 115, no_such_variable(*number, text)};
         case WriteResult::read_only:
             return Error{target.range(), codes::write_protected, 116,

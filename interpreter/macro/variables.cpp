@@ -5,6 +5,7 @@ namespace kerf::interpreter::macro {
 std::optional<Value> SystemVariables::read(int) { return std::nullopt; }
 WriteResult SystemVariables::write(int, Value) { return WriteResult::undefined; }
 bool SystemVariables::read_only(int) const { return false; }
+bool SystemVariables::modelled(int) const { return true; }
 
 namespace {
 // Stateless, so one instance serves every Variables built without a system.

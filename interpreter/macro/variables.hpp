@@ -76,6 +76,10 @@ public:
     // the write protection of commons by parameters (FANUC 6031/6032 protect a range of
     // #500-#999) or make system variables read-only.
     virtual bool read_only(int number) const;
+    // False for a number the control may have but this implementation does not model (a system
+    // variable outside its tables): reading or writing it is kerf's limit (kerf_alarm::
+    // unknown_variable), not alarm 115. The default models everything it knows: nothing exists.
+    virtual bool modelled(int number) const;
 };
 
 class Variables {

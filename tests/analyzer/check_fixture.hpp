@@ -9,6 +9,7 @@
 
 #include "analyzer/analyze.hpp"
 #include "analyzer/output.hpp"
+#include "grammar/detect.hpp"
 #include "interpreter/default_setup.hpp"
 
 namespace kerf::test {
@@ -25,10 +26,13 @@ struct Checked {
     analyzer::FileReport report;
 };
 
-// A soft limit to add to the built-in machine (it has none): axis letter, min, max.
+// A soft limit to add to the built-in machine (it has none): axis letter, min, max; and what a
+// machine file would say: that it was given (its limits count), its M codes.
 struct SoftLimit {
     char axis = 0;
     double min = 0, max = 0;
+    bool machine_given = false;
+    std::vector<int> m_codes;
 };
 
 inline Checked check(const std::string& text, const std::string& dialect_id,
@@ -38,6 +42,8 @@ inline Checked check(const std::string& text, const std::string& dialect_id,
     interpreter::Setup setup = interpreter::default_setup(*d);
     if (const auto axis = interpreter::axis_of_letter(limit.axis))
         setup.soft_limits[static_cast<std::size_t>(*axis)] = {limit.min, limit.max};
+    setup.machine_given = limit.machine_given;
+    setup.m_codes = limit.m_codes;
     interpreter::ProgramSet programs;
     const std::uint32_t file = programs.add("test.nc", text, *d);
     std::vector<analyzer::Finding> findings = analyzer::check_file(programs, file, *d, setup, options);
@@ -46,6 +52,16 @@ inline Checked check(const std::string& text, const std::string& dialect_id,
     c.findings = findings;
     c.report = analyzer::make_report("test.nc", *loaded.whole_tree(), *loaded.whole_lines(), std::move(findings));
     return c;
+}
+
+// What the project layer hands the check when detection finds another control's program
+// (project/check.cpp); nullopt when it does not.
+inline std::optional<analyzer::ForeignControl> foreign_control(const std::string& text) {
+    const grammar::Detection d = grammar::detect_dialect(text);
+    if (!d.foreign) return std::nullopt;
+    return analyzer::ForeignControl{d.foreign->id, d.foreign->name, static_cast<std::uint32_t>(d.foreign->first.line),
+                                    static_cast<std::uint32_t>(d.foreign->first.column), d.foreign->first.what,
+                                    d.foreign->first.proves};
 }
 
 // "line:col severity ID" of the findings of `rule` (all rules when empty).

@@ -23,6 +23,7 @@ struct Expected {
     test::SoftLimit limit;
     std::int64_t program = 0;                  // "# program-files N FILE...": what the program index
     std::vector<std::string> program_files;    // answers for O N (the files of a folder the test has not)
+    bool foreign = false;                      // "# foreign": detection's foreign control goes to the check
 };
 
 // "# dialect ID" sets the dialect; other lines are "line:col severity ID".
@@ -34,6 +35,13 @@ Expected read_expected(const fs::path& file) {
         else if (line.starts_with("# soft-limit ")) {
             std::istringstream words(line.substr(13));
             words >> e.limit.axis >> e.limit.min >> e.limit.max;
+        } else if (line == "# foreign") {
+            e.foreign = true;
+        } else if (line.starts_with("# machine-file")) {
+            // "# machine-file [M25 M165 ...]": checked as with a machine file listing these M codes.
+            e.limit.machine_given = true;
+            std::istringstream words(line.substr(14));
+            for (std::string code; words >> code;) e.limit.m_codes.push_back(std::stoi(code.substr(1)));
         } else if (line.starts_with("# program-files ")) {
             std::istringstream words(line.substr(16));
             words >> e.program;
@@ -66,9 +74,15 @@ TEST_CASE("each rule fires on its bad program as expected and not on its good on
         auto options = test::all_rules_on();
         if (!expected.program_files.empty())
             options.program_files = [&](std::int64_t n) { return n == expected.program ? expected.program_files : std::vector<std::string>{}; };
-        CHECK(test::summary(test::check(test::read_text(dir / "bad.nc"), expected.dialect, options, expected.limit), r.id) ==
-              expected.findings);
-        CHECK(test::summary(test::check(test::read_text(dir / "good.nc"), expected.dialect, options, expected.limit), r.id).empty());
+        // "# foreign": detection runs on the text, as the project layer does (project/check.cpp).
+        const auto with_detection = [&](const std::string& text) {
+            analyzer::CheckOptions o = options;
+            if (expected.foreign) o.foreign = test::foreign_control(text);
+            return o;
+        };
+        const std::string bad = test::read_text(dir / "bad.nc"), good = test::read_text(dir / "good.nc");
+        CHECK(test::summary(test::check(bad, expected.dialect, with_detection(bad), expected.limit), r.id) == expected.findings);
+        CHECK(test::summary(test::check(good, expected.dialect, with_detection(good), expected.limit), r.id).empty());
     }
 }
 

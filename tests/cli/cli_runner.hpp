@@ -34,6 +34,10 @@ inline std::string shell_quote(const std::filesystem::path& p) {
 }
 
 // What a shell command wrote to stdout, and its status as pclose gives it. REQUIREs the pipe.
+// Where run_kerf keeps its stdin and stderr for the commands run on folder `dir`: beside the folder,
+// not in it (a walk would read a .txt file there as a program).
+inline std::filesystem::path runs_beside(const std::filesystem::path& dir) { return dir.string() + "-run"; }
+
 struct Captured {
     std::string out;
     int status = -1;

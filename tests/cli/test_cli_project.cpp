@@ -91,6 +91,27 @@ TEST_CASE("calls reach programs inside other files of the folder and of library 
     fs::remove_all(lib);
 }
 
+// [programs] resident (issue 15): a call into the machine's resident range is skipped by the dry
+// run of kerf run and kerf plot (project/start.hpp resident_programs), which then go on to the end;
+// without the key the same call is alarm 078 and the run stops there.
+TEST_CASE("[programs] resident: kerf run and kerf plot go on past a call to a resident program") {
+    const fs::path dir = kWork / "resident";
+    const fs::path main = write_text(dir / "main.nc", "O0001\nG90 G00 X0. Y0.\nG65 P9832 A1.\nG00 X10. Y5.\nM30\n");
+    write_text(dir / ".kerf.toml", "dialect = \"haas-mill\"\n");
+    const CliRun without = run("run " + shell_quote(main));
+    CHECK(without.code == 1);
+    CHECK(without.err.find(main.string() + ":3: error: alarm 78") != std::string::npos);
+    write_text(dir / ".kerf.toml", "dialect = \"haas-mill\"\n[programs]\nresident = [\"O9000-O9999\"]\n");
+    const CliRun with = run("run " + shell_quote(main));
+    CHECK(with.code == 0);
+    CHECK(with.out.find("final position X10.000 Y5.000") != std::string::npos);
+    CHECK(with.out.find("ended normally") != std::string::npos);
+    const CliRun plot = run("plot " + shell_quote(main));
+    CHECK(plot.code == 0);
+    CHECK(plot.out.find("alarm") == std::string::npos);   // no alarm marker: the run reached M30
+    fs::remove_all(dir);
+}
+
 TEST_CASE("kerf check --fix and kerf fmt --write replace files through the one atomic writer") {
     const fs::path dir = kWork / "writer";
     const fs::path check_file = write_text(dir / "fix.nc", "O1\nT2 MO6\nM30\n");

@@ -120,7 +120,8 @@ TEST_CASE("every built-in code names an id of the vocabulary; every G/M id is li
     std::set<std::string_view> unused;
     for (const FunctionDef& d : FunctionId::all())
         if (!used.count(d.id)) unused.insert(d.id);
-    CHECK(unused == std::set<std::string_view>{fn::local_subprogram_call.name(), fn::machine_builder_code.name()});
+    // local-subprogram-call and machine-builder-code were unused until the Haas dialects (issue 15).
+    CHECK(unused.empty());
 }
 
 // Code names function ids through dialects/functions.hpp's typed constants: a string literal that is

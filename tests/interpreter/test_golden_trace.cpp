@@ -14,6 +14,10 @@
 // that was not checked. Goldens whose `# status:` says FAILS hold what the reference says where kerf
 // disagrees; they are never rewritten. A header line `# TODO` (left by a new skeleton) fails the test.
 // KERF_UPDATE_GOLDEN=1 KERF_TRACE_NEW=a.nc,b.nc writes skeletons for new examples.
+// A second test keeps each header in step with its body (`header_disagreements`): quoted messages
+// and alarms occur in the body, cited lines have events (or the header says "no event"), and no
+// header speaks of placeholder messages ("next issue", "not applied yet", "not expanded yet") the
+// body does not print. Rewrite a header after regenerating its body; the test says which lines.
 #include <catch2/catch.hpp>
 
 #include <map>
@@ -22,6 +26,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -272,6 +277,206 @@ void write_golden(const fs::path& path, const Golden& g, const std::string& body
     out << body;
 }
 
+// --- headers that agree with their bodies (issue 13) ----------------------------------------------
+//
+// A header is written by hand and a body is rendered by the code; when the code changes and the
+// bodies are regenerated, a header can go on quoting what the trace no longer says. These checks
+// catch that mechanically (the arithmetic itself stays a reviewer's job, REVIEW.md):
+//  (a) every text a `# checked` line quotes as a message or alarm of the trace (`message "…"`,
+//      `alarm 20 "…"`; "..." or "…" inside the quote stands for omitted text) occurs in one line of
+//      the body, the pieces in order;
+//  (b) every trace line a `# checked` line cites (`line 12`, `lines 14, 17`, `lines 27 (…) and 28`,
+//      `lines 10-11`: both ends) is the source line of at least one event of the body, unless the
+//      clause of the citation (between semicolons) says the block gives "no event" (`"G80" = line 8
+//      no event`: a block that changes only modal state is checked by its absence);
+//  (c) no header line says "next issue", "not applied yet" or "not expanded yet" unless the body
+//      has that text (the placeholder messages of features that did not exist yet).
+
+bool is_checked_line(const std::string& line) { return line.rfind("# checked", 0) == 0; }
+
+// The source lines that have an event in the body (the number in front of each event line).
+std::set<int> body_line_numbers(const std::string& body) {
+    std::set<int> lines;
+    for (const std::string& l : split_lines(body)) {
+        if (l.rfind("--- summary", 0) == 0) break;
+        std::size_t i = 0;
+        while (i < l.size() && l[i] == ' ') ++i;
+        int n = 0;
+        bool digits = false;
+        for (; i < l.size() && std::isdigit(static_cast<unsigned char>(l[i])); ++i) {
+            n = n * 10 + (l[i] - '0');
+            digits = true;
+        }
+        if (digits) lines.insert(n);
+    }
+    return lines;
+}
+
+// Reads a number at `i` (moving past it); false when there is none.
+bool read_number(const std::string& s, std::size_t& i, int& out) {
+    if (i >= s.size() || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;
+    out = 0;
+    while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) out = out * 10 + (s[i++] - '0');
+    return true;
+}
+
+void skip_blanks(const std::string& s, std::size_t& i) {
+    while (i < s.size() && s[i] == ' ') ++i;
+}
+
+// Moves past a balanced "( … )" at `i`, if there is one.
+void skip_parenthesis(const std::string& s, std::size_t& i) {
+    if (i >= s.size() || s[i] != '(') return;
+    int depth = 0;
+    for (; i < s.size(); ++i) {
+        if (s[i] == '(') ++depth;
+        if (s[i] == ')' && --depth == 0) {
+            ++i;
+            return;
+        }
+    }
+}
+
+// The clause of `text` around position `at`: from the ';' before it to the ';' after it, not counting
+// a ';' inside double quotes (a quoted block: `line 11 "M10;" alone, no event`).
+std::string clause_at(const std::string& text, std::size_t at) {
+    std::size_t from = 0;
+    bool quoted = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == '"') quoted = !quoted;
+        if (text[i] != ';' || quoted) continue;
+        if (i < at) {
+            from = i + 1;
+        } else {
+            return text.substr(from, i - from);
+        }
+    }
+    return text.substr(from);
+}
+
+struct Citation {
+    int line = 0;
+    bool says_no_event = false;   // the clause says the block gives "no event" (G80, a cycle's first block, F alone)
+};
+
+// The trace lines a header line cites: "line N", "lines N, M and K", "lines N-M" (the two ends),
+// with a parenthesis allowed after each number ("lines 27 (G74 R1) and 28 (…)").
+std::vector<Citation> cited_lines(const std::string& text) {
+    std::vector<Citation> out;
+    for (std::size_t pos = 0; (pos = text.find("line", pos)) != std::string::npos; pos += 4) {
+        if (pos > 0 && std::isalnum(static_cast<unsigned char>(text[pos - 1]))) continue;
+        std::size_t i = pos + 4;
+        if (i < text.size() && text[i] == 's') ++i;
+        if (i >= text.size() || text[i] != ' ') continue;
+        ++i;
+        int n = 0;
+        if (!read_number(text, i, n)) continue;
+        const bool no_event = clause_at(text, pos).find("no event") != std::string::npos;
+        out.push_back({n, no_event});
+        for (;;) {
+            std::size_t j = i;
+            skip_blanks(text, j);
+            skip_parenthesis(text, j);
+            skip_blanks(text, j);
+            if (text.compare(j, 1, ",") == 0 || text.compare(j, 1, "-") == 0) {
+                ++j;
+            } else if (text.compare(j, 4, "and ") == 0) {
+                j += 4;
+            } else {
+                break;
+            }
+            skip_blanks(text, j);
+            if (!read_number(text, j, n)) break;
+            out.push_back({n, no_event});
+            i = j;
+        }
+    }
+    return out;
+}
+
+// The texts a header line quotes as messages or alarms of the trace: `message "…"`, `alarm N "…"`.
+std::vector<std::string> quoted_trace_texts(const std::string& text) {
+    std::vector<std::string> out;
+    for (const std::string_view key : {std::string_view("message \""), std::string_view("alarm ")}) {
+        for (std::size_t pos = 0; (pos = text.find(key, pos)) != std::string::npos; pos += key.size()) {
+            if (pos > 0 && std::isalnum(static_cast<unsigned char>(text[pos - 1]))) continue;
+            std::size_t i = pos + key.size();
+            if (key == "alarm ") {   // alarm <number> "…"
+                int code = 0;
+                if (!read_number(text, i, code) || text.compare(i, 2, " \"") != 0) continue;
+                i += 2;
+            }
+            const std::size_t close = text.find('"', i);
+            if (close == std::string::npos) continue;
+            out.push_back(text.substr(i, close - i));
+        }
+    }
+    return out;
+}
+
+// The pieces of a quote between its ellipses ("..." or "…"), trimmed; empty pieces dropped.
+std::vector<std::string> quote_pieces(const std::string& quote) {
+    std::vector<std::string> pieces;
+    std::string piece;
+    auto flush = [&] {
+        while (!piece.empty() && piece.front() == ' ') piece.erase(piece.begin());
+        while (!piece.empty() && piece.back() == ' ') piece.pop_back();
+        if (!piece.empty()) pieces.push_back(piece);
+        piece.clear();
+    };
+    for (std::size_t i = 0; i < quote.size();) {
+        if (quote.compare(i, 3, "...") == 0 || quote.compare(i, 3, "\xE2\x80\xA6") == 0) {
+            flush();
+            i += 3;
+        } else {
+            piece += quote[i++];
+        }
+    }
+    flush();
+    return pieces;
+}
+
+// True when some line of the body holds every piece, in order.
+bool body_has_quote(const std::string& body, const std::string& quote) {
+    const std::vector<std::string> pieces = quote_pieces(quote);
+    if (pieces.empty()) return false;
+    for (const std::string& l : split_lines(body)) {
+        std::size_t at = 0;
+        bool all = true;
+        for (const std::string& piece : pieces) {
+            const std::size_t found = l.find(piece, at);
+            if (found == std::string::npos) {
+                all = false;
+                break;
+            }
+            at = found + piece.size();
+        }
+        if (all) return true;
+    }
+    return false;
+}
+
+// Every way the header of `g` disagrees with its body, one sentence each (empty: it agrees).
+std::vector<std::string> header_disagreements(const Golden& g) {
+    std::vector<std::string> problems;
+    const std::set<int> lines = body_line_numbers(g.body);
+    for (const std::string& h : g.header) {
+        if (h.rfind("# (EXPECTED", 0) == 0) continue;   // the example's words, not ours
+        for (const std::string_view stale : {"next issue", "not applied yet", "not expanded yet"})
+            if (h.find(stale) != std::string::npos && g.body.find(stale) == std::string::npos)
+                problems.push_back(fmt::format("says \"{}\" but no event of the body does: {}", stale, h));
+        if (!is_checked_line(h)) continue;
+        for (const std::string& quote : quoted_trace_texts(h))
+            if (!body_has_quote(g.body, quote))
+                problems.push_back(fmt::format("quotes \"{}\" as the trace's, but no line of the body has it: {}", quote, h));
+        for (const Citation& c : cited_lines(h))
+            if (lines.count(c.line) == 0 && !c.says_no_event)
+                problems.push_back(fmt::format("cites line {}, which has no event in the body (say \"no event\" if that is "
+                                               "the point): {}", c.line, h));
+    }
+    return problems;
+}
+
 }  // namespace
 
 TEST_CASE("the golden renderer decides on every field of the trace") {
@@ -291,6 +496,70 @@ TEST_CASE("number rendering of the golden traces") {
     CHECK(num(-0.0001) == "0");
     CHECK(num(1.23456) == "1.235");
     CHECK(num(69.2820323) == "69.282");
+}
+
+TEST_CASE("header checks: a stale header is caught, a current one passes") {
+    Golden g;
+    g.body = "   7 rapid X80 Y40 Z400 len=260.192 t=1.727s\n"
+             "  18 message G38: part transferred, B-472 within the tolerance B-472..B-471\n"
+             "--- summary\nalarm 20 at line 9: arc\n";
+    SECTION("a current header") {
+        g.header = {"# status: verified",
+                    "# checked: line 7 rapid X80 Y40; lines 7 (start-up) and 18 message \"part transferred ... B-471\"",
+                    "# not yet: nothing"};
+        CHECK(header_disagreements(g).empty());
+    }
+    SECTION("(a) a quoted message the body no longer has") {
+        g.header = {"# checked: line 18 message \"G38 (workpiece-transfer-cycle) is not expanded yet\""};
+        CHECK(header_disagreements(g).size() == 2);   // the quote and the stale phrase
+    }
+    SECTION("(a) the pieces of a quote must come in order on one line") {
+        g.header = {"# checked: line 18 message \"B-471 ... part transferred\""};
+        CHECK(header_disagreements(g).size() == 1);
+        g.header = {"# checked: line 18 alarm 20 \"arc ... start and end radii differ\""};
+        CHECK(header_disagreements(g).size() == 1);
+    }
+    SECTION("(b) a cited line without an event") {
+        g.header = {"# checked: lines 7, 8 and 18 (G38), lines 9-18"};
+        const std::vector<std::string> problems = header_disagreements(g);
+        REQUIRE(problems.size() == 2);
+        CHECK(problems[0].find("line 8,") != std::string::npos);
+        CHECK(problems[1].find("line 9,") != std::string::npos);
+        g.header = {"# checked: \"G80\" = line 8 no event; line 18 message \"part transferred\""};
+        CHECK(header_disagreements(g).empty());
+        g.header = {"# checked: \"G80\" = line 8 no event, line 9 rapid X80; line 18"};
+        CHECK(header_disagreements(g).empty());   // one clause: "no event" covers it (the reviewer's words)
+        g.header = {"# checked: \"G80\" = line 8 no event; line 9 rapid X80"};
+        CHECK(header_disagreements(g).size() == 1);
+        g.header = {"# checked: line 9 \"M10;\" alone, no event; line 7"};
+        CHECK(header_disagreements(g).empty());
+    }
+    SECTION("(c) placeholder phrases of features built since") {
+        g.header = {"# status: partially verified - pending: G42 (next issue)"};
+        CHECK(header_disagreements(g).size() == 1);
+        g.header = {"# not yet: G41 is not applied yet"};
+        CHECK(header_disagreements(g).size() == 1);
+        g.body.insert(0, "  10 message G41 (radius-comp-left) is not applied yet (next issue): the trace follows the programmed path\n");
+        g.header = {"# checked: line 10 message \"G41 (radius-comp-left) is not applied yet (next issue) ...\""};
+        CHECK(header_disagreements(g).empty());
+    }
+    SECTION("words that only look like citations") {
+        g.header = {"# checked: on the R20 line segment; lines of the seed; line X (none)"};
+        CHECK(header_disagreements(g).empty());
+    }
+}
+
+TEST_CASE("the headers of the golden traces agree with their bodies", "[golden][trace]") {
+    const fs::path golden_dir = fs::path(KERF_SOURCE_DIR) / "tests" / "golden" / "trace";
+    REQUIRE(fs::is_directory(golden_dir));
+    std::size_t goldens = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(golden_dir)) {
+        if (!e.is_regular_file() || e.path().extension() != ".trace") continue;
+        ++goldens;
+        const Golden g = read_golden(e.path());
+        for (const std::string& problem : header_disagreements(g)) FAIL_CHECK(e.path().filename().string() << ": header " << problem);
+    }
+    CHECK(goldens >= 80);
 }
 
 TEST_CASE("the interpreter's traces of the reference examples match the hand-checked goldens", "[golden][trace]") {

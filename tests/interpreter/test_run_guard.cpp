@@ -3,7 +3,9 @@
 // run; the wall-clock limit ends any run that takes too long.
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <chrono>
+#include <thread>
 
 #include "interpreter/events.hpp"
 #include "interpreter/run_guard.hpp"
@@ -96,4 +98,77 @@ TEST_CASE("run guard: no time limit unless one is given; the bounds are kerf's r
     for (const int code : {ka::step_limit, ka::move_limit, ka::time_limit}) CHECK(ka::is_run_limit(code));
     CHECK_FALSE(ka::is_run_limit(ka::syntax_error));
     CHECK_FALSE(ka::is_run_limit(ka::internal));
+}
+
+// RunOptions::cancel (issue 13): the flag stops the run before its next block, also in a macro loop
+// that emits no event at all (the analyzer once threw out of its sink, which such a loop never calls).
+TEST_CASE("cancel: a flag set by another thread stops an endless eventless loop at once", "[run_guard]") {
+    const std::string text = "O1\n#1=0\nWHILE [#1 GE 0] DO1\n#1=#1+1\nEND1\nM30\n";
+    const dialects::Dialect& d = dialect("fanuc-mill");
+    Setup setup = plain_setup(d);
+    setup.step_limit = 4'000'000'000;   // far beyond what 100 ms runs: only the flag stops it
+    std::atomic<bool> cancel{false};
+    interpreter::RunOptions options;
+    options.cancel = &cancel;
+    std::thread canceller([&cancel] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        cancel = true;
+    });
+    const Run r = run_with(text, d, setup, options);
+    canceller.join();
+    CHECK(r.result.cancelled);
+    CHECK_FALSE(r.result.completed);
+    CHECK(r.result.alarms.empty());   // not an alarm of the program
+    CHECK(r.result.blocks > 1000);    // it ran until the flag came
+}
+
+TEST_CASE("cancel: a flag already set runs nothing", "[run_guard]") {
+    std::atomic<bool> cancel{true};
+    interpreter::RunOptions options;
+    options.cancel = &cancel;
+    const dialects::Dialect& d = dialect("fanuc-mill");
+    const Run r = run_with("O1\nG00 X10. Y10.\nM30\n", d, plain_setup(d), options);
+    CHECK(r.result.cancelled);
+    CHECK(r.result.blocks == 0);
+    CHECK(motion_events(r.events) == 0);
+}
+
+// RunOptions::run_to: stop after a block, where the tool then is (the language server's "run to here").
+TEST_CASE("run to a block: the run stops after its first execution, also inside a subprogram", "[run_guard]") {
+    const std::string text = "O1\nG00 X10. Y10.\nM98 P2 L3\nG00 X50. Y50.\nM30\nO2\nG91 G00 X1.\nG90 M99\n";
+    const dialects::Dialect& d = dialect("fanuc-mill");
+    interpreter::RunOptions options;
+    // Line 3 of the main program (M98 P2 L3): the call is made, nothing of O2 runs yet.
+    options.run_to = interpreter::RunOptions::BlockAt{0, static_cast<std::uint32_t>(text.find("M98"))};
+    Run r = run_with(text, d, plain_setup(d), options);
+    CHECK(r.result.reached_block);
+    CHECK_FALSE(r.result.completed);
+    CHECK(r.result.final_position[X] == Approx(10));
+    // The G91 X1. block of O2: its first execution, after one step of X1.
+    options.run_to = interpreter::RunOptions::BlockAt{0, static_cast<std::uint32_t>(text.find("G91"))};
+    r = run_with(text, d, plain_setup(d), options);
+    CHECK(r.result.reached_block);
+    CHECK(r.result.final_position[X] == Approx(11));
+    // A block that never runs: the run goes to its end.
+    options.run_to = interpreter::RunOptions::BlockAt{0, 1};
+    r = run_with(text, d, plain_setup(d), options);
+    CHECK_FALSE(r.result.reached_block);
+    CHECK(r.result.completed);
+    CHECK(r.result.final_position[X] == Approx(50));
+}
+
+// A system variable outside kerf's tables (#3101 on FANUC, which O8200 of the corpus reads) is
+// kerf's limit 90006, not the program's alarm 115, on a read and on a write, at the block that
+// names it; the run stops there (the control may well have the variable), and --verify and the
+// analyzer take it as the end of the run, like the other limits.
+TEST_CASE("a system variable kerf does not model stops the run as kerf's alarm 90006") {
+    CHECK(ka::is_run_limit(ka::unknown_variable));
+    for (const char* block : {"#1=#3101", "#3101=5"}) {
+        INFO(block);
+        const Run r = run_bare(std::string("O1\n") + block + "\nG00 X1.\nM30\n", "fanuc-mill");
+        require_alarm(r, ka::unknown_variable);
+        CHECK(r.result.alarms[0].source.line == 2);
+        CHECK(r.result.alarms[0].text.find("#3101 is not in kerf's tables") != std::string::npos);
+        CHECK(count_moves_on_line(r, 3) == 0);
+    }
 }

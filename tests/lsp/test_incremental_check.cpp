@@ -159,11 +159,23 @@ TEST_CASE("incremental static check: a keystroke walks a few blocks; a changed f
     std::tie(got, expected) = c.both();
     CHECK(got == expected);
     CHECK(c.check.walked_blocks() <= 2 * 64 + 1);
-    // A label nothing jumps to: renumbering it matters to no rule.
-    c.edit(line(2995), line(2995) + 5, "N3001");
+    // A label nothing jumps to and no other block carries: renumbering it matters to no rule.
+    c.edit(line(2995), line(2995) + 5, "N7001");
     std::tie(got, expected) = c.both();
     CHECK(got == expected);
     CHECK_FALSE(c.check.walked_whole());
+    // The number of the next block (N3001): K3011 reads every label of the program, so the file is
+    // walked whole and says N3001 is on two blocks; numbering it back takes the finding away.
+    const auto k3011 = [&] { return std::count_if(got.begin(), got.end(), [](const std::string& f) { return f.starts_with("K3011"); }); };
+    c.edit(line(2995), line(2995) + 5, "N3001");
+    std::tie(got, expected) = c.both();
+    CHECK(got == expected);
+    CHECK(c.check.walked_whole());
+    CHECK(k3011() == 1);
+    c.edit(line(2995), line(2995) + 5, "N3000");
+    std::tie(got, expected) = c.both();
+    CHECK(got == expected);
+    CHECK(k3011() == 0);
     // Line 1995 holds N2000, the GOTO's target: renumbering it changes what the label rules say
     // (K3001 now fires at the GOTO), so the file is walked whole.
     CHECK(std::count_if(got.begin(), got.end(), [](const std::string& f) { return f.starts_with("K3001"); }) == 0);

@@ -16,7 +16,7 @@ using namespace kerf::machine;
 namespace {
 
 const std::vector<std::string> kMachineIds = {"fanuc-lathe", "fanuc-mill", "adv400-mill",
-                                              "adv400-lathe", "pcnc-mill", "iso-legacy-mill"};
+                                              "adv400-lathe", "pcnc-mill", "iso-legacy-mill", "haas-mill", "haas-lathe"};
 
 std::string messages(const std::vector<LoadError>& errors) {
     std::string out;
@@ -101,6 +101,8 @@ TEST_CASE("every built-in dialect maps to a built-in machine", "[machine][builti
     CHECK(default_machine_for("adv400-lathe").id == "adv400-lathe");
     CHECK(default_machine_for("pcnc-mill").id == "pcnc-mill");
     CHECK(default_machine_for("iso-legacy-mill").id == "iso-legacy-mill");
+    CHECK(default_machine_for("haas-mill").id == "haas-mill");
+    CHECK(default_machine_for("haas-lathe").id == "haas-lathe");
     // The same object each time (a cache), and an unknown id falls back to the FANUC mill.
     CHECK(&default_machine_for("fanuc-mill") == &default_machine_for("fanuc-mill"));
     CHECK(default_machine_for("no-such-dialect").id == "fanuc-mill");
@@ -486,5 +488,21 @@ TEST_CASE("machine/SCHEMA.md documents every switch", "[machine][docs]") {
         if (info.type == SwitchType::choice) {
             CHECK(std::find(info.choices.begin(), info.choices.end(), info.default_value) != info.choices.end());
         }
+    }
+}
+
+TEST_CASE("m_codes lists the machine builder's M codes, strictly", "[machine][m_codes]") {
+    const Registry& bases = builtin_machines();
+    const LoadResult ok = load_machine_text("id = \"shop\"\nbase = \"fanuc-mill\"\nm_codes = [\"M25\", 165, \"m7\"]\n", "shop.toml", bases);
+    REQUIRE(ok.errors.empty());
+    REQUIRE(ok.machine);
+    CHECK(ok.machine->m_codes == std::vector<int>{25, 165, 7});
+    // Derived from a machine with a list, without one: the base's stays.
+    CHECK(builtin_machines().find("fanuc-mill")->m_codes.empty());
+    for (const char* bad : {"m_codes = [\"G25\"]", "m_codes = [\"M25.5\"]", "m_codes = [-1]", "m_codes = \"M25\"",
+                            "m_codes = [\"M25\", 25]"}) {
+        INFO(bad);
+        const LoadResult r = load_machine_text(std::string("id = \"shop\"\nbase = \"fanuc-mill\"\n") + bad + "\n", "shop.toml", bases);
+        CHECK(find_error(r.errors, "m_codes") != nullptr);
     }
 }

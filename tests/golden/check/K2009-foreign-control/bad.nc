@@ -1,0 +1,5 @@
+%@MACRO
+// UNLOAD ALL TOOLS
+#100:=0;
+IF (#100 = 0) THEN
+END_IF;
