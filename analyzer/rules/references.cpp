@@ -326,8 +326,10 @@ public:
         if (reported_ || b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
         const auto n = repeated(b.file, b.program, b.view);
         if (!n) return;
-        const auto program = static_cast<std::uint32_t>(b.program);
-        if (references::label_blocks(b.file.typed, program, *n).front() == b.view.index()) return;   // the first one
+        // The label table (no walk of the program: a CAM program whose N numbers wrap repeats on
+        // nearly every block, and a walk per block made the check quadratic).
+        const LabelTable& labels = b.file.labels(b.program);
+        if (labels.blocks(*n).front() == b.view.index()) return;   // the first one
         reported_ = true;
         std::vector<std::int64_t> numbers;
         const ast::Program& p = b.file.typed.programs()[b.program];
@@ -341,7 +343,7 @@ public:
                                             list, numbers.size() == 1 ? "is" : "are"),
                                 "give each block a number of its own (kerf fmt --block-numbers renumber)");
         for (const std::int64_t m : numbers) {
-            const auto at = references::label_blocks(b.file.typed, program, m);
+            const std::vector<std::uint32_t> at = labels.blocks(m);
             for (std::size_t k = 0; k < at.size(); ++k)
                 f.related.push_back({block_range(b.file, at[k]), k == 0 ? fmt::format("N{}: the first", m) : fmt::format("N{} again", m)});
         }
