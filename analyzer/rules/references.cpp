@@ -1,6 +1,7 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
 #include <algorithm>
+#include <unordered_set>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -331,21 +332,29 @@ public:
         const LabelTable& labels = b.file.labels(b.program);
         if (labels.blocks(*n).front() == b.view.index()) return;   // the first one
         reported_ = true;
+        // The repeated numbers in the order they first repeat; a set for the test (CAM output whose
+        // N numbers wrap repeats tens of thousands of them: a linear search per block was quadratic).
         std::vector<std::int64_t> numbers;
+        std::unordered_set<std::int64_t> seen;
         const ast::Program& p = b.file.typed.programs()[b.program];
         for (std::uint32_t i = p.first_block; i < p.end_block; ++i)
-            if (const auto m = repeated(b.file, b.program, b.file.typed.block(i)); m && std::find(numbers.begin(), numbers.end(), *m) == numbers.end())
+            if (const auto m = repeated(b.file, b.program, b.file.typed.block(i)); m && seen.insert(*m).second)
                 numbers.push_back(*m);
+        // The message and the related locations name the first kListed numbers and count the others.
+        constexpr std::size_t kListed = 10;
         std::string list;
-        for (const std::int64_t m : numbers) list += fmt::format("{}N{}", list.empty() ? "" : ", ", m);
+        for (std::size_t k = 0; k < std::min(numbers.size(), kListed); ++k)
+            list += fmt::format("{}N{}", list.empty() ? "" : ", ", numbers[k]);
+        if (numbers.size() > kListed) list += fmt::format(" and {} more numbers", numbers.size() - kListed);
         Finding& f = out.report(block_text_range(b),
                                 fmt::format("{} {} on several blocks of this program: a search or a restart finds the first",
                                             list, numbers.size() == 1 ? "is" : "are"),
                                 "give each block a number of its own (kerf fmt --block-numbers renumber)");
-        for (const std::int64_t m : numbers) {
+        for (std::size_t k = 0; k < std::min(numbers.size(), kListed); ++k) {
+            const std::int64_t m = numbers[k];
             const std::vector<std::uint32_t> at = labels.blocks(m);
-            for (std::size_t k = 0; k < at.size(); ++k)
-                f.related.push_back({block_range(b.file, at[k]), k == 0 ? fmt::format("N{}: the first", m) : fmt::format("N{} again", m)});
+            for (std::size_t j = 0; j < at.size(); ++j)
+                f.related.push_back({block_range(b.file, at[j]), j == 0 ? fmt::format("N{}: the first", m) : fmt::format("N{} again", m)});
         }
     }
     void state(StateKey& key) const override { key.add(reported_); }
