@@ -15,11 +15,14 @@ namespace {
 std::vector<Event> alarms_of(const Run& r) { return of_kind(r, EventKind::alarm); }
 
 // A fanuc-mill bare setup with IS-B integer input (calculator-type input off).
-Setup mill_is_b() {
-    Setup s = bare_setup(dialect("fanuc-mill"));
+// A control of dialect `id` reading integers as least input increments (IS-B, calculator input off).
+Setup is_b(const char* id) {
+    Setup s = bare_setup(dialect(id));
     s.calculator_decimal = false;
     return s;
 }
+
+Setup mill_is_b() { return is_b("fanuc-mill"); }
 
 }  // namespace
 
@@ -47,8 +50,7 @@ TEST_CASE("G76 P/Q in G20 count 0.0001 inch (Doosan O0201)", "[units]") {
     // Height k = 0.0645 in (radius), first depth Δd = 0.0180 in: the thread crest X = 1.911 + 2k
     // = 2.040, the first pass at 2.040 − 2·0.018 = 2.004 (cycles.md §7; 10x the unit gave 2.841).
     const auto& d = dialect("fanuc-lathe-a");
-    Setup s = bare_setup(d);
-    s.calculator_decimal = false;
+    const Setup s = is_b("fanuc-lathe-a");
     const Run r = run_with("O1\nG20 G99\nT0101\nG97 S600 M03\nG0 X2.04 Z.05\nG76 P040000 Q30 R30\n"
                            "G76 X1.911 Z-.5 P645 Q180 F.1\nM30\n",
                            d, s);
@@ -61,8 +63,7 @@ TEST_CASE("G76 P/Q in G20 count 0.0001 inch (Doosan O0201)", "[units]") {
 
 TEST_CASE("a rotary axis counts degrees: C360000 is 360°, also under G20", "[units]") {
     const auto& d = dialect("fanuc-lathe-a");
-    Setup s = bare_setup(d);
-    s.calculator_decimal = false;
+    const Setup s = is_b("fanuc-lathe-a");
     for (const char* units : {"G21", "G20"}) {
         INFO(units);
         const Run r = run_with(std::string("O1\n") + units + " G98\nG0 C360000\nM30\n", d, s);
@@ -176,8 +177,7 @@ TEST_CASE("a profile block that breaks monotony is where alarm 064 stands", "[al
     // N25's `Z-8` without a point is 0.008 mm: the profile runs back up in Z (−20 → −0.008),
     // so the type I profile is not monotonic; the alarm is at N25 (line 8), not at the G71 line.
     const auto& d = dialect("fanuc-lathe-a");
-    Setup s = bare_setup(d);
-    s.calculator_decimal = false;
+    const Setup s = is_b("fanuc-lathe-a");
     const Run r = run_with("O1\nG99 T0101 S500 M03\nG0 X50. Z2.\nG71 U1. R0.5\nG71 P10 Q30 U0.2 W0.1 F0.2\n"
                            "N10 G0 X20.\nN20 G1 Z-20. F0.1\nN25 Z-8\nN30 X50.\nM30\n",
                            d, s);
