@@ -44,6 +44,15 @@ ActiveRules active_rules(const Registry& registry, const CheckConfig& config) {
 
 const Registry& registry_of(const CheckOptions& options) { return options.registry ? *options.registry : builtin_rules(); }
 
+void run_program_checks(const FileContext& ctx, const ActiveRules& rules, const std::function<RuleTally*(const Rule&)>& tally_of,
+                        std::vector<Finding>& out) {
+    for (const Rule* r : rules) {
+        if (!r->program_check) continue;
+        Reporter reporter(*r, out, tally_of(*r));
+        for (std::size_t p = 0; p < ctx.typed.programs().size(); ++p) r->program_check->program(ctx, p, reporter);
+    }
+}
+
 }  // namespace detail
 
 namespace {
@@ -86,10 +95,9 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
     std::vector<StaticRun> checks;
     for (const Rule* r : rules)
         if (r->make_static) checks.push_back({r, r->make_static(), Reporter(*r, out, tallies.of(*r))});
-    if (checks.empty()) return;
     detail::BlockStep step;
     const std::vector<ast::Program>& programs = ctx.typed.programs();
-    for (std::size_t p = 0; p < programs.size(); ++p) {
+    for (std::size_t p = 0; p < programs.size() && !checks.empty(); ++p) {
         ModalState modal(ctx.dialect, ctx.setup.power_on);
         for (StaticRun& c : checks) c.check->begin_program(ctx, p, c.out);
         for (std::uint32_t b = programs[p].first_block; b < programs[p].end_block; ++b) {
@@ -98,6 +106,7 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
         }
         for (StaticRun& c : checks) c.check->end_program(ctx, p, c.out);
     }
+    detail::run_program_checks(ctx, rules, tally_of(tallies), out);
 }
 
 // The sink of the dry run: each event to every dynamic check, alarms to the rule that owns their
@@ -467,6 +476,30 @@ void LabelTable::splice(std::uint32_t first, std::uint32_t old_last, std::int64_
     for (Entry& e : sorted_)
         if (e.block >= old_last) e.block = static_cast<std::uint32_t>(e.block + moved);
 }
+
+void LabelTable::replace(std::uint32_t first, std::uint32_t end, std::span<const Entry> now) {
+    std::erase_if(sorted_, [&](const Entry& e) { return e.block >= first && e.block < end; });
+    for (const Entry& e : now) {
+        // After the entries of its number in earlier blocks, before those in later ones.
+        const auto at = std::upper_bound(sorted_.begin(), sorted_.end(), e, [](const Entry& a, const Entry& b) {
+            return a.number != b.number ? a.number < b.number : a.block < b.block;
+        });
+        sorted_.insert(at, e);
+    }
+}
+
+bool JumpTargets::has(std::int64_t n) const { return std::binary_search(labels.begin(), labels.end(), n); }
+
+std::shared_ptr<const JumpTargets> FileContext::shared_jump_targets() const {
+    if (!targets_) {
+        auto t = std::make_shared<JumpTargets>();
+        t->labels = analyzer::jump_targets(tree(), t->computed);
+        targets_ = std::move(t);
+    }
+    return targets_;
+}
+
+const JumpTargets& FileContext::jump_targets() const { return *shared_jump_targets(); }
 
 const LabelTable& FileContext::labels(std::size_t program) const {
     if (const auto it = labels_.find(program); it != labels_.end()) return it->second;

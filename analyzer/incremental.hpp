@@ -86,6 +86,7 @@ private:
         std::shared_ptr<const Snapshot> snapshot;
     };
     void apply(const BlockEdit& edit);
+    void relabel(const ast::TypedFile& typed);   // the label tables' entries of the changed blocks
     void forget();
 
     std::uint32_t every_;
@@ -99,8 +100,8 @@ private:
     bool dirty_ = false;                   // blocks [dirty_lo_, dirty_hi_) changed since the last walk
     std::uint32_t dirty_lo_ = 0, dirty_hi_ = 0;
     LabelTables labels_;
-    // jump_targets of the file, once an edit changed a label (a fact: the same until a whole walk)
-    std::optional<std::vector<std::int64_t>> targets_;
+    // The jump targets of the file (a fact: the same until a whole walk).
+    std::shared_ptr<const JumpTargets> targets_;
     std::uint64_t walked_ = 0;
     bool whole_ = false;
 };
