@@ -449,8 +449,22 @@ bool number_before(const LabelTable::Entry& a, const LabelTable::Entry& b) { ret
 LabelTable::LabelTable(std::vector<Entry> entries) : sorted_(std::move(entries)) {
     // Most programs number their blocks in ascending order: then there is nothing to sort. Stable,
     // so the blocks of one number stay in block order.
-    if (!std::is_sorted(sorted_.begin(), sorted_.end(), number_before))
+    if (std::is_sorted(sorted_.begin(), sorted_.end(), number_before)) return;
+    const auto [lo, hi] = std::minmax_element(sorted_.begin(), sorted_.end(), number_before);
+    const std::int64_t first = lo->number;
+    const std::uint64_t span = static_cast<std::uint64_t>(hi->number - first) + 1;
+    if (span > 4 * sorted_.size() + 65536) {
         std::stable_sort(sorted_.begin(), sorted_.end(), number_before);
+        return;
+    }
+    // CAM output whose N numbers wrap (a million blocks, N10 to N99990 over and over): a counting
+    // sort over the few numbers, stable, in two passes, instead of a merge sort of the entries.
+    std::vector<std::uint32_t> start(span + 1, 0);
+    for (const Entry& e : sorted_) ++start[static_cast<std::size_t>(e.number - first) + 1];
+    for (std::size_t i = 1; i <= span; ++i) start[i] += start[i - 1];
+    std::vector<Entry> out(sorted_.size());
+    for (const Entry& e : sorted_) out[start[static_cast<std::size_t>(e.number - first)]++] = e;
+    sorted_ = std::move(out);
 }
 
 std::pair<std::vector<LabelTable::Entry>::const_iterator, std::vector<LabelTable::Entry>::const_iterator>
