@@ -361,17 +361,20 @@ std::optional<std::vector<Finding>> foreign_control(const ast::SyntaxTree& tree,
 
 }  // namespace
 
+std::optional<std::vector<Finding>> check_foreign(const interpreter::ProgramSet& programs, std::uint32_t file,
+                                                  const CheckOptions& options) {
+    const Registry& registry = registry_of(options);
+    const interpreter::LoadedFile& loaded = programs.file(file);
+    auto foreign = foreign_control(*loaded.whole_tree(), *loaded.whole_lines(), registry, active_rules(registry, options.config), options);
+    if (foreign) finalize(*foreign, find_suppressions(*loaded.whole_tree()), *loaded.whole_lines(), registry, options.config);
+    return foreign;
+}
+
 std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                                 const interpreter::Setup& setup, const CheckOptions& options) {
     const Registry& registry = registry_of(options);
     const ActiveRules rules = active_rules(registry, options.config);
-    {
-        const interpreter::LoadedFile& loaded = programs.file(file);
-        if (auto foreign = foreign_control(*loaded.whole_tree(), *loaded.whole_lines(), registry, rules, options)) {
-            finalize(*foreign, find_suppressions(*loaded.whole_tree()), *loaded.whole_lines(), registry, options.config);
-            return *std::move(foreign);
-        }
-    }
+    if (auto foreign = check_foreign(programs, file, options)) return *std::move(foreign);
     std::vector<Finding> out;
     // The analyzer reads files given whole (ProgramSet::add): the static rules walk every block.
     const interpreter::LoadedFile& loaded = programs.file(file);

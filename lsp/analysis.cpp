@@ -6,6 +6,7 @@
 
 #include "analyzer/analyze.hpp"
 #include "analyzer/baseline.hpp"
+#include "project/check.hpp"
 #include "references/references.hpp"
 
 namespace kerf::lsp {
@@ -231,13 +232,25 @@ void AnalysisWorker::analyse(const std::shared_ptr<const Document>& doc) {
     interpreter::ProgramSet programs;
     const std::uint32_t file = programs.add_parsed(doc->path().string(), doc, doc->typed(), doc->lines());
     programs.set_loader(project_.loader_for(doc->path()), s.dialect);
-    analyzer::CheckOptions options;
+    // As kerf check takes them (project/check.hpp), with the dialect and machine this document uses.
+    project::Resolved resolved = s.resolved;
+    resolved.dialect = s.dialect;
+    resolved.setup = &s.setup;
+    analyzer::CheckOptions options = resolved.project ? project::project_check_options(resolved, programs, file, doc->path().string())
+                                                      : analyzer::CheckOptions{};
     options.config = s.check;
     options.time_limit = s.time_limit;
     options.program_files = [this, path = doc->path()](std::int64_t n) { return project_.program_files(n, path); };
     const auto exists = [&](std::int64_t n) {
         return references::program_numbered(doc->typed(), n).has_value() || project_.find_program(n, doc->path(), false).has_value();
     };
+    if (std::optional<std::vector<analyzer::Finding>> foreign = analyzer::check_foreign(programs, file, options)) {
+        // Another control's program (K2009): that one finding, as kerf check says it; no dry run.
+        analysis->findings = std::move(*foreign);
+        apply_baseline(analysis->findings, *doc);
+        publish_(*doc, *analysis, true);
+        return;
+    }
     std::shared_ptr<Incremental> incremental;
     {
         const std::lock_guard lock(mutex_);
