@@ -143,10 +143,11 @@ namespace {
 std::pair<std::uint32_t, int> order(std::uint32_t block, bool before_begin) { return {block, before_begin ? 0 : 1}; }
 
 // The static rules the walk runs, in registry order.
-detail::ActiveRules static_rules(const CheckOptions& options) {
+detail::ActiveRules static_rules(const CheckOptions& options, std::uint32_t shard, std::uint32_t shards) {
     detail::ActiveRules out;
+    std::uint32_t place = 0;
     for (const Rule* r : detail::active_rules(detail::registry_of(options), options.config))
-        if (r->make_static && r->clone_static) out.push_back(r);
+        if (r->make_static && r->clone_static && place++ % std::max<std::uint32_t>(shards, 1) == shard) out.push_back(r);
     return out;
 }
 
@@ -243,7 +244,7 @@ std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
     const interpreter::LoadedFile& loaded = in.programs.file(in.file);
     const ast::SyntaxTree& tree = *loaded.whole_tree();
     const ast::TypedFile& typed = *loaded.whole_typed();
-    const detail::ActiveRules rules = static_rules(in.options);
+    const detail::ActiveRules rules = static_rules(in.options, in.shard, in.shards);
     walked_ = 0;
     whole_ = false;
 
@@ -387,14 +388,16 @@ std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
     }
 
     std::vector<Finding> out = findings_;
-    const detail::ActiveRules all = detail::active_rules(detail::registry_of(in.options), in.options.config);
-    const auto no_tally = [](const Rule&) -> RuleTally* { return nullptr; };
-    // The program checks sum up each program from its label table: again after every edit.
-    detail::run_program_checks(ctx, all, no_tally, out);
+    if (in.shard == 0) {
+        const detail::ActiveRules all = detail::active_rules(detail::registry_of(in.options), in.options.config);
+        const auto no_tally = [](const Rule&) -> RuleTally* { return nullptr; };
+        // The program checks sum up each program from its label table: again after every edit.
+        detail::run_program_checks(ctx, all, no_tally, out);
+        detail::map_diagnostics(tree, tree.diagnostics, detail::registry_of(in.options), all, no_tally, out);
+        detail::map_diagnostics(tree, typed.diagnostics(), detail::registry_of(in.options), all, no_tally, out);
+    }
     labels_ = ctx.take_labels();
     targets_ = ctx.shared_jump_targets();
-    detail::map_diagnostics(tree, tree.diagnostics, detail::registry_of(in.options), all, no_tally, out);
-    detail::map_diagnostics(tree, typed.diagnostics(), detail::registry_of(in.options), all, no_tally, out);
     return out;
 }
 

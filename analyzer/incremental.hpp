@@ -65,6 +65,11 @@ public:
         // The edits since the last call, in order; nullopt: not known (the file is walked whole).
         std::optional<std::vector<BlockEdit>> edits;
         const std::atomic<bool>* cancel = nullptr;
+        // This check's share of the static rules: those whose place among them is `shard` modulo
+        // `shards` (the server walks two shares on two threads). Shard 0 also has the program
+        // checks and the parser's diagnostics; the shares' findings together are check_static's.
+        std::uint32_t shard = 0;
+        std::uint32_t shards = 1;
     };
 
     // check_static(programs, file, ...) for the file as it is now; nullopt when `cancel` stopped

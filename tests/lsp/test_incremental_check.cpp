@@ -52,6 +52,8 @@ struct Checked {
     analyzer::IncrementalStatic check{64};   // a checkpoint every 64 blocks: the examples are short
     std::uint64_t serial = 0;
     const analyzer::CheckOptions* options = nullptr;   // none: the defaults
+    bool shares = false;                               // the static rules in two shares, as the server walks them
+    analyzer::IncrementalStatic second{64};
 
     // The incremental findings, and check_static's on the same version.
     std::pair<std::vector<std::string>, std::vector<std::string>> both(const std::atomic<bool>* cancel = nullptr) {
@@ -64,8 +66,16 @@ struct Checked {
         const lsp::FileSettings& s = doc->settings();
         const analyzer::CheckOptions defaults;
         const analyzer::CheckOptions& o = options ? *options : defaults;
-        const analyzer::IncrementalStatic::Input in{programs, file, *s.dialect, s.setup, o, {}, 0, doc->edits_since(serial), cancel};
+        analyzer::IncrementalStatic::Input in{programs, file, *s.dialect, s.setup, o, {}, 0, doc->edits_since(serial), cancel};
+        if (shares) in.shards = 2;
         std::optional<std::vector<analyzer::Finding>> got = check.check(in);
+        if (shares) {
+            analyzer::IncrementalStatic::Input other = in;
+            other.shard = 1;
+            std::optional<std::vector<analyzer::Finding>> more = second.check(other);
+            if (got && more) got->insert(got->end(), more->begin(), more->end());
+            if (!more) got.reset();
+        }
         serial = doc->serial();
         if (!got) return {};
         return {shown(std::move(*got), *doc), shown(analyzer::check_static(programs, file, *s.dialect, s.setup, o), *doc)};
@@ -108,12 +118,15 @@ std::string numbered_program(int lines, const std::string& before_end = {}) {
 }  // namespace
 
 TEST_CASE("incremental static check equals check_static after every edit, on every example and corpus file") {
+    // Both ways the server may walk: all static rules in one walk, or in two shares (two threads).
+    const bool shares = GENERATE(false, true);
     std::size_t files = 0, edits = 0, partial = 0;
     for (const auto& path : test::shared_files_or_warn("no incremental check sweep")) {
         const std::string text = test::read_text(path);
         if (text.find('\0') != std::string::npos) continue;   // the server does not parse binary files
-        INFO(path.filename().string());
+        INFO(path.filename().string() << (shares ? " (two shares)" : ""));
         Checked c;
+        c.shares = shares;
         c.doc = lsp::Document::open("file:///t.nc", "/t.nc", 1, text, settings_for(grammar::detect_dialect(text).dialect));
         auto [got, expected] = c.both();
         REQUIRE(got == expected);
