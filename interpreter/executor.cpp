@@ -197,10 +197,13 @@ bool Executor::count_idle_move(const Frame& f, const ast::BlockView& view) {
     return !stopped_;
 }
 
+// The number stays kerf's (the alarm's identity); a dialect that numbers the alarm itself
+// ([alarms], Haas NGC) gives the number and text the user reads (dialects/dialect.hpp AlarmTable).
 void Executor::alarm(const Frame& f, const ast::BlockView& view, int number, std::string text) {
     Event e = event_at(EventKind::alarm, f, view);
     e.code = number;
-    e.text = std::move(text);
+    if (const std::optional<dialects::AlarmTable::Shown> shown = dialect_.alarms.shown(number)) e.control_alarm = shown->number;
+    e.text = dialect_.alarms.message(number, text);
     emit(std::move(e));
     stopped_ = true;
 }

@@ -115,7 +115,8 @@ public:
             if (b.file.resident && b.file.resident(call.number)) continue;
             reported_.insert(call.number);
             out.report(b.token(call.token).range(),
-                       fmt::format("program O{:04} is not in this file, the files of its folder or the library folders (alarm 078)", call.number),
+                       fmt::format("program O{:04} is not in this file, the files of its folder or the library folders ({})", call.number,
+                                   b.file.dialect.alarms.name_of(alarms::program_not_found)),
                        fmt::format("put O{:04} into a file of its folder, name the folder that holds it in .kerf.toml "
                                    "[programs] library, or, if the machine keeps it in memory (a probe macro), list it in "
                                    "[programs] resident", call.number));
@@ -176,18 +177,18 @@ public:
     void end_program(const FileContext& file, std::size_t, Reporter& out) override {
         if (depth_) return;
         for (const auto& [token, label] : open_)
-            out.report(file.tree().tokens[token].range(), fmt::format("DO {} has no END {} (alarm 124)", label, label),
+            out.report(file.tree().tokens[token].range(), fmt::format("DO {} has no END {} ({})", label, label, file.dialect.alarms.name_of(alarms::loop_nesting)),
                        fmt::format("close the loop with END {}", label));
     }
 
 private:
     void open(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
         if (!depth_ && (label < 1 || label > 3))
-            out.report(b.token(s).range(), fmt::format("DO {}: the loop number must be 1, 2 or 3 (alarm 126)", label),
+            out.report(b.token(s).range(), fmt::format("DO {}: the loop number must be 1, 2 or 3 ({})", label, b.file.dialect.alarms.name_of(alarms::loop_number)),
                        "number loops 1 to 3");
         open_.push_back({s, label});
         if (depth_ && open_.size() == 4)
-            out.report(b.token(s).range(), "WHILE/DO nested deeper than 3 (alarm 124)",
+            out.report(b.token(s).range(), fmt::format("WHILE/DO nested deeper than 3 ({})", b.file.dialect.alarms.name_of(alarms::loop_nesting)),
                        "move the inner loop into a macro (G65) or a subprogram");
     }
     void close(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
@@ -200,7 +201,7 @@ private:
                 return;
             }
         if (!depth_)
-            out.report(b.token(s).range(), fmt::format("END {} without its DO (alarm 124)", label),
+            out.report(b.token(s).range(), fmt::format("END {} without its DO ({})", label, b.file.dialect.alarms.name_of(alarms::loop_nesting)),
                        fmt::format("add WHILE [...] DO {} before it, or remove it", label));
     }
     bool depth_;
