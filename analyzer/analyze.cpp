@@ -523,7 +523,8 @@ const LabelTable& FileContext::labels(std::size_t program) const {
     std::vector<LabelTable::Entry> entries;
     const ast::Program& p = typed.programs()[program];
     for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
-        if (const auto n = typed.block(b).sequence_number()) entries.push_back({static_cast<std::int64_t>(*n), *n, b});
+        if (const ast::BlockView view = typed.block(b); const auto label = view.sequence_label())
+            entries.push_back({*label, *view.sequence_number(), b});
     return labels_.emplace(program, LabelTable(std::move(entries))).first->second;
 }
 

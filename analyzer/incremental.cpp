@@ -88,7 +88,7 @@ std::vector<std::int64_t> block_labels(const ast::SyntaxTree& tree, std::uint32_
     for (std::uint32_t b = first_block; b < end_block; ++b)
         for (const ast::Token& t : tree.block_tokens(b))
             if (t.kind == ast::TokenKind::word && t.letter == 'N' && t.is_number()) {   // BlockView::sequence_number
-                out.push_back(static_cast<std::int64_t>(tree.number_value(t)));
+                if (const auto label = ast::truncated_integer(tree.number_value(t))) out.push_back(*label);
                 break;
             }
     return out;
@@ -235,7 +235,8 @@ void IncrementalStatic::relabel(const ast::TypedFile& typed) {
         if (lo >= hi) continue;
         std::vector<LabelTable::Entry> now;
         for (std::uint32_t b = lo; b < hi; ++b)
-            if (const auto n = typed.block(b).sequence_number()) now.push_back({static_cast<std::int64_t>(*n), *n, b});
+            if (const ast::BlockView view = typed.block(b); const auto label = view.sequence_label())
+                now.push_back({*label, *view.sequence_number(), b});
         table.replace(lo, hi, now);
     }
 }

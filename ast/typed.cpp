@@ -293,6 +293,16 @@ std::optional<double> BlockView::sequence_number() const {
     return std::nullopt;
 }
 
+std::optional<std::int64_t> truncated_integer(double value) {
+    if (!(std::fabs(value) < 9.0e18)) return std::nullopt;   // also NaN
+    return static_cast<std::int64_t>(value);
+}
+
+std::optional<std::int64_t> BlockView::sequence_label() const {
+    const std::optional<double> n = sequence_number();
+    return n ? truncated_integer(*n) : std::nullopt;
+}
+
 bool BlockView::has_sequence_word() const {
     for (const Token& t : tokens())
         if (t.kind == TokenKind::word && t.letter == 'N') return true;

@@ -70,6 +70,9 @@ public:
     std::uint32_t first_token() const;
 
     std::optional<double> sequence_number() const;   // N value (nullopt also for a bare N)
+    // The N value as an integer label (truncated: N10.5 is a block of label 10), nullopt when there
+    // is none or it is too large for one (N12345678901234567890).
+    std::optional<std::int64_t> sequence_label() const;
     bool has_sequence_word() const;
     int block_delete_level() const;                  // 0 none, 1 for '/', n for '/n'
     std::vector<CodeRef> g_codes() const;
@@ -148,5 +151,8 @@ private:
 
 // Integer value of a numeric word (P41001, T0101), if it is an integer.
 std::optional<std::int64_t> integer_value(const SyntaxTree& tree, const Token& t);
+// `value` truncated to an integer (N10.5 is a block of label 10), nullopt when it is not finite or
+// too large for one (a cast would be undefined: N12345678901234567890, P1e19).
+std::optional<std::int64_t> truncated_integer(double value);
 
 }  // namespace kerf::ast

@@ -1,6 +1,7 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
 #include <algorithm>
+#include <climits>
 #include <limits>
 #include <span>
 #include <unordered_set>
@@ -161,8 +162,10 @@ public:
             const bool opens = st.kind == ast::StatementKind::while_do || st.kind == ast::StatementKind::do_;
             if (!opens && st.kind != ast::StatementKind::end) continue;
             const auto m = constant_of(b.tree(), st.label);
-            if (!m) continue;
-            const int label = static_cast<int>(*m);
+            const auto number = m ? ast::truncated_integer(*m) : std::nullopt;
+            // DO 99999999999: no loop number at all (the dry run raises alarm 126 on it).
+            if (!number || *number < INT_MIN || *number > INT_MAX) continue;
+            const int label = static_cast<int>(*number);
             if (opens) open(b, s, label, out);
             else close(b, s, label, out);
         }
@@ -280,8 +283,8 @@ public:
     void state(StateKey& key) const override { key.add((targets_ && targets_->computed) * 4 + dead_ * 2 + reported_); }
     void block(const BlockContext& b, Reporter& out) override {
         if (targets_->computed) return;   // GOTO #1 may reach any label
-        const auto n = b.view.sequence_number();
-        if (n && targets_->has(static_cast<std::int64_t>(*n))) dead_ = false;
+        const auto n = b.view.sequence_label();
+        if (n && targets_->has(*n)) dead_ = false;
         if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted) &&
             !heading(b)) {
             out.report(block_text_range(b), "no path reaches this block: it follows the end of the program or a GOTO",
@@ -414,12 +417,13 @@ std::vector<std::int64_t> jump_targets(const ast::SyntaxTree& tree, bool& comput
     computed = false;
     for (const ast::Statement& st : tree.statements) {
         if (st.label < 0) continue;
-        if (const auto v = constant_of(tree, st.label)) out.push_back(static_cast<std::int64_t>(*v));
-        else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
+        if (const auto v = constant_of(tree, st.label)) {
+            if (const auto label = ast::truncated_integer(*v)) out.push_back(*label);
+        } else if (st.kind == ast::StatementKind::goto_ || st.kind == ast::StatementKind::if_goto) computed = true;
     }
     for (const ast::Token& tok : tree.tokens)   // P/Q of calls and cycles: any number
         if (tok.kind == ast::TokenKind::word && (tok.letter == 'P' || tok.letter == 'Q') && tok.is_number())
-            out.push_back(static_cast<std::int64_t>(tree.number_value(tok)));
+            if (const auto label = ast::truncated_integer(tree.number_value(tok))) out.push_back(*label);
     std::sort(out.begin(), out.end());
     return out;
 }

@@ -180,7 +180,8 @@ public:
                 const ast::Expr& e = tree.exprs[static_cast<std::size_t>(i)];
                 if (e.kind != ast::ExprKind::variable) return;
                 const auto n = constant_of(tree, e.a);
-                const dialects::VariableRange* range = n ? b.file.dialect.variable_range(static_cast<std::int64_t>(*n)) : nullptr;
+                const auto number = n ? ast::truncated_integer(*n) : std::nullopt;
+                const dialects::VariableRange* range = number ? b.file.dialect.variable_range(*number) : nullptr;
                 reads_unit_ = reads_unit_ || (n && *n == kUnitModal) || (range && range->units);
             });
         }, [](std::int32_t) {});
