@@ -64,6 +64,15 @@ std::string printable(std::string_view text, bool keep_newlines) {
     return out;
 }
 
+bool is_valid_utf8(std::string_view text) {
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t n = static_cast<unsigned char>(text[at]) < 0x80 ? 1 : utf8_sequence(text, at);
+        if (n == 0) return false;
+        at += n;
+    }
+    return true;
+}
+
 std::string valid_utf8(std::string_view text) {
     std::string out;
     out.reserve(text.size());

@@ -20,6 +20,8 @@ std::string printable(std::string_view text, bool keep_newlines = false);
 // `text` with every byte that does not belong to a valid UTF-8 sequence replaced by U+FFFD (JSON
 // and SARIF must be UTF-8; a program's comment in CP1251 is not).
 std::string valid_utf8(std::string_view text);
+// True when every byte of `text` belongs to a valid UTF-8 sequence (valid_utf8 would not change it).
+bool is_valid_utf8(std::string_view text);
 
 // At most `max_chars` characters of `text`, cut on a UTF-8 boundary, "..." added when cut.
 std::string shorten(std::string_view text, std::size_t max_chars);

@@ -1,5 +1,7 @@
 #include "interpreter/trace_json.hpp"
 
+#include "ast/display.hpp"
+
 #include <fmt/compile.h>
 #include <fmt/format.h>
 
@@ -62,6 +64,13 @@ void put_number(Buffer& out, double v) {
 }
 
 void write_string(Buffer& out, std::string_view s) {
+    // A message may quote the program's own bytes (#3006, DPRNT, comments in CP1251): JSON text
+    // must be UTF-8, so bytes outside a valid sequence become U+FFFD (ast/display.hpp).
+    std::string repaired;
+    if (!ast::is_valid_utf8(s)) {
+        repaired = ast::valid_utf8(s);
+        s = repaired;
+    }
     out.push_back('"');
     for (const char c : s) {
         switch (c) {

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "ast/display.hpp"
+
 namespace kerf::lsp {
 
 namespace {
@@ -60,49 +62,9 @@ std::string id_key(const json::value& id) {
     return "null";
 }
 
-namespace {
-// The length of the UTF-8 sequence at `p` (1 to 4), or 0 when it is not one.
-std::size_t utf8_sequence(const unsigned char* p, std::size_t left) {
-    const unsigned char c = p[0];
-    if (c < 0x80) return 1;
-    std::size_t n = 0;
-    std::uint32_t min = 0;
-    if ((c & 0xE0) == 0xC0) n = 2, min = 0x80;
-    else if ((c & 0xF0) == 0xE0) n = 3, min = 0x800;
-    else if ((c & 0xF8) == 0xF0) n = 4, min = 0x10000;
-    else return 0;
-    if (n > left) return 0;
-    std::uint32_t cp = c & (0x7F >> n);
-    for (std::size_t i = 1; i < n; ++i) {
-        if ((p[i] & 0xC0) != 0x80) return 0;
-        cp = (cp << 6) | (p[i] & 0x3F);
-    }
-    if (cp < min || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
-    return n;
-}
-}  // namespace
-
 std::string valid_utf8(std::string text) {
-    const auto* p = reinterpret_cast<const unsigned char*>(text.data());
-    std::size_t i = 0;
-    while (i < text.size()) {   // the common case: nothing to replace, no copy
-        const std::size_t n = utf8_sequence(p + i, text.size() - i);
-        if (n == 0) break;
-        i += n;
-    }
-    if (i == text.size()) return text;
-    std::string out = text.substr(0, i);
-    while (i < text.size()) {
-        const std::size_t n = utf8_sequence(p + i, text.size() - i);
-        if (n == 0) {
-            out += "\xEF\xBF\xBD";
-            ++i;
-        } else {
-            out.append(text, i, n);
-            i += n;
-        }
-    }
-    return out;
+    // The common case: nothing to replace, no copy.
+    return ast::is_valid_utf8(text) ? std::move(text) : ast::valid_utf8(text);
 }
 
 std::string_view clip(std::string_view text, std::size_t bytes) {
