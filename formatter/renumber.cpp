@@ -103,6 +103,16 @@ private:
                 refuse_computed(r);
                 continue;
             }
+            if (const auto second = second_word(r)) {
+                // Which of two P (or Q) words a code takes is not certain (the control may raise an
+                // alarm; kerf's dry run takes the last, its references the first): renumbering one
+                // of them could change the jump.
+                refuse(r.block, tree_.tokens[*second].range(),
+                       fmt::format("{} is given twice ('{}' and '{}')", what(r), tree_.spelling(tree_.tokens[r.token]),
+                                   tree_.spelling(tree_.tokens[*second])),
+                       fmt::format("keep one {} word in the block (K1021)", r.letter));
+                continue;
+            }
             // A label of a program in another file (M98 P Q) keeps its value: that file keeps its numbers.
             const references::LabelScope scope = references::label_scope(file_, r);
             const std::optional<ast::Range> label = r.kind == references::Kind::goto_label ? std::optional(r.range) : std::nullopt;
@@ -110,6 +120,17 @@ private:
             for (const std::uint32_t p : scope.programs) ref.targets.emplace_back(p, references::jump_target(file_, p, r));
             references_.push_back(std::move(ref));
         }
+    }
+
+    // Another word of the reference's letter in its block, if there is one.
+    std::optional<std::uint32_t> second_word(const references::Reference& r) const {
+        const ast::BlockView view = file_.block(r.block);
+        const auto tokens = view.tokens();
+        for (std::uint32_t i = 0; i < tokens.size(); ++i) {
+            const std::uint32_t index = view.first_token() + i;
+            if (index != r.token && tokens[i].kind == ast::TokenKind::word && tokens[i].letter == r.letter) return index;
+        }
+        return std::nullopt;
     }
 
     // "G70 P", "M99 P": the code's spelling in the dialect table and the letter.

@@ -91,6 +91,14 @@ TEST_CASE("renumbering refuses what it cannot follow") {
         const ast::Diagnostic d = refusal("O1\nN10 G0 N30 X1\nM30\n", "fanuc-mill", renumbering(10, 10));
         CHECK(d.message.find("second N word") != std::string::npos);
     }
+    SECTION("a reference word given twice in its block") {
+        // G70 P100 Q1 P1: the dry run takes the last P, the references the first; renumbering one of
+        // them changed the cycle's profile (fuzz/regressions/formatter/verify-alarm-65-vs-60.nc).
+        const ast::Diagnostic d = refusal("O1\nN1 G0 X1\nN100 G1 X2\nN101 G0 X3\nG70 P100 Q101 P1\nM30\n", "fanuc-lathe-a",
+                                          renumbering(10, 10));
+        CHECK(d.message == "cannot renumber: G70 P is given twice ('P100' and 'P1') in block 'G70 P100 Q101 P1'");
+        CHECK(d.hint == "keep one P word in the block (K1021)");
+    }
     SECTION("numbers past N99999") {
         const ast::Diagnostic d = refusal("O1\nG0 X1\nG0 X2\nM30\n", "fanuc-mill", renumbering(99990, 10));
         CHECK(d.message.find("the new number N100000 is over N99999") != std::string::npos);
