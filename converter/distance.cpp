@@ -227,6 +227,16 @@ void Converter::insert_code(std::span<const Token> tokens, const CodeInfo& code_
 
 // Axis words before any motion code: the source has no power-on motion mode and the target
 // moves them at its own (G00): nothing says "do not move" there.
+// An axis word of the source whose letter the target has no axis for (fanuc-mill's C into the
+// three-axis pcnc-mill): the target reads the letter otherwise, or not at all, so the move is lost.
+void Converter::report_lost_axes(std::span<const Token> tokens) {
+    for (const Token& t : tokens)
+        if (t.kind == TokenKind::word && t.role() == Role::axis_absolute && !to_.lexical.is_axis(t.letter))
+            report_token(t, ReportKind::unconverted,
+                         fmt::format("{} is an axis of {}, and {} has no {} axis (its axes: {})", t.letter, from_.id, to_.id,
+                                     t.letter, to_.lexical.axes));
+}
+
 void Converter::report_no_motion_mode(const ast::BlockView& view, bool group01, std::span<const Token> tokens, bool lower) {
     if (group01 || motion_ || seen_motion_ || !in_first_program_) return;
     bool axis = false;

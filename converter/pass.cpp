@@ -107,6 +107,7 @@ void Converter::convert_code_block(std::uint32_t b, const ast::BlockView& view, 
     for (const ast::CodeRef& c : m_) convert_code(b, view, c);
     write_power_on(view, tokens, lower);
     report_no_motion_mode(view, group01, tokens, lower);
+    report_lost_axes(tokens);
     convert_distance(b, view, first, tokens, lower);
     // G20/G21 act before the block's words are read (semantics.md §1.2): the increments of G20 X100.
     for (const ast::CodeRef& c : g_) {

@@ -203,6 +203,7 @@ private:
     void insert_mode(std::uint32_t first, std::span<const Token> tokens, bool incremental, bool lower);
     void insert_code(std::span<const Token> tokens, const CodeInfo& code_info, bool lower);
     void report_no_motion_mode(const ast::BlockView& view, bool group01, std::span<const Token> tokens, bool lower);
+    void report_lost_axes(std::span<const Token> tokens);
 
     // parameters: words: readings, dwell units, drilling letters, direct drawing, G68, constructs
     void negate_rotation(const ast::BlockView& view);
