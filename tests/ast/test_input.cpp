@@ -94,6 +94,11 @@ TEST_CASE("input: size limits refuse a file or a line past them, with the limit 
     CHECK(line.problems[0].message.find("line 2 is 14 bytes long, over the limit of 10 bytes per line") == 0);
     CHECK(line.problems[0].hint.find("--max-line-bytes") != std::string::npos);
     CHECK_FALSE(decode_input("G0\nG1 X1.\nM30\n", limits).refused());
+    // A line's length is its bytes without the break: the '\r' of "\r\n" is not counted.
+    CHECK_FALSE(decode_input("G0\r\nG1 X1. Y2.\r\nM30\r\n", limits).refused());   // 10 bytes and a CR
+    const DecodedInput crlf = decode_input("G0\r\nG1 X1. Y2.5\r\nM30\r\n", limits);
+    REQUIRE(crlf.refused());
+    CHECK(crlf.problems[0].message.find("line 2 is 11 bytes long, over the limit of 10 bytes per line") == 0);
     limits.max_line_bytes = 0;   // no limit
     CHECK_FALSE(decode_input("G0\nG1 X1. Y2. Z3.\nM30\n", limits).refused());
     CHECK(check_file_size(101, {100, 10}).has_value());
