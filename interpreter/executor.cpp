@@ -46,17 +46,9 @@ const char* to_string(EventKind k) {
 Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const Setup& setup, EventSink& sink,
                    const RunOptions& options)
     : programs_(programs), dialect_(dialect), setup_(setup), sink_(sink), options_(options),
-      guard_(setup.step_limit, setup.move_limit, options.time_limit), work_offsets_(setup.work_offsets),
-      additional_offsets_(setup.additional_work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
-      tools_(setup.tools) {
-    // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
-    modal_.assign(dialect_.groups().size(), nullptr);
-    for (const dialects::CodeInfo& c : dialect_.codes())
-        if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group_index] = &c;
-    // The machine's power-on switches over the table (machine/SCHEMA.md "Power-on state").
-    for (const dialects::FunctionId function : setup_.power_on)
-        for (const dialects::CodeInfo* c : dialect_.codes_with_function(function))
-            if (c->letter == 'G' && !c->group.empty() && c->group != "00") modal_[c->group_index] = c;
+      guard_(setup.step_limit, setup.move_limit, options.time_limit) {
+    memory_.additional_offsets = setup.additional_work_offsets;
+    memory_.tools = setup.tools;
     update_flags();
     for (const SoftLimit& limit : setup_.soft_limits) any_soft_limit_ |= limit.min.has_value() || limit.max.has_value();
     for (char letter = 'A'; letter <= 'Z'; ++letter) {
@@ -69,10 +61,10 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
 }
 
 void Executor::update_flags() {
-    const bool was_inch = flags_.inch;
+    const bool was_inch = state_.flags.inch;
     ModalFlags f;
     f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
-    for (const dialects::CodeInfo* code : modal_) {
+    for (const dialects::CodeInfo* code : state_.modal) {
         if (!code) continue;
         const std::uint32_t c = code_class_of(*code);
         const bool motion_group = code->has(dialects::traits::motion_group);
@@ -92,19 +84,19 @@ void Executor::update_flags() {
             default: break;
         }
     }
-    flags_ = f;
-    if (was_inch != flags_.inch) {
+    state_.flags = f;
+    if (was_inch != state_.flags.inch) {
         // G20/G21 switch: the same place in the other unit (positions are kept as programmed).
-        const double factor = flags_.inch ? 1.0 / 25.4 : 25.4;
+        const double factor = state_.flags.inch ? 1.0 / 25.4 : 25.4;
         for (std::size_t a = 0; a < 3; ++a) {
-            position_[a] *= factor;
-            if (intermediate_[a]) *intermediate_[a] *= factor;
+            state_.position[a] *= factor;
+            if (state_.intermediate[a]) *state_.intermediate[a] *= factor;
         }
     }
 }
 
 bool Executor::modal_active(dialects::FunctionId function) const {
-    for (const dialects::CodeInfo* code : modal_)
+    for (const dialects::CodeInfo* code : state_.modal)
         if (code && code->function == function) return true;
     return false;
 }
@@ -145,7 +137,7 @@ Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& v
     Event e;
     e.kind = kind;
     e.source = source(f, view);
-    e.start = e.end = position_;
+    e.start = e.end = state_.position;
     return e;
 }
 
@@ -156,22 +148,22 @@ void Executor::emit(Event&& e, const Position& machine_end) {
         // The move over the limit is not made: the alarm stands where the tool is.
         if (auto limit = guard_.move()) return limit_alarm(e.source, e.start, std::move(*limit));
     }
-    e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
-    e.inch = flags_.inch;
+    e.tool = e.kind == EventKind::tool_change ? e.tool : state_.tool;
+    e.inch = state_.flags.inch;
     e.machine_end = machine_end;
-    if (motion) machine_at_ = e.machine_end;
+    if (motion) state_.machine_at = e.machine_end;
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;
     if (e.time_s > 0) {
-        if (timed_tool_ != tool_ || !tool_time_) {
-            tool_time_ = &result_.time_per_tool_s[tool_];
-            timed_tool_ = tool_;
+        if (timed_tool_ != state_.tool || !tool_time_) {
+            tool_time_ = &result_.time_per_tool_s[state_.tool];
+            timed_tool_ = state_.tool;
         }
         *tool_time_ += e.time_s;
     }
     sink_.on_event(e);
     if (stopped_ || e.kind == EventKind::alarm) return;
-    if (auto limit = guard_.tick()) limit_alarm(e.source, position_, std::move(*limit));
+    if (auto limit = guard_.tick()) limit_alarm(e.source, state_.position, std::move(*limit));
 }
 
 Position Executor::machine_position_of(const Position& work) const {
@@ -193,7 +185,7 @@ void Executor::limit_alarm(const SourceRef& where, const Position& at, LimitAlar
 }
 
 bool Executor::count_idle_move(const Frame& f, const ast::BlockView& view) {
-    if (auto limit = guard_.move()) limit_alarm(source(f, view), position_, std::move(*limit));
+    if (auto limit = guard_.move()) limit_alarm(source(f, view), state_.position, std::move(*limit));
     return !stopped_;
 }
 
@@ -215,7 +207,7 @@ void Executor::change_offsets(const std::function<void()>& change) {
     const Position before = machine_offset();
     change();
     const Position after = machine_offset();
-    for (std::size_t a = 0; a < kAxisCount; ++a) position_[a] += (before[a] - after[a]) / axis_scale(a);
+    for (std::size_t a = 0; a < kAxisCount; ++a) state_.position[a] += (before[a] - after[a]) / axis_scale(a);
 }
 
 // --- the loop ------------------------------------------------------------------------------------
@@ -229,8 +221,8 @@ RunResult Executor::run(ProgramRef main) {
     // The machine has been homed: the program starts at reference point 1 (semantics.md §2.8).
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        position_[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
-    machine_at_ = machine_position_of(position_);
+        state_.position[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
+    state_.machine_at = machine_position_of(state_.position);
     while (!frames_.empty() && !stopped_) {
         Frame& f = frames_.back();
         if (!file_of(f).in_program(f.program.program, f.block)) {
@@ -260,8 +252,8 @@ RunResult Executor::run(ProgramRef main) {
             break;
         }
     }
-    result_.final_position = position_;
-    result_.inch = flags_.inch;
+    result_.final_position = state_.position;
+    result_.inch = state_.flags.inch;
     return result_;
 }
 
@@ -301,7 +293,7 @@ void Executor::execute_block(Frame& frame) {
         // G66 P L args: remembers the call; its words are arguments, not moves (dialects.md §3.7).
         if (const auto arguments = macro_arguments(frame, view, *call)) {
             if (!call->program) alarm(frame, view, 76, "G66 without a program number P (alarm 076)");
-            else modal_call_ = ModalCall{*call->program, call->repeats, *arguments};
+            else state_.modal_call = ModalCall{*call->program, call->repeats, *arguments};
         }
         return;
     }
@@ -313,8 +305,8 @@ void Executor::execute_block(Frame& frame) {
     if (options_.emit_state && !stopped_) emit_state(where);
     if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(true));
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
-    if (moved && modal_call_ && !stopped_ && frames_.size() == depth && !frame.modal_macro)
-        push_macro_frame(frame, view, modal_call_->program, modal_call_->repeats, modal_call_->arguments, true);
+    if (moved && state_.modal_call && !stopped_ && frames_.size() == depth && !frame.modal_macro)
+        push_macro_frame(frame, view, state_.modal_call->program, state_.modal_call->repeats, state_.modal_call->arguments, true);
 }
 
 // Steps 2-9 of semantics.md §1.2 for the evaluated words; true when the tool moved.
@@ -329,8 +321,8 @@ bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const
     // speed: nothing an M code of step 3 does depends on the other modes.
     apply_m_codes(frame, view, words, MPhase::before_motion);
     if (stopped_) return false;
-    if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
-    if (pending_length_event_ || length_applied_mm_ != length_mm_) take_up_length_offset(view, words);
+    if ((scan_.classes & kLengthCompCode) || state_.length_sign != 0) apply_length_offset(view, words);   // [length offsets]
+    if (state_.pending_length_event || state_.length_applied_mm != state_.length_mm) take_up_length_offset(view, words);
     if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
     // A block that sets a frame (G10, G50/G92 X Z, G52, G68, G51, G51.1) does not move; its M
@@ -393,16 +385,16 @@ void Executor::emit_state(const SourceRef& where) {
     Event e;
     e.kind = EventKind::state;
     e.source = where;
-    e.start = e.end = position_;
+    e.start = e.end = state_.position;
     // Structured (issue 13): the modal codes in `text`, one per group; F, S and T in fields of their own.
     std::string text;
-    for (const dialects::CodeInfo* code : modal_)
+    for (const dialects::CodeInfo* code : state_.modal)
         if (code) text += (text.empty() ? "" : " ") + code->spelling;
     e.text = std::move(text);
-    e.feed = feed_;
-    e.spindle_rpm = flags_.css ? css_ : spindle_rpm_;   // the S in force: rpm, or the surface speed under G96
-    e.tool = tool_;
-    e.code = tool_offset_;
+    e.feed = state_.feed;
+    e.spindle_rpm = state_.flags.css ? state_.css : state_.spindle_rpm;   // the S in force: rpm, or the surface speed under G96
+    e.tool = state_.tool;
+    e.code = state_.tool_offset;
     emit(std::move(e));
 }
 

@@ -16,6 +16,7 @@
 #include "interpreter/direct_drawing.hpp"
 #include "interpreter/interpreter.hpp"
 #include "interpreter/macro/evaluate.hpp"
+#include "interpreter/machine_state.hpp"
 #include "interpreter/macro/variables.hpp"
 #include "interpreter/run_guard.hpp"
 #include "interpreter/transforms.hpp"
@@ -104,26 +105,6 @@ struct BlockScan {
     SourceRef source;
 };
 
-// The modal state that motion reads on every block, derived from the active codes when a modal
-// code changes (so a move does not search the code table).
-struct ModalFlags {
-    dialects::FunctionId motion;      // function id of group 01
-    bool incremental = false;         // G91 (B/C, mills)
-    bool per_revolution = false;      // G95/G99
-    bool css = false;                 // G96
-    bool inch = false;                // G20 (C: G70)
-    motion::Plane plane = motion::Plane::xy;
-    const dialects::CodeInfo* modal_cycle = nullptr;   // a modal canned cycle (G81.., lathe G83..)
-    const dialects::CodeInfo* motion_cycle = nullptr;  // group 01 is a cycle (G90/G92/G94): X/Z blocks repeat it
-};
-
-// G66 modal macro call: called after each move block until G67 (dialects.md §3.7).
-struct ModalCall {
-    std::int64_t program = 0;
-    std::int64_t repeats = 1;
-    std::vector<std::pair<int, macro::Value>> arguments;
-};
-
 class Executor;
 
 // Work coordinates (program units, lathe X diameter) → geometric mm (X radius).
@@ -184,53 +165,20 @@ private:
     std::uint32_t axis_letters_ = 0;
     bool any_soft_limit_ = false;   // the machine has a stored stroke limit on some axis
     std::uint32_t dialect_axes_ = 0;   // letters that are axes of the dialect (LexicalRules::is_axis)
-    const dialects::CodeInfo** motion_slot_ = nullptr;   // modal_[group 01's index], once known
     mutable std::uint32_t line_hint_ = 0;        // source(): the last line found, per file
     mutable std::uint32_t line_hint_file_ = ~0u;
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
     ExecutorSystemVariables system_variables_{*this};
     macro::Variables variables_{system_variables_};
 
-    // Modal state.
-    // Group → active code: one slot per group of the dialect (CodeInfo::group_index, in the order of
-    // the group names; sized once, so slot pointers stay valid), null while none is active.
-    std::vector<const dialects::CodeInfo*> modal_;
-    ModalFlags flags_;
-    Position position_{};            // work coordinates as programmed (lathe X diameter)
-    int work_system_ = 0;            // 0..5 = G54..G59
-    int additional_system_ = 0;      // n of G54.1 Pn while one is selected (then work_system_ is unused)
-    std::array<Position, 6> work_offsets_{};   // G54..G59 (writable by #5221.., G10 L2)
-    // [dialect variables] the dialect's [[variables]] ranges (executor_dialect_variables.cpp).
-    std::map<std::int64_t, macro::Value> dialect_variables_;
-    bool thread_chamfer_ = true;     // [Haas] M23 / M24: chamfer out of a thread cycle
-    std::map<int, Position> additional_offsets_;   // G54.1 Pn, Haas G154 Pn (writable by #7001.., #14001.., G10 L20)
+    // The live machine state (machine_state.hpp: look-ahead reads blocks with a copy of it) and the
+    // machine's memory (offset registers, G54.1 offsets, dialect variables: never copied).
+    MachineState state_{dialect_, setup_};
+    MachineMemory memory_;
     const Position& active_work_offset() const;    // G54–G59 or G54.1 Pn
     // G54.1 Pn / G154 Pn / G10 L20 Pn: n from 1 to the machine's count, else alarm PS0030 (and nullopt).
     std::optional<int> additional_number(const ast::BlockView& view, std::optional<double> p);
-    Position external_offset_{};
-    Position work_shift_{};          // G10 P0 (lathe), subtracted (semantics.md §2.6)
-    Position local_shift_{};         // G52
-    Position setting_shift_{};       // G50/G92 correction
-    std::map<int, ToolOffset> tools_;   // offset registers (writable by #2001.., #10001..)
-    std::array<std::optional<double>, kAxisCount> intermediate_{};   // G28/G30 point, work coordinates
-    std::optional<Rotation> rotation_;
-    std::optional<ModalCall> modal_call_;
-    bool soft_limits_on_ = true;     // G22 / G23
-    double feed_ = 0;
-    double thread_lead_ = 0;         // lead of the thread being cut (F or E)
-    double thread_lead_change_ = 0;  // G34 K: lead change per revolution (0 for G32)
-    double spindle_rpm_ = 0;         // programmed S under G97
-    double css_ = 0;                 // G96 S, m/min
-    double max_rpm_ = 0;             // G50/G92 S clamp
-    bool spindle_on_ = false;
-    int tool_ = 0;
-    int tool_offset_ = 0;
-    int pending_tool_ = 0;           // mills: T selects, M06 changes
     bool stopped_ = false;
-    std::array<std::optional<double>, 26> last_words_{};   // B D E F H M N S T of the last blocks (#4102..#4120)
-    double clock_ms_offset_ = 0;          // #3001 preset
-    double clock_h_offset_ = 0;           // #3002 preset
-    std::map<int, double> stored_system_;   // #3003 #3004 #3901 #3902 ...: written, read back
 
     // Block execution.
     void execute_block(Frame& frame);
@@ -314,12 +262,9 @@ private:
     Position from_program(const Position& program) const;   // apply G68, G51, G51.1
     Position machine_offset() const;
     Position machine_position_of(const Position& work) const;   // work + the offsets in force, mm
-    // Where the axes stand (the machine end of the last motion event): an offset change moves the
-    // work coordinates now and the axes with the next move (G43 H, a lathe T offset).
-    Position machine_at_{};
     Position tool_offset() const;
-    double unit_scale() const { return flags_.inch ? 25.4 : 1.0; }
-    double axis_scale(std::size_t a) const { return a < 3 ? unit_scale() : 1.0; }   // rotary: degrees
+    double unit_scale() const { return state_.unit_scale(); }
+    double axis_scale(std::size_t a) const { return state_.axis_scale(a); }
     double current_rpm(double x_diameter) const;
     // An event of this block at the current position (start = end), before its details are set.
     Event event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const;
@@ -347,7 +292,7 @@ private:
     // rpm along the path (a line, or `arc` when not null), exact-stop acceleration.
     void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const;
     void arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view);
-    motion::Plane plane() const { return flags_.plane; }
+    motion::Plane plane() const { return state_.plane(); }
     // The block a jump to N`n` lands on in the frame's program: the first from the top, or with the
     // dialect's label_search = forward the first after the frame's current block, wrapping to the top.
     std::optional<std::uint32_t> find_label(const Frame& f, double n) const;
@@ -368,10 +313,6 @@ private:
 
     // --- canned cycles (executor_cycles.cpp; the expansions are in interpreter/cycles/) ----------
     friend class CycleContext;
-    cycles::Parameters cycle_parameters_{setup_.cycles.initial};   // persistent (cycles.md §0)
-    cycles::SingleCycleModal single_cycle_;                         // G90/G92/G94 repeat values
-    cycles::DrillModal drill_modal_;                                // drilling cycle levels for repeat blocks
-    cycles::RigidTapModal rigid_tap_;                               // [spinner] SPINNER G384 until G380 (cycles/spinner.cpp)
     // A group-01 code cancels a modal drilling cycle ([FANUC]; cycles.md §10 "until G80 or a
     // group-01 code"); any cancel ends the cycle mode (the next cycle takes a new initial level).
     void cancel_cycle_by_motion_code();
@@ -390,10 +331,6 @@ private:
     bool cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view);
     motion::ArcOptions computed_arc_options() const;   // arcs kerf computed: radius check ≥ 0.1 µm
     // --- direct drawing (executor_drawing.cpp; the resolver is direct_drawing.hpp) ---------------
-    // The programmed point when the tool stands elsewhere (past a corner of direct drawing): the
-    // next block's coordinates are measured from it (semantics.md §10.1).
-    std::optional<Position> programmed_;
-    bool programmed_by_offset_ = false;   // programmed_ was set by a G45–G48 block (executor_offsets.cpp)
     motion::P2 plane_point(const Position& p) const;
     Position plane_position(motion::P2 p, const Position& like) const;
     // The resolver's view of a block whose words are `words`, programmed from `start` to `to`.
@@ -409,7 +346,7 @@ private:
         std::optional<Position> programmed;
         ModalFlags flags;
         LookAheadScope(Executor& e, const Frame& f, const ast::BlockView& next, std::uint32_t index)
-            : ex(e), scan(e.scan_), view(e.view_), position(e.position_), programmed(e.programmed_), flags(e.flags_) {
+            : ex(e), scan(e.scan_), view(e.view_), position(e.state_.position), programmed(e.state_.programmed), flags(e.state_.flags) {
             ex.view_ = nullptr;
             ex.scan_block(f, next);
             ex.scan_.block = index;
@@ -418,9 +355,9 @@ private:
         ~LookAheadScope() {
             ex.scan_ = scan;
             ex.view_ = view;
-            ex.position_ = position;
-            ex.programmed_ = programmed;
-            ex.flags_ = flags;
+            ex.state_.position = position;
+            ex.state_.programmed = programmed;
+            ex.state_.flags = flags;
         }
         LookAheadScope(const LookAheadScope&) = delete;
         LookAheadScope& operator=(const LookAheadScope&) = delete;
@@ -434,7 +371,7 @@ private:
                                                    const Position& tool, const Position& to, std::optional<std::uint32_t> last);
     // A G01 block with direct-drawing words, run: its line, chamfer or fillet (executor_drawing.cpp).
     bool draw_block(const ast::BlockView& view, const BlockWords& words, const Position& start, const Position& to);
-    Position programmed_target(const BlockWords& words, bool& moves);   // target_position from programmed_
+    Position programmed_target(const BlockWords& words, bool& moves);   // target_position from state_.programmed
     // --- G45–G48 position offsets (executor_offsets.cpp, semantics.md §9.3) ----------------------
     std::optional<int> position_offset_factor() const;   // ±1 / ±2 when the block has G45–G48
     double d_register() const;                             // the modal D's value, program units
@@ -444,13 +381,10 @@ private:
                              const Position& start, const Position& to);
     bool drawing_words(const ast::BlockView& view) const { return scan_.comma_words || scan_.direct_drawing; }
     // --- cutter / nose radius compensation G40–G42 (executor_compensation.cpp, semantics.md §5,
-    // §6). While the tool stands at an offset point, position_ is the tool (centre, or the
-    // imaginary tip on a lathe), programmed_ the programmed point and comp_path_ the point of the
+    // §6). While the tool stands at an offset point, state_.position is the tool (centre, or the
+    // imaginary tip on a lathe), state_.programmed the programmed point and state_.comp_path the point of the
     // programmed path (they differ past a direct-drawing corner).
-    compensation::RadiusCompensation radius_comp_{setup_.radius_comp};
-    int comp_side_ = 0;                     // modal: +1 G41, −1 G42, 0 G40
-    std::optional<Position> comp_path_;
-    bool compensating() const { return comp_side_ != 0 || radius_comp_.engaged(); }
+    bool compensating() const { return state_.comp_side != 0 || state_.radius_comp.engaged(); }
     // The block's motion under compensation (or its G40–G42 without motion); true when it moved.
     bool compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves);
     int comp_side_of_block(int current) const;
@@ -479,23 +413,11 @@ private:
     // --- G43/G44/G49 tool length offsets (executor_length.cpp, semantics.md §7, §2.7) ----------
     // The H register's length (geometry + wear) on Z, +G43 / −G44; machine_offset() adds it. The
     // work coordinates stay: the machine position shifts (like a lathe T word).
-    int length_sign_ = 0;      // +1 G43, −1 G44, 0 G49 (power-on)
-    int length_h_ = 0;         // the H number in force
-    double length_mm_ = 0;     // the signed offset on Z, mm, as commanded
-    // The offset the axes have taken up: the commanded one from the next block that moves Z (or at
-    // once, machine switch length_offset_motion). Machine positions use this one.
-    double length_applied_mm_ = 0;
-    std::optional<Event> pending_length_event_;   // its coordinate_change, emitted when taken up
     void take_up_length_offset(const ast::BlockView& view, const BlockWords& words);   // if the block moves Z
     void take_up_length_offset(const ast::BlockView& view);
     void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
     bool axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const;   // seed-004 G43/G44
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
-    struct Slowdown {
-        double k_mm = 0;       // the distance before each G01 end point
-        double fraction = 0;   // F percent / 100: the reduction
-    };
-    std::optional<Slowdown> slowdown_;
     bool in_slowdown_ = false;              // the pieces of a split move are not split again
     double slowdown_time_factor_ = 1.0;     // time_feed_move: a ramp's time over the step's
     void apply_corner_slowdown(const ast::BlockView& view, const BlockWords& words);
@@ -517,10 +439,7 @@ private:
     void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);
     // --- [transforms] G15/G16 polar coordinate command, G50/G51 scaling, G50.1/G51.1 mirror image
     // (executor_transforms.cpp; the geometry with G68 in transforms.hpp) -----------------------
-    bool polar_command_ = false;          // G16 (power-on G15)
-    std::optional<Scaling> scaling_;      // G51 (power-on G50)
-    Mirror mirror_{};                     // G51.1 per axis (power-on G50.1)
-    ProgramFrame program_frame() const { return {mirror_, scaling_, rotation_}; }
+    ProgramFrame program_frame() const { return state_.program_frame(); }
     bool apply_program_transforms(const ast::BlockView& view, const BlockWords& words);   // false: no motion
     void start_scaling(const ast::BlockView& view, const BlockWords& words);
     double magnification(const Word& w) const;   // a P/I/J/K word: with a point the factor, else units
@@ -529,20 +448,10 @@ private:
     // The plane's two axis words of a G16 block as radius and angle into `to` ([FANUC] rules there).
     void polar_target(const BlockWords& words, const Position& start, Position& to) const;
     // --- [polar] G112/G113 polar and G107 cylindrical interpolation (polar.cpp, cycles.md §18–§19) --
-    struct PlaneTransform {
-        motion::PlaneMap map;
-        std::size_t linear = 0;   // the real axis of the plane's first coordinate (X; cylinder: Z for C)
-        std::size_t rotary = 5;   // the rotary axis (C), degrees in position_
-        double origin_deg = 0;    // polar: the rotary position at G112 = the plane's angle 0
-        Position programmed{};    // the programmed point: rotary axis as mm of the virtual axis / arc
-        std::string code;         // the code that started the mode (texts)
-        std::optional<motion::P2> tool;   // under G41/G42: the tool centre in the plane (else the programmed point)
-    };
     struct PathSpan {             // the axes outside the plane: from → to over the part [u0, u1] of a block
         Position from, to;
         double u0 = 0, u1 = 1;
     };
-    std::optional<PlaneTransform> transform_;   // active mode, else nullopt
     // The block under a mode (or starting/ending one): true/false = moved or not, handled here;
     // nullopt = the block runs as usual (no mode, or G113 / G07.1 C0 just ended it).
     std::optional<bool> apply_plane_transform(const ast::BlockView& view, const BlockWords& words);

@@ -38,7 +38,7 @@ motion::ArcResult Executor::arc_geometry(bool cw, const Position& from, const Po
 
 void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view) {
     const Frame& f = *frame_;
-    const motion::ArcResult arc = arc_geometry(cw, position_, to, words);
+    const motion::ArcResult arc = arc_geometry(cw, state_.position, to, words);
     if (!arc) {
         const motion::ArcError& e = arc.error();
         if (e.code == motion::ArcErrorCode::r_zero_chord) {
@@ -66,7 +66,7 @@ void Executor::emit_arc(const motion::Arc& arc, const Position& to, const ast::B
     Event e;
     e.kind = arc.cw ? EventKind::arc_cw : EventKind::arc_ccw;
     e.source = source(f, view);
-    e.start = position_;
+    e.start = state_.position;
     e.end = to;
     e.center = from_geometric(arc.center, to, setup_.diameter_x, scale);
     e.radius = arc.radius;
@@ -80,7 +80,7 @@ void Executor::emit_arc(const motion::Arc& arc, const Position& to, const ast::B
     }
     time_feed_move(e, motion::feed_length(arc), accel, &arc);
     result_.feed_distance_mm += e.length_mm;
-    position_ = to;
+    state_.position = to;
     emit(std::move(e));
 }
 

@@ -20,7 +20,7 @@ using compensation::Programmed;
 
 // G02/G03 with only I/J/K: a full circle (semantics.md §3); data words (G28 K) are not centres.
 bool Executor::full_circle(const BlockWords& words) const {
-    if (flags_.motion != fn::circular_cw && flags_.motion != fn::circular_ccw) return false;
+    if (state_.flags.motion != fn::circular_cw && state_.flags.motion != fn::circular_ccw) return false;
     for (const char letter : {'I', 'J', 'K'})
         if (const auto* w = words.get(letter); w && !w->data) return true;
     return false;
@@ -40,23 +40,23 @@ int Executor::comp_side_of_block(int current) const {
 
 double Executor::comp_radius(const BlockWords& words) const {
     if (dialect_.machine == dialects::MachineKind::lathe) {
-        const auto it = tools_.find(tool_offset_);
-        return it == tools_.end() ? 0 : it->second.nose_radius + it->second.nose_radius_wear;
+        const auto it = memory_.tools.find(state_.tool_offset);
+        return it == memory_.tools.end() ? 0 : it->second.nose_radius + it->second.nose_radius_wear;
     }
     // The block's D, else the modal one (remember_words keeps it); seed-004 D registers are
     // signed (semantics.md §9.1): a negative radius puts the tool on the other side.
     const auto* d = words.get('D');
-    const auto& modal = last_words_[static_cast<std::size_t>('D' - 'A')];
+    const auto& modal = state_.last_words[static_cast<std::size_t>('D' - 'A')];
     const std::optional<double> number = d ? std::optional<double>(d->value) : modal;
     if (!number) return 0;
-    const auto it = tools_.find(static_cast<int>(std::lround(*number)));
-    return it == tools_.end() ? 0 : it->second.radius + it->second.radius_wear;
+    const auto it = memory_.tools.find(static_cast<int>(std::lround(*number)));
+    return it == memory_.tools.end() ? 0 : it->second.radius + it->second.radius_wear;
 }
 
 motion::P2 Executor::tip_offset() const {
     if (dialect_.machine != dialects::MachineKind::lathe) return {};
-    const auto it = tools_.find(tool_offset_);
-    if (it == tools_.end()) return {};
+    const auto it = memory_.tools.find(state_.tool_offset);
+    if (it == memory_.tools.end()) return {};
     return compensation::tip_vector(it->second.tip, it->second.nose_radius + it->second.nose_radius_wear);
 }
 
@@ -72,12 +72,12 @@ Programmed with_comp(const motion::Element& path, int side, double radius) {
 std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast::BlockView& view, const BlockWords& words,
                                                                        const Position& start, const Position& to,
                                                                        bool quiet, Position& programmed_end) {
-    const int side = comp_side_of_block(comp_side_);
+    const int side = comp_side_of_block(state_.comp_side);
     const double radius = comp_radius(words);
     std::vector<CompPiece> pieces;
     programmed_end = to;
-    const dialects::FunctionId motion = flags_.motion;
-    if (transform_) {   // [polar] the Cartesian plane of G112/G107 (polar_compensation.cpp)
+    const dialects::FunctionId motion = state_.flags.motion;
+    if (state_.transform) {   // [polar] the Cartesian plane of G112/G107 (polar_compensation.cpp)
         const auto element = transform_element(words, start, to, quiet);
         if (!element) return std::nullopt;
         pieces.push_back({with_comp(*element, side, radius), to});
@@ -91,10 +91,10 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
         return pieces;
     }
     if (motion == fn::linear && drawing_words(view)) {
-        const Position tool = position_;
-        position_ = start;   // the resolver measures from the programmed path
-        const auto r = resolve_drawing(view, words, programmed_.value_or(start), start, to, std::nullopt);
-        position_ = tool;
+        const Position tool = state_.position;
+        state_.position = start;   // the resolver measures from the programmed path
+        const auto r = resolve_drawing(view, words, state_.programmed.value_or(start), start, to, std::nullopt);
+        state_.position = tool;
         if (!r) return std::nullopt;
         motion::P2 from = plane_point(start);
         for (const drawing::Move& m : r->moves) {
@@ -147,21 +147,21 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
         BlockWords words;
         if (!stop && evaluate_words(next, words)) {
             for (const ast::CodeRef& c : scan_.g)
-                if (c.info && c.info->has(dialects::traits::motion_group)) flags_.motion = c.info->function;
-            position_ = from;
-            programmed_ = from;
+                if (c.info && c.info->has(dialects::traits::motion_group)) state_.flags.motion = c.info->function;
+            state_.position = from;
+            state_.programmed = from;
             bool moves = false;
             const Position to = target_position(words, moves);
             if ((scan_.classes & kArcApproachCode) && moves) {   // seed-004 G12/G13 (executor_iso_specials.cpp)
                 bool ccw = true;
                 words = arc_approach_words(words, from, to, ccw);
-                flags_.motion = ccw ? fn::circular_ccw : fn::circular_cw;
+                state_.flags.motion = ccw ? fn::circular_ccw : fn::circular_cw;
             }
             if (moves || full_circle(words)) {
-                const int side_before = comp_side_;
+                const int side_before = state_.comp_side;
                 Position end;
                 const auto pieces = comp_pieces(next, words, from, to, true, end);
-                comp_side_ = side_before;
+                state_.comp_side = side_before;
                 if (pieces && !pieces->empty()) out = pieces->front().programmed;
                 stop = true;
             }
@@ -178,9 +178,9 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
 // compensation.
 std::optional<compensation::Step> Executor::comp_step(const Programmed& current, const std::optional<Programmed>& next,
                                                       const ast::BlockView& view) {
-    compensation::Step step = radius_comp_.step(current, next);
+    compensation::Step step = state_.radius_comp.step(current, next);
     if (!step.alarm) return step;
-    radius_comp_.reset();
+    state_.radius_comp.reset();
     alarm(*frame_, view, step.alarm->number, step.alarm->text);
     return std::nullopt;
 }
@@ -213,8 +213,8 @@ bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool c
     // Compensation acts in the plane (semantics.md §6); the axes off the plane (a helix's Z) go from
     // the tool's start to the block's end along the whole path, shared by length: a connecting move
     // of a few microns takes a few microns of the helix, not all of it (differential A4).
-    const Position from = position_;
-    const std::vector<double> lengths = move_lengths(step, plane_point(position_));
+    const Position from = state_.position;
+    const std::vector<double> lengths = move_lengths(step, plane_point(state_.position));
     double total = 0, done = 0;
     for (const double l : lengths) total += l;
     for (std::size_t i = 0; i < step.moves.size(); ++i) {
@@ -235,53 +235,53 @@ bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool c
 
 bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves_words) {
     bool moves = moves_words;
-    const Position start = comp_path_.value_or(position_);
+    const Position start = state_.comp_path.value_or(state_.position);
     const bool circle = full_circle(words);
-    const int side = comp_side_of_block(comp_side_);
+    const int side = comp_side_of_block(state_.comp_side);
     // An angle-only block of direct drawing moves without axis words (semantics.md §10.1).
-    moves = moves || (drawing_words(view) && flags_.motion == fn::linear);
-    const bool immediate = !moves && !circle && side != 0 && !radius_comp_.engaged() && setup_.comp_shift_without_motion;
+    moves = moves || (drawing_words(view) && state_.flags.motion == fn::linear);
+    const bool immediate = !moves && !circle && side != 0 && !state_.radius_comp.engaged() && setup_.comp_shift_without_motion;
     if (!moves && !circle && !immediate) {
-        comp_side_ = side;   // G41/G42/G40 without motion: in force from the next move
+        state_.comp_side = side;   // G41/G42/G40 without motion: in force from the next move
         return false;
     }
     // A move off the plane (a Z plunge in G17, a C turn): the offset stays, the compensation
     // starts or goes on with the next move in the plane ([FANUC]; semantics.md §5 "blocks
     // without motion in the plane").
-    const bool arc = flags_.motion == fn::circular_cw || flags_.motion == fn::circular_ccw;
+    const bool arc = state_.flags.motion == fn::circular_cw || state_.flags.motion == fn::circular_ccw;
     const bool in_plane = arc || drawing_words(view) || motion::norm(plane_point(to) - plane_point(start)) > 1e-9;
     if (!in_plane && !immediate) {
-        comp_side_ = side;
-        const Position end = plane_position(plane_point(position_), to);
-        move(flags_.motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
-        if (radius_comp_.engaged()) {
-            comp_path_ = plane_position(plane_point(start), to);
-            programmed_ = to;
+        state_.comp_side = side;
+        const Position end = plane_position(plane_point(state_.position), to);
+        move(state_.flags.motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+        if (state_.radius_comp.engaged()) {
+            state_.comp_path = plane_position(plane_point(start), to);
+            state_.programmed = to;
         }
         return true;
     }
     Position programmed_end = to;
     const auto pieces = comp_pieces(view, words, start, to, false, programmed_end);
-    comp_side_ = side;
+    state_.comp_side = side;
     if (!pieces || pieces->empty()) return false;
-    const bool rapid = flags_.motion == fn::rapid;
+    const bool rapid = state_.flags.motion == fn::rapid;
     for (std::size_t i = 0; i < pieces->size(); ++i) {
         const Programmed& cur = (*pieces)[i].programmed;
         const std::optional<Programmed> next = i + 1 < pieces->size() ? std::optional<Programmed>((*pieces)[i + 1].programmed)
                                                                          : comp_look_ahead(scan_.block, programmed_end);
         if (stopped_) return false;   // the block read ahead raised an alarm
-        const bool cancels = radius_comp_.engaged() && cur.side == 0;
+        const bool cancels = state_.radius_comp.engaged() && cur.side == 0;
         const auto step = comp_step(cur, next, view);
         if (!step) return false;
         if (!run_comp_moves(*step, rapid, cancels, (*pieces)[i].end, view)) return true;
     }
-    if (radius_comp_.engaged()) {
-        comp_path_ = pieces->empty() ? start : pieces->back().end;
-        programmed_ = programmed_end;
+    if (state_.radius_comp.engaged()) {
+        state_.comp_path = pieces->empty() ? start : pieces->back().end;
+        state_.programmed = programmed_end;
     } else {
-        comp_path_.reset();
-        programmed_.reset();
-        position_ = programmed_end;   // exactly on the programmed point after the cancel
+        state_.comp_path.reset();
+        state_.programmed.reset();
+        state_.position = programmed_end;   // exactly on the programmed point after the cancel
     }
     return true;
 }
@@ -293,12 +293,12 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
 bool Executor::compensate_path(const std::vector<cycles::ProfileMove>& path, const ast::BlockView& view) {
     const double radius = comp_radius(block_words_);
     std::vector<Programmed> elements;
-    Position from = comp_path_.value_or(position_);
+    Position from = state_.comp_path.value_or(state_.position);
     for (const cycles::ProfileMove& m : path) {
         const bool arc = m.kind == EventKind::arc_cw || m.kind == EventKind::arc_ccw;
         const motion::Element e{plane_point(from), plane_point(m.end), arc, arc ? plane_point(m.center) : motion::P2{},
                                 m.kind == EventKind::arc_ccw};
-        elements.push_back(with_comp(e, comp_side_, radius));
+        elements.push_back(with_comp(e, state_.comp_side, radius));
         from = m.end;
     }
     for (std::size_t i = 0; i < elements.size(); ++i) {
@@ -308,11 +308,11 @@ bool Executor::compensate_path(const std::vector<cycles::ProfileMove>& path, con
             if (elements[k].moves()) next = elements[k];
         const auto step = comp_step(elements[i], next, view);
         if (!step) return false;
-        if (path[i].feed) feed_ = *path[i].feed;
+        if (path[i].feed) state_.feed = *path[i].feed;
         if (!run_comp_moves(*step, path[i].kind == EventKind::rapid, false, path[i].end, view)) return false;
     }
-    comp_path_ = path.back().end;
-    programmed_ = path.back().end;
+    state_.comp_path = path.back().end;
+    state_.programmed = path.back().end;
     return true;
 }
 

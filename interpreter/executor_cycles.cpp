@@ -27,7 +27,7 @@ public:
         : ex_(ex), code_(code), view_(view), words_(words), has_end_(has_end), end_(end) {}
 
     dialects::FunctionId function() const override { return code_.function; }
-    bool thread_chamfer() const override { return ex_.thread_chamfer_; }
+    bool thread_chamfer() const override { return ex_.state_.thread_chamfer; }
     std::string spelling() const override { return code_.spelling; }
     bool has(char letter) const override { return words_.get(letter) != nullptr; }
     bool takes(char letter) const override { return code_.takes_word(std::string_view(&letter, 1)); }
@@ -63,7 +63,7 @@ public:
         // A fixed unit (micron, tenth micron) has its inch counterpart a tenth of it, as the
         // increments do (0.001 mm ↔ 0.0001 in): `G76 ... P645 Q180` in G20 is 0.0645 / 0.0180 in.
         const double metric = ex_.setup_.cycles.pq_unit_mm > 0 ? ex_.setup_.cycles.pq_unit_mm : ex_.setup_.increment_mm;
-        return w->value * (ex_.flags_.inch ? metric / 10.0 : metric);
+        return w->value * (ex_.state_.flags.inch ? metric / 10.0 : metric);
     }
     bool repeat() const override {
         for (const std::vector<ast::CodeRef>* codes : {&ex_.scan_.g, &ex_.scan_.m})
@@ -77,32 +77,32 @@ public:
     }
     bool has_end_point() const override { return has_end_; }
     Position end_point() const override { return end_; }
-    bool incremental() const override { return ex_.flags_.incremental; }
+    bool incremental() const override { return ex_.state_.flags.incremental; }
     bool return_to_r_level() const override { return ex_.modal_active(fn::return_r_level); }
-    double modal_feed() const override { return ex_.feed_; }
+    double modal_feed() const override { return ex_.state_.feed; }
 
     // Under G41/G42 the tool stands at an offset point: the cycle starts from the programmed one
     // (the start point A of G70–G73 is the point of the block before, cycles.md §1); after the
     // cycle's first move (leave_offset_for_cycle) the tool runs on programmed points.
-    Position position() const override { return ex_.comp_path_.value_or(ex_.position_); }
+    Position position() const override { return ex_.state_.comp_path.value_or(ex_.state_.position); }
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
     double per_mm() const override { return 1.0 / ex_.unit_scale(); }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     double dwell_seconds(double p) const override { return ex_.dwell_p_seconds(p); }
-    cycles::Parameters& parameters() override { return ex_.cycle_parameters_; }
-    cycles::SingleCycleModal& single_cycle() override { return ex_.single_cycle_; }
-    cycles::DrillModal& drill() override { return ex_.drill_modal_; }
-    cycles::RigidTapModal& rigid_tap() override { return ex_.rigid_tap_; }
+    cycles::Parameters& parameters() override { return ex_.state_.cycle_parameters; }
+    cycles::SingleCycleModal& single_cycle() override { return ex_.state_.single_cycle; }
+    cycles::DrillModal& drill() override { return ex_.state_.drill; }
+    cycles::RigidTapModal& rigid_tap() override { return ex_.state_.rigid_tap; }
     Position machine_offset() const override { return ex_.machine_offset(); }
     std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, code_.spelling, p, q); }
 
     bool rapid(const Position& to) override { return move(EventKind::rapid, to); }
     bool feed(const Position& to, std::optional<double> f) override {
-        if (f) ex_.feed_ = *f;
+        if (f) ex_.state_.feed = *f;
         return move(EventKind::linear, to);
     }
     bool arc(bool cw, const Position& to, const Position& center, std::optional<double> f) override {
-        if (f) ex_.feed_ = *f;
+        if (f) ex_.state_.feed = *f;
         const bool ok = ex_.cycle_arc(cw, to, center, view_);
         ex_.leave_offset_for_cycle();
         return ok;
@@ -119,18 +119,18 @@ public:
         return true;
     }
     bool thread(const Position& to, double lead) override {
-        ex_.thread_lead_ = lead;
-        ex_.thread_lead_change_ = 0;   // cycle threads have a constant lead (a G34 before does not carry over)
+        ex_.state_.thread_lead = lead;
+        ex_.state_.thread_lead_change = 0;   // cycle threads have a constant lead (a G34 before does not carry over)
         return move(EventKind::thread, to);
     }
     bool feed_at(const Position& to, double mm_per_min) override {
-        const double saved_feed = ex_.feed_;
-        const bool saved_per_rev = ex_.flags_.per_revolution;
-        ex_.feed_ = mm_per_min / ex_.unit_scale();
-        ex_.flags_.per_revolution = false;
+        const double saved_feed = ex_.state_.feed;
+        const bool saved_per_rev = ex_.state_.flags.per_revolution;
+        ex_.state_.feed = mm_per_min / ex_.unit_scale();
+        ex_.state_.flags.per_revolution = false;
         const bool ok = move(EventKind::linear, to);
-        ex_.feed_ = saved_feed;
-        ex_.flags_.per_revolution = saved_per_rev;
+        ex_.state_.feed = saved_feed;
+        ex_.state_.flags.per_revolution = saved_per_rev;
         return ok;
     }
     void tool(int code) override { ex_.apply_tool_word(view_, code); }
@@ -161,7 +161,7 @@ private:
         if (ex_.stopped_) return false;
         // Nothing to move; it still counts as a move, so that a cycle whose step vanishes (a peck
         // below the resolution of a double far from zero) cannot loop without end.
-        if (to == ex_.position_ && kind != EventKind::thread) return ex_.count_idle_move(*ex_.frame_, view_);
+        if (to == ex_.state_.position && kind != EventKind::thread) return ex_.count_idle_move(*ex_.frame_, view_);
         ex_.move(kind, to, *ex_.frame_, view_);
         ex_.leave_offset_for_cycle();
         return !ex_.stopped_;
@@ -184,7 +184,7 @@ const dialects::CodeInfo* Executor::cycle_of_block(bool has_axis_words) const {
     }
     if (cycle || !has_axis_words) return cycle;
     // A block with axis words repeats the modal cycle: G81 X Y a new hole, G90 X a new pass.
-    return flags_.motion_cycle ? flags_.motion_cycle : flags_.modal_cycle;
+    return state_.flags.motion_cycle ? state_.flags.motion_cycle : state_.flags.modal_cycle;
 }
 
 bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to) {
@@ -213,16 +213,16 @@ bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, 
 // compensation", semantics.md §5): the cycle's first move leaves the offset point and the cycle
 // runs on programmed points; G41/G42 stays in force, so the next compensated move (G70's path)
 // starts up again from the cycle's end. Before that first move the cycle reads the programmed
-// point (comp_path_) as its start.
+// point (state_.comp_path) as its start.
 void Executor::leave_offset_for_cycle() {
-    if (!radius_comp_.engaged() && !comp_path_) return;
-    radius_comp_.reset();
-    comp_path_.reset();
-    programmed_.reset();
+    if (!state_.radius_comp.engaged() && !state_.comp_path) return;
+    state_.radius_comp.reset();
+    state_.comp_path.reset();
+    state_.programmed.reset();
 }
 
 void Executor::cancel_cycle_by_motion_code() {
-    if (flags_.modal_cycle) {
+    if (state_.flags.modal_cycle) {
         bool motion = false, cycle = false;
         for (const ast::CodeRef& c : scan_.g) {
             if (!c.info) continue;
@@ -230,15 +230,15 @@ void Executor::cancel_cycle_by_motion_code() {
             cycle |= is_cycle(*c.info);
         }
         if (motion && !cycle) {
-            const std::uint8_t group = flags_.modal_cycle->group_index;
+            const std::uint8_t group = state_.flags.modal_cycle->group_index;
             const dialects::CodeInfo* cancel = nullptr;
             for (const dialects::CodeInfo& c : dialect_.codes())
                 if (c.group_index == group && c.function == fn::canned_cycle_cancel) cancel = &c;
-            modal_[group] = cancel;
+            state_.modal[group] = cancel;
             update_flags();
         }
     }
-    if (!flags_.modal_cycle) drill_modal_.active = false;
+    if (!state_.flags.modal_cycle) state_.drill.active = false;
 }
 
 // --- profile blocks -----------------------------------------------------------------------------
@@ -258,14 +258,14 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     // point; the cycle block's scan, position and motion code are restored afterwards (the profile
     // leaves the modal state as it was, cycles.md "Notation").
     const BlockScan saved_scan = scan_;
-    const Position saved_position = position_;
+    const Position saved_position = state_.position;
     const ast::BlockView* saved_view = view_;
     cycles::Profile profile;
     // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
-    if (comp_path_) position_ = *comp_path_;
-    profile.start = position_;
+    if (state_.comp_path) state_.position = *state_.comp_path;
+    profile.start = state_.position;
     profile.q_block = *last;
-    dialects::FunctionId motion = flags_.motion;
+    dialects::FunctionId motion = state_.flags.motion;
     bool ok = true;
     for (std::uint32_t b = *first; ok && b <= *last; ++b) {
         const ast::BlockView block = file_of(f).block(b);
@@ -278,7 +278,7 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
         ok = read_profile_block(block, motion, profile, *last);
     }
     scan_ = saved_scan;
-    position_ = saved_position;
+    state_.position = saved_position;
     view_ = saved_view;
     if (!ok) return std::nullopt;
     cycle_profile_blocks_ = ProfileBlocks{*first, *last};
@@ -307,7 +307,7 @@ bool Executor::read_profile_block(const ast::BlockView& block, dialects::Functio
     m.x_word = words.get('X') || words.incremental.count('X');
     m.z_word = words.get('Z') || words.incremental.count('Z');
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
-        const motion::ArcResult arc = arc_geometry(motion == fn::circular_cw, position_, to, words);
+        const motion::ArcResult arc = arc_geometry(motion == fn::circular_cw, state_.position, to, words);
         if (!arc) {
             alarm(*frame_, block, arc.error().fanuc_alarm,
                   fmt::format("profile arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code),
@@ -319,16 +319,16 @@ bool Executor::read_profile_block(const ast::BlockView& block, dialects::Functio
         m.sweep = arc.arc().sweep;
     }
     profile.moves.push_back(m);
-    position_ = to;
+    state_.position = to;
     return true;
 }
 
 // A direct-drawing block of a profile: the resolver's lines and fillet arcs, from the end of the
-// last profile move (past a corner) and the programmed point position_.
+// last profile move (past a corner) and the programmed point state_.position.
 bool Executor::read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
                                     cycles::Profile& profile, std::uint32_t last) {
     const Position tool = profile.moves.empty() ? profile.start : profile.moves.back().end;
-    const auto r = resolve_drawing(block, words, position_, tool, to, last);
+    const auto r = resolve_drawing(block, words, state_.position, tool, to, last);
     if (!r) return false;
     for (const drawing::Move& piece : r->moves) {
         cycles::ProfileMove m;
@@ -341,7 +341,7 @@ bool Executor::read_profile_drawing(const ast::BlockView& block, const BlockWord
         m.x_word = m.z_word = true;   // a drawn line moves both axes in general
         profile.moves.push_back(m);
     }
-    position_ = plane_position(r->end, to);
+    state_.position = plane_position(r->end, to);
     return true;
 }
 
@@ -356,7 +356,7 @@ motion::ArcOptions Executor::computed_arc_options() const {
 // An arc of a cycle from the current point to `to` about `center` (work coordinates).
 bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view) {
     const double scale = unit_scale();
-    const motion::Vec3 start = geometric_mm(position_, setup_.diameter_x, scale);
+    const motion::Vec3 start = geometric_mm(state_.position, setup_.diameter_x, scale);
     const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
     const motion::Vec3 c = geometric_mm(center, setup_.diameter_x, scale);
     const motion::ArcResult arc = motion::arc_from_center(start, end, plane(), cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw,

@@ -44,8 +44,8 @@ drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWo
     b.linear = linear;
     const motion::PlaneAxes axes = motion::plane_axes(plane());
     const motion::P2 s = plane_point(start), t = plane_point(to);
-    b.first = coordinate_of(words, motion::axis_letter(axes.first), flags_.incremental, s.a, t.a);
-    b.second = coordinate_of(words, motion::axis_letter(axes.second), flags_.incremental, s.b, t.b);
+    b.first = coordinate_of(words, motion::axis_letter(axes.first), state_.flags.incremental, s.a, t.a);
+    b.second = coordinate_of(words, motion::axis_letter(axes.second), state_.flags.incremental, s.b, t.b);
     // Angle and corner words: ,A ,C ,R (comma words) and plain A / R marked direct_drawing.
     const ast::SyntaxTree& tree = view.tree();
     for (const ast::Token& token : view.tokens()) {
@@ -66,7 +66,7 @@ drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWo
         // A corner size is a distance: without a decimal point it counts least input increments
         // like an axis word (dialects.md §2); the angle is in degrees.
         const bool point = token.has(ast::token_flags::has_point) || token.has(ast::token_flags::value_expr);
-        const double size = point || setup_.calculator_decimal ? value : value * setup_.increment(flags_.inch);
+        const double size = point || setup_.calculator_decimal ? value : value * setup_.increment(state_.flags.inch);
         if (token.letter == 'C' || token.letter == 'R') b.corner_size = size * unit_scale();
     }
     b.moves = b.named() || b.angle.has_value();
@@ -88,7 +88,7 @@ std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::opt
             if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
         BlockWords words;
         std::optional<drawing::Block> out;
-        position_ = from;
+        state_.position = from;
         if (evaluate_words(next, words)) {
             bool moves = false;
             const Position to = target_position(words, moves);
@@ -120,15 +120,15 @@ std::optional<drawing::Result> Executor::resolve_drawing(const ast::BlockView& v
 }
 
 Position Executor::programmed_target(const BlockWords& words, bool& moves) {
-    const Position tool = position_;
-    position_ = *programmed_;
+    const Position tool = state_.position;
+    state_.position = *state_.programmed;
     const Position to = target_position(words, moves);
-    position_ = tool;
+    state_.position = tool;
     return to;
 }
 
 bool Executor::draw_block(const ast::BlockView& view, const BlockWords& words, const Position& start, const Position& to) {
-    const auto r = resolve_drawing(view, words, start, position_, to, std::nullopt);
+    const auto r = resolve_drawing(view, words, start, state_.position, to, std::nullopt);
     if (!r) return false;
     for (const drawing::Move& m : r->moves) {
         const Position end = plane_position(m.end, to);
@@ -137,9 +137,9 @@ bool Executor::draw_block(const ast::BlockView& view, const BlockWords& words, c
         if (stopped_) return true;
     }
     const Position programmed = plane_position(r->end, to);
-    const bool off = motion::norm(plane_point(programmed) - plane_point(position_)) > 1e-9;
-    programmed_ = off ? std::optional<Position>(programmed) : std::nullopt;
-    if (!off) position_ = programmed;   // exactly on the programmed point again
+    const bool off = motion::norm(plane_point(programmed) - plane_point(state_.position)) > 1e-9;
+    state_.programmed = off ? std::optional<Position>(programmed) : std::nullopt;
+    if (!off) state_.position = programmed;   // exactly on the programmed point again
     return !r->moves.empty();
 }
 

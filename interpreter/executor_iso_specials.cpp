@@ -19,7 +19,7 @@ void Executor::apply_corner_slowdown(const ast::BlockView& view, const BlockWord
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || !(code_class_of(*c.info) & kCornerSlowdownCode)) continue;
         if (c.info->function == fn::corner_slowdown_cancel) {
-            slowdown_.reset();
+            state_.slowdown.reset();
             continue;
         }
         const auto* k = words.get('K');
@@ -30,10 +30,10 @@ void Executor::apply_corner_slowdown(const ast::BlockView& view, const BlockWord
             e.text = fmt::format("{} needs K > 0 (mm) and F in 1..99 (percent): no corner slow-down (semantics.md §9.5)",
                                  c.info->spelling);
             emit(e);
-            slowdown_.reset();
+            state_.slowdown.reset();
             continue;
         }
-        slowdown_ = Slowdown{k->value * unit_scale(), p->value / 100.0};
+        state_.slowdown = Slowdown{k->value * unit_scale(), p->value / 100.0};
     }
 }
 
@@ -43,28 +43,28 @@ void Executor::apply_corner_slowdown(const ast::BlockView& view, const BlockWord
 // over the last d ≤ K mm is ∫ ds / f(s) with f(s) = F·(1 − p) + F·p·s/K:
 // K/(F·p) · ln(f(d) / (F·(1 − p))).
 bool Executor::slowed_move(const Position& to, const Frame& f, const ast::BlockView& view) {
-    const double length = motion::distance(geometric_mm(position_, setup_.diameter_x, unit_scale()),
+    const double length = motion::distance(geometric_mm(state_.position, setup_.diameter_x, unit_scale()),
                                            geometric_mm(to, setup_.diameter_x, unit_scale()));
-    if (length <= 1e-9 || feed_ <= 0) return false;
-    const double k = slowdown_->k_mm;
+    if (length <= 1e-9 || state_.feed <= 0) return false;
+    const double k = state_.slowdown->k_mm;
     const double d = std::min(k, length);
     in_slowdown_ = true;
     if (d < length) {
-        Position mid = position_;
+        Position mid = state_.position;
         const double t = 1 - d / length;
-        for (std::size_t a = 0; a < kAxisCount; ++a) mid[a] = position_[a] + (to[a] - position_[a]) * t;
+        for (std::size_t a = 0; a < kAxisCount; ++a) mid[a] = state_.position[a] + (to[a] - state_.position[a]) * t;
         move(EventKind::linear, mid, f, view);
     }
     if (!stopped_) {
-        const double full = feed_;
-        const double reduced = full * (1 - slowdown_->fraction);
+        const double full = state_.feed;
+        const double reduced = full * (1 - state_.slowdown->fraction);
         if (!setup_.corner_slowdown_step) {
             const double at_d = reduced + (full - reduced) * d / k;
             slowdown_time_factor_ = (k / (full - reduced) * std::log(at_d / reduced)) / (d / reduced);
         }
-        feed_ = reduced;
+        state_.feed = reduced;
         move(EventKind::linear, to, f, view);
-        feed_ = full;
+        state_.feed = full;
         slowdown_time_factor_ = 1.0;
     }
     in_slowdown_ = false;
@@ -81,7 +81,7 @@ std::optional<bool> Executor::axial_offset_motion(const ast::BlockView& view, co
     for (const ast::CodeRef& c : scan_.g)
         if (c.info && (code_class_of(*c.info) & kApproachOffsetCode)) code = c.info;
     if (!code || axial_offset_is_length(*code, words)) return std::nullopt;
-    const bool straight = flags_.motion == fn::rapid || flags_.motion == fn::linear;
+    const bool straight = state_.flags.motion == fn::rapid || state_.flags.motion == fn::linear;
     if (code->function == fn::axial_offset_plus && moves && straight) return approach_offset_move(view, to);
     Event m = event_at(EventKind::message, *frame_, view);
     m.code = kerf_warning::not_modelled;
@@ -101,7 +101,7 @@ std::optional<bool> Executor::axial_offset_motion(const ast::BlockView& view, co
 // iso_g43]. Under G41/G42 the tool then stands at an offset point of the programmed end (the
 // centre of the next element's start-up), so the compensation goes on from there.
 bool Executor::approach_offset_move(const ast::BlockView& view, const Position& to) {
-    const Position from = comp_path_ ? *comp_path_ : programmed_.value_or(position_);
+    const Position from = state_.comp_path ? *state_.comp_path : state_.programmed.value_or(state_.position);
     const motion::P2 a = plane_point(from), b = plane_point(to);
     const double length = motion::norm(b - a);
     const double d = d_register() * unit_scale();
@@ -110,13 +110,13 @@ bool Executor::approach_offset_move(const ast::BlockView& view, const Position& 
     m.text = fmt::format("G43 approach: the tool stops D = {:.3f} mm short of the programmed point (semantics.md §9.4, "
                          "an inference of seed 004 example 6)", d);
     emit(m);
-    move(flags_.motion == fn::rapid ? EventKind::rapid : EventKind::linear, plane_position(end, to), *frame_, view);
+    move(state_.flags.motion == fn::rapid ? EventKind::rapid : EventKind::linear, plane_position(end, to), *frame_, view);
     if (stopped_) return true;
-    if (comp_side_ != 0) {
-        radius_comp_.stand_at(end);
-        comp_path_ = to;
+    if (state_.comp_side != 0) {
+        state_.radius_comp.stand_at(end);
+        state_.comp_path = to;
     }
-    programmed_ = to;
+    state_.programmed = to;
     return true;
 }
 
@@ -128,7 +128,7 @@ bool Executor::approach_offset_move(const ast::BlockView& view, const Position& 
 // centre words (compensation included).
 BlockWords Executor::arc_approach_words(const BlockWords& words, const Position& from, const Position& to, bool& ccw) const {
     const motion::P2 a = plane_point(from), b = plane_point(to);
-    ccw = comp_side_of_block(comp_side_) >= 0;
+    ccw = comp_side_of_block(state_.comp_side) >= 0;
     const motion::P2 half = (b - a) * 0.5;
     const motion::P2 towards = ccw ? motion::P2{-half.b, half.a} : motion::P2{half.b, -half.a};   // the half chord turned ±90°
     const motion::P2 offset = (half + towards) * (1.0 / unit_scale());   // centre − start, program units
@@ -146,14 +146,14 @@ BlockWords Executor::arc_approach_words(const BlockWords& words, const Position&
 
 bool Executor::arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
     bool ccw = true;
-    const BlockWords arc = arc_approach_words(words, comp_path_ ? *comp_path_ : programmed_.value_or(position_), to, ccw);
-    const dialects::FunctionId saved = flags_.motion;
-    flags_.motion = ccw ? fn::circular_ccw : fn::circular_cw;
+    const BlockWords arc = arc_approach_words(words, state_.comp_path ? *state_.comp_path : state_.programmed.value_or(state_.position), to, ccw);
+    const dialects::FunctionId saved = state_.flags.motion;
+    state_.flags.motion = ccw ? fn::circular_ccw : fn::circular_cw;
     bool moved = true;
     if ((scan_.classes & kRadiusCompCode) || compensating()) moved = compensate_motion(view, arc, to, true);
     else arc_move(!ccw, to, arc, view);
-    flags_.motion = saved;
-    if (!compensating()) programmed_.reset();
+    state_.flags.motion = saved;
+    if (!compensating()) state_.programmed.reset();
     return moved;
 }
 

@@ -50,7 +50,7 @@ Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, d
 
 Position Executor::target_position(const BlockWords& words, bool& moves) const {
     // Built in the program's frame (G68, G51, G51.1 undone), then taken back into work coordinates.
-    const Position start = to_program(position_);
+    const Position start = to_program(state_.position);
     Position to = start;
     moves = false;
     // Only the letters that are axes of the dialect (a table built once: this runs every block).
@@ -61,7 +61,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         if (w.data) continue;
         const std::size_t a = static_cast<std::size_t>(axis_of_[static_cast<std::size_t>(i)]);
         const double v = axis_value(w, letter);
-        to[a] = flags_.incremental ? to[a] + v : v;
+        to[a] = state_.flags.incremental ? to[a] + v : v;
         moves = true;
     }
     // U W H: incremental in system A; "the later-specified word is used" with X/U together (§3.2).
@@ -75,7 +75,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
         moves = true;
     }
-    if (polar_command_ && moves) polar_target(words, start, to);   // [transforms] G16 (executor_transforms.cpp)
+    if (state_.polar_command && moves) polar_target(words, start, to);   // [transforms] G16 (executor_transforms.cpp)
     return from_program(to);
 }
 
@@ -83,7 +83,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
 // start when its end (or an arc's extreme) lies past a limit.
 bool Executor::within_soft_limits(const Position& low, const Position& high, const Frame& f,
                                   const ast::BlockView& view) {
-    if (!soft_limits_on_ || !any_soft_limit_) return true;
+    if (!state_.soft_limits_on || !any_soft_limit_) return true;
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         const SoftLimit& limit = setup_.soft_limits[a];
@@ -104,31 +104,31 @@ bool Executor::within_soft_limits(const Position& low, const Position& high, con
 
 void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const {
     // F under G99/G95 and every thread lead are per revolution (semantics.md §4, cycles.md §9).
-    const bool per_rev = flags_.per_revolution || e.kind == EventKind::thread;
-    e.feed = e.kind == EventKind::thread ? thread_lead_ : feed_;
+    const bool per_rev = state_.flags.per_revolution || e.kind == EventKind::thread;
+    e.feed = e.kind == EventKind::thread ? state_.thread_lead : state_.feed;
     e.feed_per_rev = per_rev;
     e.spindle_rpm = current_rpm(e.end[0]);
-    e.spindle_running = spindle_on_;
+    e.spindle_running = state_.spindle_on;
     const double feed_mm = e.feed * unit_scale();
     double seconds = 0;
-    if (per_rev && flags_.css && e.kind != EventKind::thread) {
+    if (per_rev && state_.flags.css && e.kind != EventKind::thread) {
         // G96: the rpm follows the diameter along the move (motion/time.hpp css_feed_time).
         motion::SpindleClamp clamp;
-        if (max_rpm_ > 0) clamp.max_rpm = max_rpm_;
+        if (state_.max_rpm > 0) clamp.max_rpm = state_.max_rpm;
         if (setup_.max_rpm > 0) clamp.max_rpm = std::min(clamp.max_rpm, setup_.max_rpm);
         const motion::Line line{geometric_mm(e.start, setup_.diameter_x, unit_scale()),
                                 geometric_mm(e.end, setup_.diameter_x, unit_scale())};
-        if (feed_mm > 0) seconds = arc ? motion::css_feed_time(*arc, css_, feed_mm, clamp) : motion::css_feed_time(line, css_, feed_mm, clamp);
-    } else if (e.kind == EventKind::thread && thread_lead_change_ != 0) {
+        if (feed_mm > 0) seconds = arc ? motion::css_feed_time(*arc, state_.css, feed_mm, clamp) : motion::css_feed_time(line, state_.css, feed_mm, clamp);
+    } else if (e.kind == EventKind::thread && state_.thread_lead_change != 0) {
         // G34: revolutions from the integral of the lead (motion/time.hpp variable_lead).
-        const auto v = motion::variable_lead(timed_length_mm, feed_mm, thread_lead_change_ * unit_scale());
+        const auto v = motion::variable_lead(timed_length_mm, feed_mm, state_.thread_lead_change * unit_scale());
         if (v && e.spindle_rpm > 0) seconds = v->revolutions / e.spindle_rpm * 60.0;
         if (v) e.lead_end = v->lead_end / unit_scale();
     } else {
         const double mm_per_min = per_rev ? motion::feed_per_minute(feed_mm, e.spindle_rpm) : feed_mm;
         seconds = mm_per_min > 0 ? timed_length_mm / mm_per_min * 60.0 : 0;
     }
-    if (e.kind == EventKind::thread && thread_lead_change_ == 0) e.lead_end = e.feed;
+    if (e.kind == EventKind::thread && state_.thread_lead_change == 0) e.lead_end = e.feed;
     seconds *= slowdown_time_factor_;   // [seed 004 G28 ramp] 1 except for a ramp piece
     if (seconds > 0 && std::isfinite(seconds) && accel_mm_s2 > 0) {
         // Exact-stop trapezoid at the move's mean speed (motion/time.hpp).
@@ -141,33 +141,33 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
 // A feed move needs a feed rate: F0, or no F since power-on, stops the control with alarm 011
 // ([FANUC] PS011 "feedrate zero"; semantics.md §4). A move that goes nowhere feeds nothing.
 bool Executor::feed_commanded(bool moves, const Frame& f, const ast::BlockView& view) {
-    if (feed_ > 0 || !moves) return true;
+    if (state_.feed > 0 || !moves) return true;
     alarm(f, view, alarms::feed_zero,
           fmt::format("feed move with no feed rate commanded (F{:g}): alarm 011; program F before the first "
-                      "G01/G02/G03", feed_));
+                      "G01/G02/G03", state_.feed));
     return false;
 }
 
 void Executor::move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view) {
     // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
-    if (slowdown_ && kind == EventKind::linear && !in_slowdown_ && flags_.motion == fn::linear && slowed_move(to, f, view)) return;
-    if (kind == EventKind::linear && !feed_commanded(to != position_, f, view)) return;
+    if (state_.slowdown && kind == EventKind::linear && !in_slowdown_ && state_.flags.motion == fn::linear && slowed_move(to, f, view)) return;
+    if (kind == EventKind::linear && !feed_commanded(to != state_.position, f, view)) return;
     Event e;
     e.kind = kind;
     e.source = source(f, view);
-    e.start = position_;
+    e.start = state_.position;
     e.end = to;
     if (!within_soft_limits(to, to, f, view)) return;
     // The axes travel from where they stand to the new machine position: an offset taken up by this
     // move (G43 H, a lathe T offset, G49) is part of it (differential A7: `G43 Z15. H1` at Z15 moves).
     const Position machine_to = machine_position_of(to);
-    const Travel travel_total = travel_of(machine_at_, machine_to, setup_);
+    const Travel travel_total = travel_of(state_.machine_at, machine_to, setup_);
     e.length_mm = travel_total.linear;
     std::array<motion::AxisLimits, kAxisCount> limits{};
     std::array<double, kAxisCount> travel{};
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         limits[a] = {setup_.rapid_mm_min[a], setup_.accel_mm_s2[a]};
-        travel[a] = std::fabs(machine_to[a] - machine_at_[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0);
+        travel[a] = std::fabs(machine_to[a] - state_.machine_at[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0);
     }
     if (kind == EventKind::rapid) {
         // Each axis at its own rapid rate (dog-leg) or all scaled to the slowest (straight line),
@@ -175,7 +175,7 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
         e.time_s = motion::rapid_time(travel, limits, setup_.rapid_dogleg ? motion::RapidMode::dog_leg
                                                                           : motion::RapidMode::straight);
         if (!std::isfinite(e.time_s)) e.time_s = 0;   // an axis without a rapid rate: not timed
-        e.feed = feed_;
+        e.feed = state_.feed;
         result_.rapid_distance_mm += e.length_mm;
     } else {
         const motion::Vec3 delta{travel[0], travel[1], travel[2]};
@@ -187,7 +187,7 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
         time_feed_move(e, timed, std::isfinite(accel) ? accel : 0.0, nullptr);
         result_.feed_distance_mm += e.length_mm;
     }
-    position_ = to;
+    state_.position = to;
     const bool thread = kind == EventKind::thread;
     const double thread_speed = thread ? std::max(e.feed, e.lead_end) * unit_scale() * e.spindle_rpm : 0.0;
     emit(std::move(e), machine_to);   // offsets unchanged since machine_to was computed from `to` (= e.end)
@@ -207,15 +207,15 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
 void Executor::thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
     const Frame& f = *frame_;
     const auto* e = words.get('E');
-    thread_lead_ = e ? axis_value(*e, 'E') : feed_;
+    state_.thread_lead = e ? axis_value(*e, 'E') : state_.feed;
     const auto* k = words.get('K');
-    thread_lead_change_ = flags_.motion == fn::variable_lead_thread_cutting && k ? axis_value(*k, 'K') : 0;
-    if (thread_lead_change_ != 0) {
-        const double length = travel_of(position_, to, setup_).linear;   // program units, like the lead
-        if (!motion::variable_lead(length, thread_lead_, thread_lead_change_)) {
+    state_.thread_lead_change = state_.flags.motion == fn::variable_lead_thread_cutting && k ? axis_value(*k, 'K') : 0;
+    if (state_.thread_lead_change != 0) {
+        const double length = travel_of(state_.position, to, setup_).linear;   // program units, like the lead
+        if (!motion::variable_lead(length, state_.thread_lead, state_.thread_lead_change)) {
             alarm(f, view, 313,
                   fmt::format("G34 lead F{:g} K{:g} over {:g}: the lead reaches zero before the end (FANUC alarm 313, "
-                              "lead level error)", thread_lead_, thread_lead_change_, length));
+                              "lead level error)", state_.thread_lead, state_.thread_lead_change, length));
             return;
         }
     }
@@ -224,22 +224,22 @@ void Executor::thread_move(const ast::BlockView& view, const BlockWords& words, 
 
 bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
     // [polar] G112/G107 modes: the block's path is in the Cartesian plane (polar.cpp).
-    if (transform_ || (scan_.classes & kTransformCode)) {
+    if (state_.transform || (scan_.classes & kTransformCode)) {
         if (const auto moved = apply_plane_transform(view, words)) return *moved;
     }
     if (const auto reference = apply_reference_motion(view, words)) {
-        programmed_.reset();
+        state_.programmed.reset();
         return *reference;
     }
     bool moves = false;
     // G45–G48 act only in their block (semantics.md §9.3): a block without them measures from where
     // the tool stands (its G91 increments, the axes it does not name), not from the point the
     // offset blocks programmed.
-    if (programmed_by_offset_ && !(scan_.classes & kPositionOffsetCode)) programmed_.reset();
-    programmed_by_offset_ = false;
+    if (state_.programmed_by_offset && !(scan_.classes & kPositionOffsetCode)) state_.programmed.reset();
+    state_.programmed_by_offset = false;
     // [path changers] After a corner of direct drawing the tool stands off the programmed point,
     // which the block's coordinates are measured from (executor_drawing.cpp).
-    const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
+    const Position to = state_.programmed ? programmed_target(words, moves) : target_position(words, moves);
     if (apply_cycle(view, words, moves, to)) return false;
     // [seed 004 G43/G44 without H] the approach of §9.4 (executor_iso_specials.cpp).
     if (scan_.classes & kApproachOffsetCode)
@@ -247,12 +247,12 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     if ((scan_.classes & kArcApproachCode) && moves) return arc_approach_move(view, words, to);   // [seed 004 G12/G13]
     // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
     if ((scan_.classes & kRadiusCompCode) || compensating()) return compensate_motion(view, words, to, moves);
-    if (drawing_words(view) && flags_.motion == fn::linear) return draw_block(view, words, programmed_.value_or(position_), to);
+    if (drawing_words(view) && state_.flags.motion == fn::linear) return draw_block(view, words, state_.programmed.value_or(state_.position), to);
     if (const auto factor = position_offset_factor(); factor && moves)
-        return position_offset_move(view, words, *factor, programmed_.value_or(position_), to);
-    if (moves) programmed_.reset();
+        return position_offset_move(view, words, *factor, state_.programmed.value_or(state_.position), to);
+    if (moves) state_.programmed.reset();
     note_drawing_outside_g01(view);
-    const dialects::FunctionId motion = flags_.motion;
+    const dialects::FunctionId motion = state_.flags.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
     const auto centre_word = [&](char letter) {
         const auto* w = words.get(letter);
@@ -395,17 +395,17 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
         Event e = event_at(EventKind::message, frame, view);   // the kind is set per code below
         e.code = c.key ? *c.key / 10 : 0;
         if (f == fn::spindle_cw || f == fn::spindle_ccw || f == fn::spindle_stop) {
-            spindle_on_ = f != fn::spindle_stop;
+            state_.spindle_on = f != fn::spindle_stop;
             e.kind = EventKind::spindle;
-            e.spindle_rpm = spindle_on_ ? current_rpm(position_[0]) : 0;
-            e.spindle_running = spindle_on_;   // check3: start or stop, for the analyzer (K5010)
+            e.spindle_rpm = state_.spindle_on ? current_rpm(state_.position[0]) : 0;
+            e.spindle_running = state_.spindle_on;   // check3: start or stop, for the analyzer (K5010)
             emit(e);
         } else if (f == fn::tool_change) {
-            tool_ = pending_tool_;
-            if (std::find(result_.tools.begin(), result_.tools.end(), tool_) == result_.tools.end())
-                result_.tools.push_back(tool_);
+            state_.tool = state_.pending_tool;
+            if (std::find(result_.tools.begin(), result_.tools.end(), state_.tool) == result_.tools.end())
+                result_.tools.push_back(state_.tool);
             e.kind = EventKind::tool_change;
-            e.tool = tool_;
+            e.tool = state_.tool;
             emit(e);
         } else if (f == fn::coolant_on || f == fn::coolant_off) {
             e.kind = EventKind::coolant;
@@ -427,7 +427,7 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             call_local_subprogram(frame, view, words);   // [Haas] M97 (executor_local_call.cpp)
             return;
         } else if (f == fn::thread_chamfer_on || f == fn::thread_chamfer_off) {
-            thread_chamfer_ = f == fn::thread_chamfer_on;   // [Haas] M23 / M24 (cycles/haas_lathe.cpp)
+            state_.thread_chamfer = f == fn::thread_chamfer_on;   // [Haas] M23 / M24 (cycles/haas_lathe.cpp)
         } else if (f == fn::subprogram_return) {
             e.kind = EventKind::return_;
             emit(e);

@@ -2,7 +2,7 @@
 // register is modal for these codes ("the data of D08 given in N6 apply to N6–N8"); the tool's
 // move is the programmed move (from the programmed point, G90 or G91) changed by the rule of
 // interpreter/compensation/position_offset.hpp, started from where the tool stands. The
-// programmed point is kept apart (programmed_), so the next block measures from it.
+// programmed point is kept apart (state_.programmed), so the next block measures from it.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -24,36 +24,36 @@ std::optional<int> Executor::position_offset_factor() const {
 }
 
 double Executor::d_register() const {
-    const auto& d = last_words_[static_cast<std::size_t>('D' - 'A')];
+    const auto& d = state_.last_words[static_cast<std::size_t>('D' - 'A')];
     if (!d) return 0;
-    const auto it = tools_.find(static_cast<int>(std::lround(*d)));
-    return it == tools_.end() ? 0 : (it->second.radius + it->second.radius_wear) / unit_scale();
+    const auto it = memory_.tools.find(static_cast<int>(std::lround(*d)));
+    return it == memory_.tools.end() ? 0 : (it->second.radius + it->second.radius_wear) / unit_scale();
 }
 
 bool Executor::position_offset_move(const ast::BlockView& view, const BlockWords& words, int factor, const Position& start,
                                     const Position& to) {
     const double d = d_register();
-    const dialects::FunctionId motion = flags_.motion;
+    const dialects::FunctionId motion = state_.flags.motion;
     // An arc needs its centre words: seed 004 N11 `G45 Y0.` and N12 follow the G02 of N10 and
     // still move straight, "10 mm in Y" (semantics.md §9.3 table) [inference: the seed's intent].
     const bool centre = words.get('I') || words.get('J') || words.get('K') || words.get('R');
     if ((motion == fn::circular_cw || motion == fn::circular_ccw) && centre) {
         if (!position_offset_arc(view, words, motion == fn::circular_cw, factor * d, start, to)) return false;
     } else {
-        Position end = position_;
+        Position end = state_.position;
         const auto offset_axis = [&](char letter) {
             const auto axis = axis_of_letter(letter);
             if (!axis) return;
             const std::size_t a = static_cast<std::size_t>(*axis);
-            end[a] = position_[a] + compensation::offset_move(to[a] - start[a], factor, d);
+            end[a] = state_.position[a] + compensation::offset_move(to[a] - start[a], factor, d);
         };
         for (const auto& [letter, w] : words.words)
             if (!w.data && dialect_.lexical.is_axis(letter)) offset_axis(letter);
         for (const auto& [letter, w] : words.incremental) offset_axis(letter);
         move(motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
     }
-    programmed_ = position_ == to ? std::nullopt : std::optional<Position>(to);
-    programmed_by_offset_ = programmed_.has_value();
+    state_.programmed = state_.position == to ? std::nullopt : std::optional<Position>(to);
+    state_.programmed_by_offset = state_.programmed.has_value();
     return true;
 }
 
@@ -68,7 +68,7 @@ bool Executor::position_offset_arc(const ast::BlockView& view, const BlockWords&
     }
     const double scale = unit_scale();
     const double k = arc.arc().radius > 0 ? (arc.arc().radius + change * scale) / arc.arc().radius : 1.0;
-    const motion::Vec3 tool = geometric_mm(position_, setup_.diameter_x, scale);
+    const motion::Vec3 tool = geometric_mm(state_.position, setup_.diameter_x, scale);
     const motion::Vec3 from = arc.arc().start;
     const motion::Vec3 normal = motion::plane_normal(plane());
     const auto scaled = [&](motion::Vec3 p) {

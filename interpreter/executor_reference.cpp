@@ -43,23 +43,23 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
     if (g53) {
         // The programmed values are machine coordinates, for this block only (§2.2).
         const Position offset = machine_offset();
-        Position target = position_;
+        Position target = state_.position;
         for (const auto& [letter, w] : words.words)
             if (const auto axis = axis_of_letter(letter); axis && dialect_.lexical.is_axis(letter)) {
                 const std::size_t a = static_cast<std::size_t>(*axis);
                 target[a] = (axis_value(w, letter) * axis_scale(a) - offset[a]) / axis_scale(a);
             }
         // pcnc-mill G53 follows the active G00/G01 and its feed (§2.2); FANUC G53 is a rapid.
-        const bool feed = has_function(view, fn::machine_coordinate_select_g0_g1) && flags_.motion == fn::linear;
+        const bool feed = has_function(view, fn::machine_coordinate_select_g0_g1) && state_.flags.motion == fn::linear;
         move(feed ? EventKind::linear : EventKind::rapid, target, f, view);
         return !stopped_;
     }
     if (g29) {
         // To the remembered intermediate point, then to the programmed point; incremental words
         // count from the intermediate point ([FANUC] G29).
-        Position mid = position_;
+        Position mid = state_.position;
         for (std::size_t a = 0; a < kAxisCount; ++a)
-            if (programmed(words, a) && intermediate_[a]) mid[a] = *intermediate_[a];
+            if (programmed(words, a) && state_.intermediate[a]) mid[a] = *state_.intermediate[a];
         move(EventKind::rapid, mid, f, view);
         if (stopped_) return false;
         bool unused = false;
@@ -85,11 +85,11 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
             if (const auto* w = words.get(kAxisLetters[a]); w && programmed(words, a)) via[a] = (axis_value(*w, kAxisLetters[a]) * axis_scale(a) - offset[a]) / axis_scale(a);
     }
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        if (programmed(words, a)) intermediate_[a] = via[a];
+        if (programmed(words, a)) state_.intermediate[a] = via[a];
     move(EventKind::rapid, via, f, view);
     if (stopped_) return false;
     const Position offset = machine_offset();
-    Position home = position_;
+    Position home = state_.position;
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a))
             home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / axis_scale(a);

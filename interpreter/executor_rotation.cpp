@@ -25,9 +25,9 @@ Position Executor::from_program(const Position& program) const {
 // "ccw" wins over the ADV400 table.
 void Executor::apply_rotation(const ast::BlockView&, const BlockWords& words) {
     Rotation r;
-    r.plane = flags_.plane;
+    r.plane = state_.flags.plane;
     const auto [i, j] = plane_indices(r.plane);
-    const Position here = to_program(position_);
+    const Position here = to_program(state_.position);
     r.center_first = here[i];
     r.center_second = here[j];
     for (const auto& [letter, w] : words.words) {
@@ -41,7 +41,7 @@ void Executor::apply_rotation(const ast::BlockView&, const BlockWords& words) {
     const double degrees = angle ? angle->value : 0.0;
     const bool clockwise_positive = setup_.g68_positive_cw;
     r.angle = (clockwise_positive ? -degrees : degrees) * std::numbers::pi / 180.0;
-    rotation_ = r;
+    state_.rotation = r;
 }
 
 }  // namespace kerf::interpreter

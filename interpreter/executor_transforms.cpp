@@ -40,13 +40,13 @@ bool Executor::apply_program_transforms(const ast::BlockView& view, const BlockW
         const dialects::FunctionId f = c.info->function;
         if (f == fn::polar_coordinate_command || f == fn::polar_coordinate_command_cancel) {
             const bool on = f == fn::polar_coordinate_command;
-            if (on != polar_command_) note_transform(view, on ? "polar coordinate command (G16)" : "polar coordinate command cancel (G15)");
-            polar_command_ = on;
+            if (on != state_.polar_command) note_transform(view, on ? "polar coordinate command (G16)" : "polar coordinate command cancel (G15)");
+            state_.polar_command = on;
         } else if (f == fn::scaling) {
             start_scaling(view, words);
             moves = !axis_words;
-        } else if (f == fn::scaling_cancel && scaling_) {
-            scaling_.reset();
+        } else if (f == fn::scaling_cancel && state_.scaling) {
+            state_.scaling.reset();
             note_transform(view, "scaling cancel (G50)");
         } else if (f == fn::mirror || f == fn::mirror_cancel) {
             set_mirror(view, words, f == fn::mirror);
@@ -75,7 +75,7 @@ void Executor::start_scaling(const ast::BlockView& view, const BlockWords& words
     Scaling s;
     // The centre is in the frame scaling maps from: inside G51.1 (a mirror is its own inverse),
     // outside G68 (FANUC nesting G51.1 ⊃ G51 ⊃ G68; transforms.hpp).
-    const Position here = ProgramFrame{mirror_, std::nullopt, std::nullopt}.to_program(position_);
+    const Position here = ProgramFrame{state_.mirror, std::nullopt, std::nullopt}.to_program(state_.position);
     for (std::size_t a = 0; a < 3; ++a) {
         const auto* w = words.get(kAxisLetters[a]);
         s.center[a] = w ? axis_value(*w, kAxisLetters[a]) : here[a];
@@ -91,7 +91,7 @@ void Executor::start_scaling(const ast::BlockView& view, const BlockWords& words
                                               s.factor[0], s.factor[1], s.factor[2]));
         return;
     }
-    scaling_ = s;
+    state_.scaling = s;
     note_transform(view, fmt::format("scaling (G51) about X{:g} Y{:g} Z{:g}, magnification X{:g} Y{:g} Z{:g}", s.center[0],
                                      s.center[1], s.center[2], s.factor[0], s.factor[1], s.factor[2]));
 }
@@ -106,10 +106,10 @@ void Executor::set_mirror(const ast::BlockView& view, const BlockWords& words, b
         const char letter = kAxisLetters[a];
         const auto* w = words.get(letter);
         if (on && w) {
-            mirror_[a] = axis_value(*w, letter);
-            axes += fmt::format(" {}{:g}", letter, *mirror_[a]);
-        } else if (!on && mirror_[a] && (w || !named)) {
-            mirror_[a].reset();
+            state_.mirror[a] = axis_value(*w, letter);
+            axes += fmt::format(" {}{:g}", letter, *state_.mirror[a]);
+        } else if (!on && state_.mirror[a] && (w || !named)) {
+            state_.mirror[a].reset();
             axes += fmt::format(" {}", letter);
         }
     }
@@ -129,7 +129,7 @@ void Executor::set_mirror(const ast::BlockView& view, const BlockWords& words, b
 // describes the pattern before it is scaled and turned. G51/G51.1/G68/G52/G92/G10 blocks do not
 // come here (their words are centres and values, not polar: [FANUC]).
 void Executor::polar_target(const BlockWords& words, const Position& start, Position& to) const {
-    const auto [i, j] = plane_indices(flags_.plane);
+    const auto [i, j] = plane_indices(state_.flags.plane);
     const auto word = [&](std::size_t axis) -> const Word* {
         const Word* w = words.get(kAxisLetters[axis]);
         return w && !w->data ? w : nullptr;
@@ -143,13 +143,13 @@ void Executor::polar_target(const BlockWords& words, const Position& start, Posi
     double centre_i = 0, centre_j = 0;
     if (radius) {
         r = axis_value(*radius, kAxisLetters[i]);
-        if (flags_.incremental) {
+        if (state_.flags.incremental) {
             centre_i = start[i];
             centre_j = start[j];
         }
     }
     double degrees = here_angle;
-    if (angle) degrees = axis_value(*angle, kAxisLetters[j]) + (flags_.incremental ? here_angle : 0.0);
+    if (angle) degrees = axis_value(*angle, kAxisLetters[j]) + (state_.flags.incremental ? here_angle : 0.0);
     to[i] = centre_i + r * std::cos(degrees * kDeg);
     to[j] = centre_j + r * std::sin(degrees * kDeg);
 }

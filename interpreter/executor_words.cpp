@@ -32,8 +32,8 @@ macro::Options Executor::macro_options(bool address) const {
     o.angle_range = setup_.atan_minus_180 ? macro::AngleRange::minus_180_to_180 : macro::AngleRange::zero_to_360;
     // ROUND in an address rounds to the least input increment; ADP undoes the increment scaling
     // of G65 arguments written without a point ([FANUC], macro/evaluate.hpp).
-    if (address) o.round_increment = setup_.increment(flags_.inch);
-    if (!setup_.calculator_decimal) o.adp_factor = 1.0 / setup_.increment(flags_.inch);
+    if (address) o.round_increment = setup_.increment(state_.flags.inch);
+    if (!setup_.calculator_decimal) o.adp_factor = 1.0 / setup_.increment(state_.flags.inch);
     return o;
 }
 
@@ -89,28 +89,28 @@ double Executor::increment(char letter) const {
     const auto axis = axis_of_letter(letter);
     if (axis && setup_.rotary[static_cast<std::size_t>(*axis)] && dialect_axes_ >> (letter - 'A') & 1u)
         return setup_.increment_deg();
-    return setup_.increment(flags_.inch);
+    return setup_.increment(state_.flags.inch);
 }
 
 double Executor::current_rpm(double x_diameter) const {
-    if (!flags_.css) return spindle_rpm_;
+    if (!state_.flags.css) return state_.spindle_rpm;
     // G96: n = 1000·Vc / (π·D), clamped by G50/G92 S and the machine (semantics.md §4.1).
     const double d = std::fabs(setup_.diameter_x ? x_diameter : 2 * x_diameter);
-    double rpm = d > 1e-9 ? 1000.0 * css_ / (M_PI * d) : 1e12;
-    if (max_rpm_ > 0) rpm = std::min(rpm, max_rpm_);
+    double rpm = d > 1e-9 ? 1000.0 * state_.css / (M_PI * d) : 1e12;
+    if (state_.max_rpm > 0) rpm = std::min(rpm, state_.max_rpm);
     if (setup_.max_rpm > 0) rpm = std::min(rpm, setup_.max_rpm);
     return rpm;
 }
 
 void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words) {
-    if (const auto* f = words.get('F'); f && !f->data) feed_ = f->value;
+    if (const auto* f = words.get('F'); f && !f->data) state_.feed = f->value;
     if (const auto* s = words.get('S'); s && !s->data) {
         if (has_function(view, fn::coordinate_system_setting)) {
-            max_rpm_ = s->value;   // G50 S / G92 S: the clamp for G96 (semantics.md §4.1)
-        } else if (has_function(view, fn::css_on) || (flags_.css && !has_function(view, fn::css_off))) {
-            css_ = s->value;
+            state_.max_rpm = s->value;   // G50 S / G92 S: the clamp for G96 (semantics.md §4.1)
+        } else if (has_function(view, fn::css_on) || (state_.flags.css && !has_function(view, fn::css_off))) {
+            state_.css = s->value;
         } else {
-            spindle_rpm_ = s->value;
+            state_.spindle_rpm = s->value;
         }
     }
     if (const auto* t = words.get('T'); t && !t->data) apply_tool_word(view, static_cast<int>(std::lround(t->value)));
@@ -123,16 +123,16 @@ void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWord
 void Executor::apply_tool_word(const ast::BlockView& view, int value) {
     const bool split = dialect_.lexical.tool_word == "mmnn";
     const int tool = split ? value / 100 : value;
-    if (split) tool_offset_ = value % 100;
+    if (split) state_.tool_offset = value % 100;
     if (dialect_.machine != dialects::MachineKind::lathe) {
-        pending_tool_ = tool;
+        state_.pending_tool = tool;
         return;
     }
-    if (tool == 0 || tool == tool_) return;
+    if (tool == 0 || tool == state_.tool) return;
     Event e = event_at(EventKind::tool_change, *frame_, view);
     e.tool = tool;
-    e.code = tool_offset_;
-    tool_ = tool;
+    e.code = state_.tool_offset;
+    state_.tool = tool;
     if (std::find(result_.tools.begin(), result_.tools.end(), tool) == result_.tools.end()) result_.tools.push_back(tool);
     emit(e);
 }
@@ -142,16 +142,14 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
     bool changed = false;          // a group other than motion changed: derive every flag again
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info || c.info->has(dialects::traits::one_shot) || c.info->group.empty()) continue;
-        // The motion group's slot is found once (map nodes do not move): nearly every block has
-        // a G00/G01/G02/G03 and most repeat the active one.
+        // Nearly every block has a G00/G01/G02/G03 and most repeat the active one.
         const bool motion_group = c.info->has(dialects::traits::motion_group);
-        if (motion_group && !motion_slot_) motion_slot_ = &modal_[c.info->group_index];
-        const dialects::CodeInfo*& slot = motion_group ? *motion_slot_ : modal_[c.info->group_index];
+        const dialects::CodeInfo*& slot = state_.modal[c.info->group_index];
         if (slot == c.info) continue;
         slot = c.info;
         if (motion_group) {
-            flags_.motion = c.info->function;
-            flags_.motion_cycle = (code_class_of(*c.info) & kCycleCode) ? c.info : nullptr;   // G90/G92/G94
+            state_.flags.motion = c.info->function;
+            state_.flags.motion_cycle = (code_class_of(*c.info) & kCycleCode) ? c.info : nullptr;   // G90/G92/G94
         } else {
             changed = true;
         }
@@ -163,10 +161,10 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
 // What #4102..#4120 read: the last B D E F H M N O S T (FANUC "modal information").
 void Executor::remember_words(const ast::BlockView&, const BlockWords& words) {
     for (const char letter : {'B', 'D', 'E', 'F', 'H', 'S', 'T'})
-        if (const auto* w = words.get(letter)) last_words_[static_cast<std::size_t>(letter - 'A')] = w->value;
+        if (const auto* w = words.get(letter)) state_.last_words[static_cast<std::size_t>(letter - 'A')] = w->value;
     for (const ast::CodeRef& c : scan_.m)
-        if (c.key) last_words_['M' - 'A'] = static_cast<double>(*c.key) / 10.0;
-    if (scan_.sequence) last_words_['N' - 'A'] = *scan_.sequence;
+        if (c.key) state_.last_words['M' - 'A'] = static_cast<double>(*c.key) / 10.0;
+    if (scan_.sequence) state_.last_words['N' - 'A'] = *scan_.sequence;
 }
 
 Position Executor::machine_offset() const {
@@ -175,17 +173,17 @@ Position Executor::machine_offset() const {
     const Position tool = tool_offset();
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        p[a] = active_work_offset()[a] + external_offset_[a] + setup_.work_shift_sign * work_shift_[a] +
-               local_shift_[a] + setting_shift_[a] + tool[a];
-    p[2] += length_applied_mm_;   // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp)
+        p[a] = active_work_offset()[a] + state_.external_offset[a] + setup_.work_shift_sign * state_.work_shift[a] +
+               state_.local_shift[a] + state_.setting_shift[a] + tool[a];
+    p[2] += state_.length_applied_mm;   // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp)
     return p;
 }
 
 const Position& Executor::active_work_offset() const {
     static const Position kZero{};
-    if (additional_system_ == 0) return work_offsets_[static_cast<std::size_t>(work_system_)];
-    const auto it = additional_offsets_.find(additional_system_);
-    return it == additional_offsets_.end() ? kZero : it->second;
+    if (state_.additional_system == 0) return state_.work_offsets[static_cast<std::size_t>(state_.work_system)];
+    const auto it = memory_.additional_offsets.find(state_.additional_system);
+    return it == memory_.additional_offsets.end() ? kZero : it->second;
 }
 
 std::optional<int> Executor::additional_number(const ast::BlockView& view, std::optional<double> p) {
@@ -200,9 +198,9 @@ std::optional<int> Executor::additional_number(const ast::BlockView& view, std::
 
 Position Executor::tool_offset() const {
     // Mills offset the length with G43/G44 H (executor_length.cpp) and the radius with G41/G42 D, not by T.
-    if (dialect_.machine != dialects::MachineKind::lathe || tool_offset_ == 0) return {};
-    const auto it = tools_.find(tool_offset_);
-    if (it == tools_.end()) return {};
+    if (dialect_.machine != dialects::MachineKind::lathe || state_.tool_offset == 0) return {};
+    const auto it = memory_.tools.find(state_.tool_offset);
+    if (it == memory_.tools.end()) return {};
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a) p[a] = it->second.geometry[a] + it->second.wear[a];
     return p;
@@ -216,9 +214,9 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             const int n = c.info->work_coordinate() - 1;
             {
                 change_offsets([&] {
-                    work_system_ = n;
-                    additional_system_ = 0;
-                    if (setup_.g54_cancels_g52) local_shift_ = {};   // pcnc: G54–G59 cancel G52 (§2.4)
+                    state_.work_system = n;
+                    state_.additional_system = 0;
+                    if (setup_.g54_cancels_g52) state_.local_shift = {};   // pcnc: G54–G59 cancel G52 (§2.4)
                 });
             }
         } else if (f == fn::work_coordinate_additional) {
@@ -230,7 +228,7 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
                 if (letter == 'P' && !p) p = value;
             const auto n = additional_number(view, p);
             if (!n) return false;
-            change_offsets([&] { additional_system_ = *n; });
+            change_offsets([&] { state_.additional_system = *n; });
         } else if (f == fn::programmable_data_input) {
             apply_data_input(view, words);
             return false;   // no motion in a G10 block
@@ -238,29 +236,29 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             apply_rotation(view, words);
             return false;   // G68 sets the rotation; the next block moves (semantics.md §2.9)
         } else if (f == fn::coordinate_rotation_cancel) {
-            rotation_.reset();
+            state_.rotation.reset();
         } else if (f == fn::modal_macro_call_cancel) {
-            modal_call_.reset();   // G67
+            state_.modal_call.reset();   // G67
         } else if (f == fn::stroke_check_on || f == fn::stroke_check_off) {
-            soft_limits_on_ = f == fn::stroke_check_on;
+            state_.soft_limits_on = f == fn::stroke_check_on;
         } else if (f == fn::coordinate_system_setting && (words.get('X') || words.get('Z') || words.get('Y'))) {
             // G50/G92 X Z: the current point gets the programmed values (semantics.md §2.5); on
             // FANUC it also cancels G52 (§2.4).
-            if (!setup_.g52_current_point) change_offsets([&] { local_shift_ = {}; });
+            if (!setup_.g52_current_point) change_offsets([&] { state_.local_shift = {}; });
             for (const auto& [letter, w] : words.words) {
                 const auto axis = axis_of_letter(letter);
                 if (!axis) continue;
                 const std::size_t a = static_cast<std::size_t>(*axis);
                 const double value = axis_value(w, letter);
-                setting_shift_[a] += (position_[a] - value) * axis_scale(a);   // offsets are mm
-                position_[a] = value;
+                state_.setting_shift[a] += (state_.position[a] - value) * axis_scale(a);   // offsets are mm
+                state_.position[a] = value;
             }
             return false;
         } else if (f == fn::local_system_shift || f == fn::local_system_current_point) {
             apply_local_system(view, words, f == fn::local_system_current_point);
             return false;   // G52 does not move the tool (semantics.md §2.4)
         } else if (f == fn::local_system_cancel) {
-            change_offsets([&] { local_shift_ = {}; });   // G152 (pcnc-mill)
+            change_offsets([&] { state_.local_shift = {}; });   // G152 (pcnc-mill)
         } else if (f == fn::cancel_coordinate_setting) {
             // G50.3 / G92.1: the named axes (all when none is named) lose the G50/G92 correction;
             // no motion in the block ([FANUC] workpiece coordinate system preset).
@@ -268,8 +266,8 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             for (std::size_t a = 0; a < kAxisCount; ++a) named = named || words.get(kAxisLetters[a]);
             for (std::size_t a = 0; a < kAxisCount; ++a) {
                 if (named && !words.get(kAxisLetters[a])) continue;
-                position_[a] += setting_shift_[a] / axis_scale(a);
-                setting_shift_[a] = 0;
+                state_.position[a] += state_.setting_shift[a] / axis_scale(a);
+                state_.setting_shift[a] = 0;
             }
             return false;
         }
@@ -287,7 +285,7 @@ void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& 
         if (axis_of_letter(letter) && dialect_.lexical.is_axis(letter) && w.value != 0) all_zero = false;
     change_offsets([&] {
         if (current_point && all_zero && setup_.g52_zeros_cancel) {
-            local_shift_ = {};
+            state_.local_shift = {};
             return;
         }
         for (const auto& [letter, w] : words.words) {
@@ -297,7 +295,7 @@ void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& 
             const double v = axis_value(w, letter);
             // current point: program p maps to work p + L with L = position − value (§2.4);
             // FANUC: the vector itself, in the program's unit (§4.2; offsets are kept in mm).
-            local_shift_[a] = current_point ? local_shift_[a] + (position_[a] - v) * axis_scale(a) : v * axis_scale(a);
+            state_.local_shift[a] = current_point ? state_.local_shift[a] + (state_.position[a] - v) * axis_scale(a) : v * axis_scale(a);
         }
     });
     Event e = event_at(EventKind::coordinate_change, *frame_, view);

@@ -50,35 +50,35 @@ double Executor::program_value(std::size_t axis, double mm) const {
 }
 
 motion::P2 Executor::transform_point(const Position& p) const {
-    const PlaneTransform& t = *transform_;
+    const PlaneTransform& t = *state_.transform;
     return {plane_mm(t.linear, p[t.linear]), p[t.rotary] * unit_scale()};   // the virtual axis: mm, never a diameter
 }
 
 std::optional<bool> Executor::apply_plane_transform(const ast::BlockView& view, const BlockWords& words) {
-    if (transform_) {
+    if (state_.transform) {
         if (const auto improper = improper_in_transform(view)) {
-            alarm(*frame_, view, transform_->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
-                  fmt::format("{} is not allowed in {} mode ([FANUC] alarm {})", *improper, transform_->code,
-                              transform_->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical));
+            alarm(*frame_, view, state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
+                  fmt::format("{} is not allowed in {} mode ([FANUC] alarm {})", *improper, state_.transform->code,
+                              state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical));
             return false;
         }
     }
     for (const ast::CodeRef& c : scan_.g) {
         if (!c.info) continue;
         const dialects::FunctionId f = c.info->function;
-        if (f == fn::polar_interpolation_off && transform_ && transform_->map.kind == motion::PlaneMap::Kind::polar) {
+        if (f == fn::polar_interpolation_off && state_.transform && state_.transform->map.kind == motion::PlaneMap::Kind::polar) {
             if (!transform_switch_allowed(view, c.info->spelling)) return false;
-            transform_.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
-        } else if (f == fn::polar_interpolation_on && !transform_) {
+            state_.transform.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
+        } else if (f == fn::polar_interpolation_on && !state_.transform) {
             if (!transform_switch_allowed(view, c.info->spelling)) return false;
             if (words.get('C')) return start_polar_with_c(view, words, c.info->spelling);
             start_polar(c.info->spelling);
         } else if (f == fn::cylindrical_interpolation) {
             if (!cylindrical_code(view, words, c.info->spelling)) return false;
-            if (!transform_) return std::nullopt;   // G07.1 C0: the block's other words run as usual
+            if (!state_.transform) return std::nullopt;   // G07.1 C0: the block's other words run as usual
         }
     }
-    if (!transform_) return std::nullopt;
+    if (!state_.transform) return std::nullopt;
     return transform_move(view, words);
 }
 
@@ -91,12 +91,12 @@ std::optional<std::string> Executor::improper_in_transform(const ast::BlockView&
             // under the program (traits::not_in_plane_transform).
             const bool improper = c.info->has(dialects::traits::cycle | dialects::traits::not_in_plane_transform) ||
                                   (c.info->function == fn::polar_interpolation_on &&
-                                   transform_->map.kind == motion::PlaneMap::Kind::cylindrical) ||
+                                   state_.transform->map.kind == motion::PlaneMap::Kind::cylindrical) ||
                                   (c.info->function == fn::cylindrical_interpolation &&
-                                   transform_->map.kind == motion::PlaneMap::Kind::polar);
+                                   state_.transform->map.kind == motion::PlaneMap::Kind::polar);
             if (improper) return fmt::format("{} ({})", c.info->spelling, c.info->function);
         }
-    if (flags_.motion == fn::thread_cutting) return std::string("thread cutting");
+    if (state_.flags.motion == fn::thread_cutting) return std::string("thread cutting");
     return std::nullopt;
 }
 
@@ -108,11 +108,11 @@ void Executor::start_polar(const std::string& spelling) {
     t.map = {motion::PlaneMap::Kind::polar, 0};
     t.linear = kX;
     t.rotary = kC;
-    t.origin_deg = position_[kC];
-    t.programmed = position_;
+    t.origin_deg = state_.position[kC];
+    t.programmed = state_.position;
     t.programmed[kC] = 0;
     t.code = spelling;
-    transform_ = t;
+    state_.transform = t;
 }
 
 // Seed 001 §10.11 writes `G112 C45`: the meaning of C is unknown (cycles.md §18): said, not moved.
@@ -146,32 +146,32 @@ bool Executor::cylindrical_code(const ast::BlockView& view, const BlockWords& wo
     }
     const double radius = axis_value(*words.get(letter), letter) * unit_scale();
     if (radius == 0) {
-        transform_.reset();
+        state_.transform.reset();
         return true;
     }
     PlaneTransform t;
     t.map = {motion::PlaneMap::Kind::cylindrical, std::fabs(radius)};
     t.rotary = axes->first;
     t.linear = axes->second;
-    t.programmed = position_;
-    t.programmed[t.rotary] = position_[t.rotary] / kDegPerRad * t.map.cylinder_radius / unit_scale();
+    t.programmed = state_.position;
+    t.programmed[t.rotary] = state_.position[t.rotary] / kDegPerRad * t.map.cylinder_radius / unit_scale();
     t.code = spelling;
-    transform_ = t;
+    state_.transform = t;
     return true;
 }
 
 // A block in the mode: its end point in the Cartesian plane, the line or arc there, its pieces.
 // Under G41/G42 the tool centre's path is offset in the Cartesian plane first (polar_compensation.cpp).
 bool Executor::transform_move(const ast::BlockView& view, const BlockWords& words) {
-    PlaneTransform& t = *transform_;
+    PlaneTransform& t = *state_.transform;
     bool moves = false;
-    const Position real = position_;
-    position_ = t.programmed;   // the block's words are measured from the programmed point
+    const Position real = state_.position;
+    state_.position = t.programmed;   // the block's words are measured from the programmed point
     const Position to = target_position(words, moves);
-    position_ = real;
+    state_.position = real;
     note_drawing_outside_g01(view);
     if (compensating() || (scan_.classes & kRadiusCompCode)) return transform_compensated(view, words, to, moves);
-    const dialects::FunctionId motion = flags_.motion;
+    const dialects::FunctionId motion = state_.flags.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves) return false;
     if (motion != fn::rapid && motion != fn::linear && !arc) return false;   // no motion code: nothing moves
@@ -192,7 +192,7 @@ bool Executor::transform_move(const ast::BlockView& view, const BlockWords& word
 
 void Executor::transform_arc_alarm(const ast::BlockView& view, const motion::ArcResult& geometry) {
     alarm(*frame_, view, geometry.error().fanuc_alarm,
-          fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", transform_->code,
+          fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", state_.transform->code,
                       motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed));
 }
 
@@ -205,8 +205,8 @@ motion::P2 Executor::arc_point(const motion::Arc& arc, double u) {
 // the axes outside the plane go from span.from toward span.to over the part [u0, u1] of the block.
 void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(double)>& path, const PathSpan& span,
                               const ast::BlockView& view) {
-    const PlaneTransform& t = *transform_;
-    const double start_deg = position_[t.rotary] - t.origin_deg;
+    const PlaneTransform& t = *state_.transform;
+    const double start_deg = state_.position[t.rotary] - t.origin_deg;
     const std::vector<motion::MappedPoint> pieces = motion::map_path(t.map, path, start_deg, setup_.transform_tolerance);
     const motion::P2 a = path(0);
     if (kind != EventKind::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(view, pieces, a);
@@ -221,7 +221,7 @@ void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(dou
         double other_mm2 = 0;   // travel of the linear axes outside the plane
         for (std::size_t axis = 0; axis < 3; ++axis)
             if (axis != t.linear && !setup_.rotary[axis]) {
-                const double d = plane_mm(axis, end[axis]) - plane_mm(axis, position_[axis]);
+                const double d = plane_mm(axis, end[axis]) - plane_mm(axis, state_.position[axis]);
                 other_mm2 += d * d;
             }
         transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), view);
@@ -251,17 +251,17 @@ motion::ArcResult Executor::transform_arc(bool cw, motion::P2 a, motion::P2 b, c
 // turns F/r·(180/π) °/min; past the axis' rapid rate the control clamps it ([FANUC]) and the block
 // takes longer than the trace says (cycles.md §18 "a dry run should warn").
 void Executor::warn_rotary_speed(const ast::BlockView& view, const std::vector<motion::MappedPoint>& pieces, motion::P2 start) {
-    const double limit = setup_.rapid_mm_min[transform_->rotary];
-    const double feed = feed_ * unit_scale();
-    if (limit <= 0 || feed <= 0 || flags_.per_revolution) return;
+    const double limit = setup_.rapid_mm_min[state_.transform->rotary];
+    const double feed = state_.feed * unit_scale();
+    if (limit <= 0 || feed <= 0 || state_.flags.per_revolution) return;
     const double r = motion::min_radius(pieces, start);
     const double needed = r > 0 ? feed / r * kDegPerRad : INFINITY;
     if (needed <= limit) return;
     Event e = event_at(EventKind::message, *frame_, view);
     e.text = fmt::format("{}: the path passes {:.3f} mm from the centre: C would turn {} °/min at F{}, over its rate "
                          "{} °/min: the control slows down and this block takes longer (cycles.md §18)",
-                         transform_->code, r, std::isfinite(needed) ? fmt::format("{:.0f}", needed) : std::string("without limit"),
-                         feed_, limit);
+                         state_.transform->code, r, std::isfinite(needed) ? fmt::format("{:.0f}", needed) : std::string("without limit"),
+                         state_.feed, limit);
     emit(e);
 }
 
@@ -276,12 +276,12 @@ void Executor::transform_piece(EventKind kind, const Position& to, double length
     Event e;
     e.kind = kind;
     e.source = source(*frame_, view);
-    e.start = position_;
+    e.start = state_.position;
     e.end = to;
     e.length_mm = length_mm;
     time_feed_move(e, length_mm, 0.0, nullptr);   // pieces blend: no exact stop between them
     result_.feed_distance_mm += length_mm;
-    position_ = to;
+    state_.position = to;
     emit(std::move(e));
 }
 

@@ -31,7 +31,7 @@ constexpr int kIllegalConditions = 145;
 std::optional<motion::Element> Executor::transform_element(const BlockWords& words, const Position& start,
                                                             const Position& to, bool quiet) {
     const motion::P2 a = transform_point(start), b = transform_point(to);
-    const dialects::FunctionId motion = flags_.motion;
+    const dialects::FunctionId motion = state_.flags.motion;
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
         const motion::ArcResult geometry = transform_arc(motion == fn::circular_cw, a, b, words);
         if (!geometry) {
@@ -45,12 +45,12 @@ std::optional<motion::Element> Executor::transform_element(const BlockWords& wor
 }
 
 bool Executor::transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves) {
-    PlaneTransform& t = *transform_;
-    const int side = comp_side_of_block(comp_side_);
-    const dialects::FunctionId motion = flags_.motion;
+    PlaneTransform& t = *state_.transform;
+    const int side = comp_side_of_block(state_.comp_side);
+    const dialects::FunctionId motion = state_.flags.motion;
     const bool runs = motion == fn::rapid || motion == fn::linear || motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves || !runs) {
-        comp_side_ = side;   // G41/G42/G40 without motion: in force from the next move
+        state_.comp_side = side;   // G41/G42/G40 without motion: in force from the next move
         return false;
     }
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
@@ -58,15 +58,15 @@ bool Executor::transform_compensated(const ast::BlockView& view, const BlockWord
     if (!arc && motion::norm(transform_point(to) - transform_point(t.programmed)) <= 1e-9) {
         // A move off the plane only (a Z plunge): the offset stays, the compensation goes on with
         // the next move in the plane (as executor_compensation.cpp, semantics.md §5).
-        comp_side_ = side;
+        state_.comp_side = side;
         const motion::P2 at = t.tool.value_or(transform_point(t.programmed));
-        run_plane_path(kind, [at](double) { return at; }, {position_, to, 0, 1}, view);
+        run_plane_path(kind, [at](double) { return at; }, {state_.position, to, 0, 1}, view);
         if (!stopped_) t.programmed = to;
         return true;
     }
     Position programmed_end = to;
     const auto pieces = comp_pieces(view, words, t.programmed, to, false, programmed_end);
-    comp_side_ = side;
+    state_.comp_side = side;
     if (!pieces || pieces->empty()) return false;
     const Programmed& current = pieces->front().programmed;
     const std::optional<Programmed> next = comp_look_ahead(scan_.block, to);
@@ -76,7 +76,7 @@ bool Executor::transform_compensated(const ast::BlockView& view, const BlockWord
     run_transform_moves(*step, kind, to, view);
     if (stopped_) return true;
     t.programmed = to;
-    if (!radius_comp_.engaged()) t.tool.reset();   // cancelled: on the programmed point again
+    if (!state_.radius_comp.engaged()) t.tool.reset();   // cancelled: on the programmed point again
     return true;
 }
 
@@ -84,8 +84,8 @@ bool Executor::transform_compensated(const ast::BlockView& view, const BlockWord
 // block's travel in proportion to the moves' lengths.
 void Executor::run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to,
                                    const ast::BlockView& view) {
-    PlaneTransform& t = *transform_;
-    const Position from = position_;
+    PlaneTransform& t = *state_.transform;
+    const Position from = state_.position;
     std::vector<std::function<motion::P2(double)>> paths;
     std::vector<double> lengths;
     motion::P2 tool = t.tool.value_or(transform_point(t.programmed));
@@ -122,7 +122,7 @@ void Executor::run_transform_moves(const compensation::Step& step, EventKind kin
 // G12.1/G13.1 may only be given with the compensation cancelled ([FANUC] PS0145; every seed
 // program gives G40 before G113, cycles.md §18).
 bool Executor::transform_switch_allowed(const ast::BlockView& view, const std::string& spelling) {
-    if (!radius_comp_.engaged()) return true;
+    if (!state_.radius_comp.engaged()) return true;
     alarm(*frame_, view, kIllegalConditions,
           fmt::format("{} while tool radius compensation is on: cancel it with G40 and a move first ([FANUC] alarm {})",
                       spelling, kIllegalConditions));
