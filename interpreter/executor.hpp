@@ -107,15 +107,47 @@ struct BlockScan {
 
 class Executor;
 
+// A program level of the run: a program and where the run is in it (a call pushes one).
+struct Frame {
+    ProgramRef program;
+    std::uint32_t block = 0;          // next block to execute (index into the file's blocks)
+    std::uint32_t start_block = 0;    // where a repeat starts again (M98 Q: the label)
+    std::int64_t repeats_left = 1;    // M98 repeats still to run, this one included
+    bool macro = false;               // G65/G66 call: has its own local variables
+    bool modal_macro = false;         // called by G66: its moves do not call again
+    struct Loop {
+        std::uint32_t do_block;       // the WHILE/DO block
+        int label;                    // m of DO m / END m
+    };
+    std::vector<Loop> loops;          // open WHILE/DO loops, innermost last (at most 3)
+};
+
+// One block as it runs (semantics.md §1.2), handed to each step explicitly: no member of the
+// executor stands for "the block being run". A block read ahead (direct drawing, compensation, a
+// G70–G73 profile) has a context of its own.
+struct BlockContext {
+    const Frame& frame;          // the program level running it (gone after the block's M99 or M30, its last step)
+    const ast::BlockView& view;
+    const BlockScan& scan;       // its codes; scan.block is its index in the file, scan.source where it is
+    const BlockWords& words;     // its evaluated words (empty until step 2 has evaluated them)
+    std::uint32_t index() const { return scan.block; }
+    const SourceRef& source() const { return scan.source; }
+    // The same block with other words (a G12 quarter arc with its centre words, G112 C without C).
+    BlockContext with(const BlockWords& other) const { return {frame, view, scan, other}; }
+};
+
 // Work coordinates (program units, lathe X diameter) → geometric mm (X radius).
 motion::Vec3 geometric_mm(const Position& p, bool diameter_x, double scale);
 // And back: X, Y, Z of `g` in program units into a copy of `like` (whose other axes are kept).
 Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, double scale);
 
-// The system variables (#1000 and up) as the interpreter's state: executor_system.cpp.
+// The system variables (#1000 and up) as the interpreter's state (executor_system.cpp). Built with a
+// block, they are that block's: its assignments write them (#3000 raises its alarm at the block).
+// Without one (the executor's own, behind RunOptions::after_block and DPRNT) they are read only.
 class ExecutorSystemVariables : public macro::SystemVariables {
 public:
     explicit ExecutorSystemVariables(Executor& executor) : executor_(executor) {}
+    ExecutorSystemVariables(Executor& executor, const BlockContext& block) : executor_(executor), block_(&block) {}
     std::optional<macro::Value> read(int number) override;
     macro::WriteResult write(int number, macro::Value value) override;
     bool read_only(int number) const override;
@@ -123,6 +155,7 @@ public:
 
 private:
     Executor& executor_;
+    const BlockContext* block_ = nullptr;
 };
 
 class Executor {
@@ -136,20 +169,6 @@ public:
 private:
     friend class ExecutorSystemVariables;
 
-    struct Frame {
-        ProgramRef program;
-        std::uint32_t block = 0;          // next block to execute (index into the file's blocks)
-        std::uint32_t start_block = 0;    // where a repeat starts again (M98 Q: the label)
-        std::int64_t repeats_left = 1;    // M98 repeats still to run, this one included
-        bool macro = false;               // G65/G66 call: has its own local variables
-        bool modal_macro = false;         // called by G66: its moves do not call again
-        struct Loop {
-            std::uint32_t do_block;       // the WHILE/DO block
-            int label;                    // m of DO m / END m
-        };
-        std::vector<Loop> loops;          // open WHILE/DO loops, innermost last (at most 3)
-    };
-
     ProgramSet& programs_;
     const dialects::Dialect& dialect_;
     const Setup& setup_;
@@ -158,8 +177,10 @@ private:
     RunResult result_;
     RunGuard guard_;   // step, move and time limits (run_guard.hpp)
 
-    BlockScan scan_;             // the block being executed
-    BlockWords block_words_;     // its words (reused: no 1 KB zeroing per block)
+    // The scan and words of the block being run, reused from block to block (no allocation, no 1 KB
+    // zeroing per block): written by execute_block only, read through its BlockContext.
+    BlockScan scan_buffer_;
+    BlockWords words_buffer_;
     // Letter → axis index for the dialect's axis letters (axis_letters_: the mask of them).
     std::array<std::int8_t, 26> axis_of_{};
     std::uint32_t axis_letters_ = 0;
@@ -177,34 +198,33 @@ private:
     MachineMemory memory_;
     const Position& active_work_offset() const;    // G54–G59 or G54.1 Pn
     // G54.1 Pn / G154 Pn / G10 L20 Pn: n from 1 to the machine's count, else alarm PS0030 (and nullopt).
-    std::optional<int> additional_number(const ast::BlockView& view, std::optional<double> p);
+    std::optional<int> additional_number(const BlockContext& ctx, std::optional<double> p);
     bool stopped_ = false;
 
     // Block execution.
     void execute_block(Frame& frame);
-    void scan_block(const Frame& frame, const ast::BlockView& view);
-    bool execute_statements(Frame& frame, const ast::BlockView& view);
-    bool execute_statement(Frame& frame, const ast::BlockView& view, const ast::Statement& s);
-    bool start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call);
-    std::optional<std::vector<std::pair<int, macro::Value>>> macro_arguments(const Frame& frame, const ast::BlockView& view,
-                                                                             const ast::MacroCall& call);
-    bool push_macro_frame(const Frame& frame, const ast::BlockView& view, std::int64_t program, std::int64_t repeats,
+    void scan_block(const Frame& frame, const ast::BlockView& view, BlockScan& out) const;
+    bool execute_statements(Frame& frame, const BlockContext& ctx);
+    bool execute_statement(Frame& frame, const BlockContext& ctx, const ast::Statement& s);
+    bool start_macro_call(const BlockContext& ctx, const ast::MacroCall& call);
+    std::optional<std::vector<std::pair<int, macro::Value>>> macro_arguments(const BlockContext& ctx, const ast::MacroCall& call);
+    bool push_macro_frame(const BlockContext& ctx, std::int64_t program, std::int64_t repeats,
                           const std::vector<std::pair<int, macro::Value>>& arguments, bool modal);
     std::optional<std::uint32_t> find_end(const Frame& frame, std::uint32_t from, int label) const;
-    bool evaluate_words(const ast::BlockView& view, BlockWords& out);
+    bool evaluate_words(const BlockContext& ctx, BlockWords& out);
     macro::Options macro_options(bool address) const;
-    void remember_words(const ast::BlockView& view, const BlockWords& words);
-    void apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words);
-    void note_not_modelled(const ast::BlockView& view, const BlockWords& words);
-    void apply_tool_word(const ast::BlockView& view, int value);
-    void apply_modal_codes(const ast::BlockView& view);
+    void remember_words(const BlockContext& ctx);
+    void apply_feed_speed_tool(const BlockContext& ctx);
+    void note_not_modelled(const BlockContext& ctx);
+    void apply_tool_word(const BlockContext& ctx, int value);
+    void apply_modal_codes(const BlockContext& ctx);
     void update_flags();
-    bool apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words);
-    void apply_local_system(const ast::BlockView& view, const BlockWords& words, bool current_point_code);
-    void apply_data_input(const ast::BlockView& view, const BlockWords& words);
-    void apply_rotation(const ast::BlockView& view, const BlockWords& words);
-    bool apply_motion(const ast::BlockView& view, const BlockWords& words);
-    void thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
+    bool apply_coordinate_operations(const BlockContext& ctx);
+    void apply_local_system(const BlockContext& ctx, bool current_point_code);
+    void apply_data_input(const BlockContext& ctx);
+    void apply_rotation(const BlockContext& ctx);
+    bool apply_motion(const BlockContext& ctx);
+    void thread_move(const BlockContext& ctx, const Position& to);
     bool is_cycle(const dialects::CodeInfo& code) const;
     // What a code of the dialect is, as bits: its traits, computed once when the dialect is indexed
     // (dialects/functions.hpp `traits`, each with a bit of its own). A block ORs its codes' classes
@@ -226,34 +246,35 @@ private:
                                   kApproachOffsetCode = dialects::traits::approach_offset,   // seed 004 G43 approach
                                   kArcApproachCode = dialects::traits::arc_approach,   // seed 004 G12/G13
                                   kProgramTransformCode = dialects::traits::program_transform;   // G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp)
-    void note_drawing_outside_g01(const ast::BlockView& view);
-    std::optional<bool> apply_reference_motion(const ast::BlockView& view, const BlockWords& words);
-    void apply_dwell(const ast::BlockView& view, const BlockWords& words);
+    void note_drawing_outside_g01(const BlockContext& ctx);
+    std::optional<bool> apply_reference_motion(const BlockContext& ctx);
+    void apply_dwell(const BlockContext& ctx);
     // A P dwell word in seconds: ms, or s on ADV400 (semantics.md §8.2); G04 and the drilling cycles.
     double dwell_p_seconds(double p) const { return setup_.dwell_p_in_seconds ? p : p / 1000.0; }
     // The block's M codes of one phase (semantics.md §1.2): before its motion (step 3), or after it
     // (step 9: the codes with traits::after_motion, M05 M09 M00 M01 M02 M30 M98 M99).
     enum class MPhase { before_motion, after_motion };
-    void apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words, MPhase phase);
-    void call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    void apply_m_codes(Frame& frame, const BlockContext& ctx, MPhase phase);
+    void call_subprogram(const BlockContext& ctx);
     // [local calls] [Haas] M97 P: a label of the running program as a subroutine (executor_local_call.cpp).
-    void call_local_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    void call_local_subprogram(const BlockContext& ctx);
     // A call to a program the run cannot find that the machine keeps resident (RunOptions::resident):
     // said in a message and skipped; false when the program is not resident (alarm 078 follows).
-    bool skip_resident_call(const Frame& frame, const ast::BlockView& view, std::int64_t program, std::string_view how);
+    bool skip_resident_call(const BlockContext& ctx, std::int64_t program, std::string_view how);
     // [dialect variables] (executor_dialect_variables.cpp): nullopt/undefined when the range says so.
-    std::optional<macro::Value> read_dialect_variable(const dialects::VariableRange& range, int number);
-    macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value);
-    void main_program_pass(Frame& frame, const ast::BlockView& view, const Word* p);   // M99 in the main program
-    bool apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words);
+    std::optional<macro::Value> read_dialect_variable(const dialects::VariableRange& range, int number) const;
+    macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value,
+                                              macro::SystemVariables& system);
+    void main_program_pass(Frame& frame, const BlockContext& ctx, const Word* p);   // M99 in the main program
+    bool apply_block_words(Frame& frame, const BlockContext& ctx);
     void emit_state(const SourceRef& where);
 
     // Helpers.
     const LoadedFile& file_of(const Frame& f) const { return programs_.file(f.program.file); }
     bool reached(std::uint32_t file, std::uint32_t block) const;
     ast::Program program_of(const Frame& f) const;   // a copy: reading ahead may add programs
-    SourceRef source(const Frame& f, const ast::BlockView& view) const;
-    bool has_function(const ast::BlockView& view, dialects::FunctionId function) const;
+    SourceRef source(const Frame& f, const ast::BlockView& view) const;   // a block's place (the running one: ctx.source())
+    bool has_function(const BlockContext& ctx, dialects::FunctionId function) const;
     bool modal_active(dialects::FunctionId function) const;
     double axis_value(const BlockWords::Word& w, char letter) const;   // program units (mm, inch, deg)
     double increment(char letter) const;   // least input increment of the letter, program units
@@ -267,7 +288,8 @@ private:
     double axis_scale(std::size_t a) const { return state_.axis_scale(a); }
     double current_rpm(double x_diameter) const;
     // An event of this block at the current position (start = end), before its details are set.
-    Event event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const;
+    Event event_at(EventKind kind, const BlockContext& ctx) const { return event_at(kind, ctx.source()); }
+    Event event_at(EventKind kind, const SourceRef& where) const;
     // The event goes to the sink with its machine position and tool; rvalues are not copied.
     void emit(Event&& e) { emit(std::move(e), machine_position_of(e.end)); }
     // With its machine position already computed (move() has it: one offset sum per move, not two).
@@ -278,20 +300,21 @@ private:
     }
     int timed_tool_ = -1;                  // time_per_tool_s[timed_tool_] is *tool_time_ (map nodes stay)
     double* tool_time_ = nullptr;
-    void alarm(const Frame& f, const ast::BlockView& view, int number, std::string text);
+    void alarm(const BlockContext& ctx, int number, std::string text) { alarm(ctx.source(), number, std::move(text)); }
+    void alarm(const SourceRef& where, int number, std::string text);
     // A run bound reached (run_guard.hpp) while `where` runs, the tool at `at`: the alarm, and the
     // run stops.
     void limit_alarm(const SourceRef& where, const Position& at, LimitAlarm limit);
     // A cycle step that moved nothing counts against the move limit; false once the run stopped.
-    bool count_idle_move(const Frame& f, const ast::BlockView& view);
+    bool count_idle_move(const BlockContext& ctx);
     // Stored stroke check of the box low..high (work coordinates); false after an OT alarm.
-    bool within_soft_limits(const Position& low, const Position& high, const Frame& f, const ast::BlockView& view);
-    bool feed_commanded(bool moves, const Frame& f, const ast::BlockView& view);   // else alarm 011
-    void move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view);
+    bool within_soft_limits(const Position& low, const Position& high, const BlockContext& ctx);
+    bool feed_commanded(bool moves, const BlockContext& ctx);   // else alarm 011
+    void move(EventKind kind, const Position& to, const BlockContext& ctx);
     // Time of a feed move or thread (e.start/end/kind set): F per minute or per revolution, G96
     // rpm along the path (a line, or `arc` when not null), exact-stop acceleration.
     void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const;
-    void arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view);
+    void arc_move(bool cw, const Position& to, const BlockContext& ctx);
     motion::Plane plane() const { return state_.plane(); }
     // The block a jump to N`n` lands on in the frame's program: the first from the top, or with the
     // dialect's label_search = forward the first after the frame's current block, wrapping to the top.
@@ -302,59 +325,48 @@ private:
     Frame* current_frame() { return frames_.empty() ? nullptr : &frames_.back(); }
 
     // System variables (executor_system.cpp).
-    std::optional<macro::Value> read_system(int number);
+    std::optional<macro::Value> read_system(int number) const;
     bool system_modelled(int number) const;
-    macro::WriteResult write_system(int number, macro::Value value);
+    // A write of the block `ctx` (nullptr: a reader's hook, which writes nothing).
+    macro::WriteResult write_system(const BlockContext* ctx, int number, macro::Value value);
     bool system_read_only(int number) const;
     std::optional<std::pair<int, std::size_t>> additional_variable(int number) const;   // #7001.., #14001..
-
-    const ast::BlockView* view_ = nullptr;
-    const Frame* frame_ = nullptr;
 
     // --- canned cycles (executor_cycles.cpp; the expansions are in interpreter/cycles/) ----------
     friend class CycleContext;
     // A group-01 code cancels a modal drilling cycle ([FANUC]; cycles.md §10 "until G80 or a
     // group-01 code"); any cancel ends the cycle mode (the next cycle takes a new initial level).
-    void cancel_cycle_by_motion_code();
+    void cancel_cycle_by_motion_code(const BlockContext& ctx);
     struct ProfileBlocks {
         std::uint32_t first, last;   // block indices of N P and N Q
     };
-    std::optional<ProfileBlocks> cycle_profile_blocks_;   // of the cycle being run: G71–G73 go on after N Q
     // The cycle of the block (its code, or the modal one on a block with axis words) expanded into
     // moves; false when the block has no cycle. `to` is the block's target point.
-    bool apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to);
-    const dialects::CodeInfo* cycle_of_block(bool has_axis_words) const;
-    std::optional<cycles::Profile> cycle_profile(const ast::BlockView& view, std::string_view spelling, double p, double q);
-    bool read_profile_block(const ast::BlockView& block, dialects::FunctionId& motion, cycles::Profile& profile, std::uint32_t last);
-    bool read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
-                              cycles::Profile& profile, std::uint32_t last);
-    bool cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view);
+    bool apply_cycle(const BlockContext& ctx, bool has_axis_words, const Position& to);
+    const dialects::CodeInfo* cycle_of_block(const BlockContext& ctx, bool has_axis_words) const;
+    // Profile N P .. N Q of the cycle block `ctx` (its blocks into `blocks`); nullopt after an alarm.
+    std::optional<cycles::Profile> cycle_profile(const BlockContext& ctx, std::string_view spelling, double p, double q,
+                                                 std::optional<ProfileBlocks>& blocks);
+    bool read_profile_block(const BlockContext& block, BlockWords& words, dialects::FunctionId& motion, cycles::Profile& profile,
+                            std::uint32_t last);
+    bool read_profile_drawing(const BlockContext& block, const Position& to, cycles::Profile& profile, std::uint32_t last);
+    bool cycle_arc(bool cw, const Position& to, const Position& center, const BlockContext& ctx);
     motion::ArcOptions computed_arc_options() const;   // arcs kerf computed: radius check ≥ 0.1 µm
     // --- direct drawing (executor_drawing.cpp; the resolver is direct_drawing.hpp) ---------------
     motion::P2 plane_point(const Position& p) const;
     Position plane_position(motion::P2 p, const Position& like) const;
     // The resolver's view of a block whose words are `words`, programmed from `start` to `to`.
-    drawing::Block drawing_block(const ast::BlockView& view, const BlockWords& words, bool linear, const Position& start,
-                                 const Position& to);
-    // Reading a block ahead (direct drawing, compensation): the running block's scan, view,
-    // position, programmed point and modal flags come back when this goes out of scope.
+    drawing::Block drawing_block(const BlockContext& ctx, bool linear, const Position& start, const Position& to);
+    // Reading a block ahead (direct drawing, compensation): the running block's position,
+    // programmed point and modal flags come back when this goes out of scope.
     struct LookAheadScope {
         Executor& ex;
-        BlockScan scan;
-        const ast::BlockView* view;
         Position position;
         std::optional<Position> programmed;
         ModalFlags flags;
-        LookAheadScope(Executor& e, const Frame& f, const ast::BlockView& next, std::uint32_t index)
-            : ex(e), scan(e.scan_), view(e.view_), position(e.state_.position), programmed(e.state_.programmed), flags(e.state_.flags) {
-            ex.view_ = nullptr;
-            ex.scan_block(f, next);
-            ex.scan_.block = index;
-            ex.view_ = &next;
-        }
+        explicit LookAheadScope(Executor& e)
+            : ex(e), position(e.state_.position), programmed(e.state_.programmed), flags(e.state_.flags) {}
         ~LookAheadScope() {
-            ex.scan_ = scan;
-            ex.view_ = view;
             ex.state_.position = position;
             ex.state_.programmed = programmed;
             ex.state_.flags = flags;
@@ -364,30 +376,28 @@ private:
     };
     // The next code block after block `after` (up to block `last` when given) as the resolver
     // sees it, programmed from `from`; nullopt when there is none. Restores the running scan.
-    std::optional<drawing::Block> look_ahead(std::uint32_t after, std::optional<std::uint32_t> last, const Position& from);
+    std::optional<drawing::Block> look_ahead(const BlockContext& ctx, std::optional<std::uint32_t> last, const Position& from);
     // The moves of a direct-drawing block from the programmed point `start` (the tool at `tool`);
     // nullopt after an alarm. `last`: the end of a cycle profile the look-ahead stays in.
-    std::optional<drawing::Result> resolve_drawing(const ast::BlockView& view, const BlockWords& words, const Position& start,
-                                                   const Position& tool, const Position& to, std::optional<std::uint32_t> last);
+    std::optional<drawing::Result> resolve_drawing(const BlockContext& ctx, const Position& start, const Position& tool,
+                                                   const Position& to, std::optional<std::uint32_t> last);
     // A G01 block with direct-drawing words, run: its line, chamfer or fillet (executor_drawing.cpp).
-    bool draw_block(const ast::BlockView& view, const BlockWords& words, const Position& start, const Position& to);
+    bool draw_block(const BlockContext& ctx, const Position& start, const Position& to);
     Position programmed_target(const BlockWords& words, bool& moves);   // target_position from state_.programmed
     // --- G45–G48 position offsets (executor_offsets.cpp, semantics.md §9.3) ----------------------
-    std::optional<int> position_offset_factor() const;   // ±1 / ±2 when the block has G45–G48
+    std::optional<int> position_offset_factor(const BlockContext& ctx) const;   // ±1 / ±2 when the block has G45–G48
     double d_register() const;                             // the modal D's value, program units
-    bool position_offset_move(const ast::BlockView& view, const BlockWords& words, int factor, const Position& start,
-                              const Position& to);
-    bool position_offset_arc(const ast::BlockView& view, const BlockWords& words, bool cw, double change,
-                             const Position& start, const Position& to);
-    bool drawing_words(const ast::BlockView& view) const { return scan_.comma_words || scan_.direct_drawing; }
+    bool position_offset_move(const BlockContext& ctx, int factor, const Position& start, const Position& to);
+    bool position_offset_arc(const BlockContext& ctx, bool cw, double change, const Position& start, const Position& to);
+    static bool drawing_words(const BlockContext& ctx) { return ctx.scan.comma_words || ctx.scan.direct_drawing; }
     // --- cutter / nose radius compensation G40–G42 (executor_compensation.cpp, semantics.md §5,
     // §6). While the tool stands at an offset point, state_.position is the tool (centre, or the
     // imaginary tip on a lathe), state_.programmed the programmed point and state_.comp_path the point of the
     // programmed path (they differ past a direct-drawing corner).
     bool compensating() const { return state_.comp_side != 0 || state_.radius_comp.engaged(); }
     // The block's motion under compensation (or its G40–G42 without motion); true when it moved.
-    bool compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves);
-    int comp_side_of_block(int current) const;
+    bool compensate_motion(const BlockContext& ctx, const Position& to, bool moves);
+    int comp_side_of_block(const BlockContext& ctx, int current) const;
     bool full_circle(const BlockWords& words) const;          // the side the block's G40–G42 set
     double comp_radius(const BlockWords& words) const;  // mm: D register (mill), nose radius (lathe)
     motion::P2 tip_offset() const;                       // lathe: nose centre → imaginary tip
@@ -397,54 +407,50 @@ private:
     };
     // The block's programmed elements from `start` (a line, an arc, or the direct-drawing pieces);
     // `quiet` (read ahead): no message or alarm, nullopt instead.
-    std::optional<std::vector<CompPiece>> comp_pieces(const ast::BlockView& view, const BlockWords& words,
-                                                      const Position& start, const Position& to, bool quiet,
-                                                      Position& programmed_end);
+    std::optional<std::vector<CompPiece>> comp_pieces(const BlockContext& ctx, const Position& start, const Position& to,
+                                                      bool quiet, Position& programmed_end);
     // The next motion block's first element (look-ahead; up to two blocks without motion between).
-    std::optional<compensation::Programmed> comp_look_ahead(std::uint32_t after, const Position& from);
+    std::optional<compensation::Programmed> comp_look_ahead(const BlockContext& ctx, const Position& from);
     std::optional<compensation::Step> comp_step(const compensation::Programmed& current,
-                                                const std::optional<compensation::Programmed>& next,
-                                                const ast::BlockView& view);
-    bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
-                        const ast::BlockView& view);
+                                                const std::optional<compensation::Programmed>& next, const BlockContext& ctx);
+    bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like, const BlockContext& ctx);
     // A G70 finishing path under G41/G42: each element offset with the next one as look-ahead.
-    bool compensate_path(const std::vector<cycles::ProfileMove>& path, const ast::BlockView& view);
+    bool compensate_path(const std::vector<cycles::ProfileMove>& path, const BlockContext& ctx);
     void leave_offset_for_cycle();   // a cycle's own move under G41/G42: the offset is left (executor_cycles.cpp)
     // --- G43/G44/G49 tool length offsets (executor_length.cpp, semantics.md §7, §2.7) ----------
     // The H register's length (geometry + wear) on Z, +G43 / −G44; machine_offset() adds it. The
     // work coordinates stay: the machine position shifts (like a lathe T word).
-    void take_up_length_offset(const ast::BlockView& view, const BlockWords& words);   // if the block moves Z
-    void take_up_length_offset(const ast::BlockView& view);
-    void apply_length_offset(const ast::BlockView& view, const BlockWords& words);
+    void take_up_length_offset_with_z(const BlockContext& ctx);   // if the block moves Z
+    void take_up_length_offset(const BlockContext& ctx);
+    void apply_length_offset(const BlockContext& ctx);
     bool axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const;   // seed-004 G43/G44
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
     bool in_slowdown_ = false;              // the pieces of a split move are not split again
     double slowdown_time_factor_ = 1.0;     // time_feed_move: a ramp's time over the step's
-    void apply_corner_slowdown(const ast::BlockView& view, const BlockWords& words);
+    void apply_corner_slowdown(const BlockContext& ctx);
     // A G01 move split before its end into the full-feed and the reduced-feed piece; false when
     // the move is not slowed (move() then runs it whole).
-    bool slowed_move(const Position& to, const Frame& f, const ast::BlockView& view);
-    bool approach_offset_move(const ast::BlockView& view, const Position& to);
+    bool slowed_move(const Position& to, const BlockContext& ctx);
+    bool approach_offset_move(const BlockContext& ctx, const Position& to);
     // G43/G44 without H (a length offset otherwise): G43's approach, or what the seed leaves
     // open said; nullopt when the block then runs as usual.
-    std::optional<bool> axial_offset_motion(const ast::BlockView& view, const BlockWords& words, const Position& to,
-                                            bool moves);
+    std::optional<bool> axial_offset_motion(const BlockContext& ctx, const Position& to, bool moves);
     // G12/G13 X Y: a quarter arc from the programmed point to X Y, run as a G03 (G41, G40) or G02
     // (G42) block with its centre words; true when it moved.
-    bool arc_approach_move(const ast::BlockView& view, const BlockWords& words, const Position& to);
+    bool arc_approach_move(const BlockContext& ctx, const Position& to);
     // The block's words with the centre words of that arc from `from`; `ccw` its direction.
-    BlockWords arc_approach_words(const BlockWords& words, const Position& from, const Position& to, bool& ccw) const;
+    BlockWords arc_approach_words(const BlockContext& ctx, const Position& from, const Position& to, bool& ccw) const;
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
     motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
-    void emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view);
+    void emit_arc(const motion::Arc& arc, const Position& to, const BlockContext& ctx);
     // --- [transforms] G15/G16 polar coordinate command, G50/G51 scaling, G50.1/G51.1 mirror image
     // (executor_transforms.cpp; the geometry with G68 in transforms.hpp) -----------------------
     ProgramFrame program_frame() const { return state_.program_frame(); }
-    bool apply_program_transforms(const ast::BlockView& view, const BlockWords& words);   // false: no motion
-    void start_scaling(const ast::BlockView& view, const BlockWords& words);
+    bool apply_program_transforms(const BlockContext& ctx);   // false: no motion
+    void start_scaling(const BlockContext& ctx);
     double magnification(const Word& w) const;   // a P/I/J/K word: with a point the factor, else units
-    void set_mirror(const ast::BlockView& view, const BlockWords& words, bool on);
-    void note_transform(const ast::BlockView& view, std::string text);   // a coordinate_change event
+    void set_mirror(const BlockContext& ctx, bool on);
+    void note_transform(const BlockContext& ctx, std::string text);   // a coordinate_change event
     // The plane's two axis words of a G16 block as radius and angle into `to` ([FANUC] rules there).
     void polar_target(const BlockWords& words, const Position& start, Position& to) const;
     // --- [polar] G112/G113 polar and G107 cylindrical interpolation (polar.cpp, cycles.md §18–§19) --
@@ -454,25 +460,25 @@ private:
     };
     // The block under a mode (or starting/ending one): true/false = moved or not, handled here;
     // nullopt = the block runs as usual (no mode, or G113 / G07.1 C0 just ended it).
-    std::optional<bool> apply_plane_transform(const ast::BlockView& view, const BlockWords& words);
-    std::optional<std::string> improper_in_transform(const ast::BlockView& view) const;
+    std::optional<bool> apply_plane_transform(const BlockContext& ctx);
+    std::optional<std::string> improper_in_transform(const BlockContext& ctx) const;
     void start_polar(const std::string& spelling);
-    bool start_polar_with_c(const ast::BlockView& view, const BlockWords& words, const std::string& spelling);
-    bool cylindrical_code(const ast::BlockView& view, const BlockWords& words, const std::string& spelling);
-    bool transform_move(const ast::BlockView& view, const BlockWords& words);
+    bool start_polar_with_c(const BlockContext& ctx, const std::string& spelling);
+    bool cylindrical_code(const BlockContext& ctx, const std::string& spelling);
+    bool transform_move(const BlockContext& ctx);
     motion::ArcResult transform_arc(bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const;
-    void warn_rotary_speed(const ast::BlockView& view, const std::vector<motion::MappedPoint>& pieces, motion::P2 start);
-    void transform_piece(EventKind kind, const Position& to, double length_mm, const ast::BlockView& view);
+    void warn_rotary_speed(const BlockContext& ctx, const std::vector<motion::MappedPoint>& pieces, motion::P2 start);
+    void transform_piece(EventKind kind, const Position& to, double length_mm, const BlockContext& ctx);
     void run_plane_path(EventKind kind, const std::function<motion::P2(double)>& path, const PathSpan& span,
-                        const ast::BlockView& view);
-    void transform_arc_alarm(const ast::BlockView& view, const motion::ArcResult& geometry);
+                        const BlockContext& ctx);
+    void transform_arc_alarm(const BlockContext& ctx, const motion::ArcResult& geometry);
     static motion::P2 arc_point(const motion::Arc& arc, double u);
     // G41/G42 in the mode (polar_compensation.cpp): the element of the plane, the compensated block.
-    std::optional<motion::Element> transform_element(const BlockWords& words, const Position& start, const Position& to,
+    std::optional<motion::Element> transform_element(const BlockContext& ctx, const Position& start, const Position& to,
                                                      bool quiet);
-    bool transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves);
-    void run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to, const ast::BlockView& view);
-    bool transform_switch_allowed(const ast::BlockView& view, const std::string& spelling);
+    bool transform_compensated(const BlockContext& ctx, const Position& to, bool moves);
+    void run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to, const BlockContext& ctx);
+    bool transform_switch_allowed(const BlockContext& ctx, const std::string& spelling);
     motion::P2 transform_point(const Position& p) const;
     double plane_mm(std::size_t axis, double value) const;      // program value → geometric mm (X radius)
     double program_value(std::size_t axis, double mm) const;    // and back

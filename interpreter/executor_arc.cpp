@@ -36,36 +36,35 @@ motion::ArcResult Executor::arc_geometry(bool cw, const Position& from, const Po
     return motion::arc_from_center(start, end, plane(), dir, frame.vector_to_work(offset), options);
 }
 
-void Executor::arc_move(bool cw, const Position& to, const BlockWords& words, const ast::BlockView& view) {
-    const Frame& f = *frame_;
+void Executor::arc_move(bool cw, const Position& to, const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const motion::ArcResult arc = arc_geometry(cw, state_.position, to, words);
     if (!arc) {
         const motion::ArcError& e = arc.error();
         if (e.code == motion::ArcErrorCode::r_zero_chord) {
             // FANUC runs an R arc whose end is its start as a 0° arc: no motion (semantics.md §3).
-            Event m = event_at(EventKind::message, f, view);
+            Event m = event_at(EventKind::message, ctx);
             m.text = "arc with R whose end point is its start point: no motion (a 0° arc)";
             emit(m);
             return;
         }
-        alarm(f, view, e.fanuc_alarm,
+        alarm(ctx, e.fanuc_alarm,
               fmt::format("arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(e.code), e.found, e.allowed));
         return;
     }
-    emit_arc(arc.arc(), to, view);
+    emit_arc(arc.arc(), to, ctx);
 }
 
-void Executor::emit_arc(const motion::Arc& arc, const Position& to, const ast::BlockView& view) {
-    const Frame& f = *frame_;
-    if (!feed_commanded(motion::length(arc) > 0, f, view)) return;
+void Executor::emit_arc(const motion::Arc& arc, const Position& to, const BlockContext& ctx) {
+    if (!feed_commanded(motion::length(arc) > 0, ctx)) return;
     const double scale = unit_scale();
     const motion::Box box = motion::bounds(arc);
     if (!within_soft_limits(from_geometric(box.min, to, setup_.diameter_x, scale),
-                            from_geometric(box.max, to, setup_.diameter_x, scale), f, view))
+                            from_geometric(box.max, to, setup_.diameter_x, scale), ctx))
         return;
     Event e;
     e.kind = arc.cw ? EventKind::arc_cw : EventKind::arc_ccw;
-    e.source = source(f, view);
+    e.source = ctx.source();
     e.start = state_.position;
     e.end = to;
     e.center = from_geometric(arc.center, to, setup_.diameter_x, scale);

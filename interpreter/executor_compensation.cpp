@@ -26,9 +26,9 @@ bool Executor::full_circle(const BlockWords& words) const {
     return false;
 }
 
-int Executor::comp_side_of_block(int current) const {
+int Executor::comp_side_of_block(const BlockContext& ctx, int current) const {
     int side = current;
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || !(code_class_of(*c.info) & kRadiusCompCode)) continue;
         const dialects::FunctionId f = c.info->function;
         // semantics.md §12.12; [transforms] a mirror of one plane axis swaps G41 and G42 [FANUC].
@@ -69,31 +69,32 @@ Programmed with_comp(const motion::Element& path, int side, double radius) {
 
 }  // namespace
 
-std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast::BlockView& view, const BlockWords& words,
+std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const BlockContext& ctx,
                                                                        const Position& start, const Position& to,
                                                                        bool quiet, Position& programmed_end) {
-    const int side = comp_side_of_block(state_.comp_side);
+    const BlockWords& words = ctx.words;
+    const int side = comp_side_of_block(ctx, state_.comp_side);
     const double radius = comp_radius(words);
     std::vector<CompPiece> pieces;
     programmed_end = to;
     const dialects::FunctionId motion = state_.flags.motion;
     if (state_.transform) {   // [polar] the Cartesian plane of G112/G107 (polar_compensation.cpp)
-        const auto element = transform_element(words, start, to, quiet);
+        const auto element = transform_element(ctx, start, to, quiet);
         if (!element) return std::nullopt;
         pieces.push_back({with_comp(*element, side, radius), to});
         return pieces;
     }
-    if (motion == fn::linear && drawing_words(view) && quiet) {
+    if (motion == fn::linear && drawing_words(ctx) && quiet) {
         // Read ahead: the direction towards the named end is enough for the corner (a corner
         // word or an angle-only block is resolved when the block runs).
         if (motion::norm(plane_point(to) - plane_point(start)) <= 1e-9) return std::nullopt;
         pieces.push_back({with_comp({plane_point(start), plane_point(to), false, {}, true}, side, radius), to});
         return pieces;
     }
-    if (motion == fn::linear && drawing_words(view)) {
+    if (motion == fn::linear && drawing_words(ctx)) {
         const Position tool = state_.position;
         state_.position = start;   // the resolver measures from the programmed path
-        const auto r = resolve_drawing(view, words, state_.programmed.value_or(start), start, to, std::nullopt);
+        const auto r = resolve_drawing(ctx, state_.programmed.value_or(start), start, to, std::nullopt);
         state_.position = tool;
         if (!r) return std::nullopt;
         motion::P2 from = plane_point(start);
@@ -110,13 +111,13 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
         if (!arc && quiet) return std::nullopt;   // its alarm comes when the block runs
         if (!arc && arc.error().code == motion::ArcErrorCode::r_zero_chord) {
             // FANUC runs an R arc whose end is its start as a 0° arc (semantics.md §3, arc_move).
-            Event m = event_at(EventKind::message, *frame_, view);
+            Event m = event_at(EventKind::message, ctx);
             m.text = "arc with R whose end point is its start point: no motion (a 0° arc)";
             emit(m);
             return pieces;
         }
         if (!arc) {
-            alarm(*frame_, view, arc.error().fanuc_alarm,
+            alarm(ctx, arc.error().fanuc_alarm,
                   fmt::format("arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code), arc.error().found,
                               arc.error().allowed));
             return std::nullopt;
@@ -129,38 +130,42 @@ std::optional<std::vector<Executor::CompPiece>> Executor::comp_pieces(const ast:
     return pieces;
 }
 
-std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const Position& from) {
-    const Frame& f = *frame_;
+std::optional<Programmed> Executor::comp_look_ahead(const BlockContext& ctx, const Position& from) {
+    const Frame& f = ctx.frame;
     const LoadedFile& file = file_of(f);
     // [FANUC] up to two blocks without motion in the plane between (semantics.md §5).
     int idle = 0;
-    for (std::uint32_t b = after + 1; file.in_program(f.program.program, b) && idle <= 2; ++b) {
+    for (std::uint32_t b = ctx.index() + 1; file.in_program(f.program.program, b) && idle <= 2; ++b) {
         const ast::BlockView next = file.block(b);
         if (next.block().kind != ast::BlockKind::code) continue;
         if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
         std::optional<Programmed> out;
-        const LookAheadScope guard(*this, f, next, b);
-        // A cycle, a call or a return ends the look-ahead: the element then ends perpendicular.
-        bool stop = scan_.macro_call || (scan_.classes & kCycleCode);
-        for (const ast::CodeRef& c : scan_.m)
-            stop |= c.info && (c.info->function == fn::subprogram_call || c.info->function == fn::subprogram_return);
+        BlockScan scan;
+        scan_block(f, next, scan);
+        scan.block = b;
         BlockWords words;
-        if (!stop && evaluate_words(next, words)) {
-            for (const ast::CodeRef& c : scan_.g)
+        const BlockContext ahead{f, next, scan, words};
+        const LookAheadScope guard(*this);
+        // A cycle, a call or a return ends the look-ahead: the element then ends perpendicular.
+        bool stop = scan.macro_call || (scan.classes & kCycleCode);
+        for (const ast::CodeRef& c : scan.m)
+            stop |= c.info && (c.info->function == fn::subprogram_call || c.info->function == fn::subprogram_return);
+        if (!stop && evaluate_words(ahead, words)) {
+            for (const ast::CodeRef& c : scan.g)
                 if (c.info && c.info->has(dialects::traits::motion_group)) state_.flags.motion = c.info->function;
             state_.position = from;
             state_.programmed = from;
             bool moves = false;
             const Position to = target_position(words, moves);
-            if ((scan_.classes & kArcApproachCode) && moves) {   // seed-004 G12/G13 (executor_iso_specials.cpp)
+            if ((scan.classes & kArcApproachCode) && moves) {   // seed-004 G12/G13 (executor_iso_specials.cpp)
                 bool ccw = true;
-                words = arc_approach_words(words, from, to, ccw);
+                words = arc_approach_words(ahead, from, to, ccw);
                 state_.flags.motion = ccw ? fn::circular_ccw : fn::circular_cw;
             }
             if (moves || full_circle(words)) {
                 const int side_before = state_.comp_side;
                 Position end;
-                const auto pieces = comp_pieces(next, words, from, to, true, end);
+                const auto pieces = comp_pieces(ahead, from, to, true, end);
                 state_.comp_side = side_before;
                 if (pieces && !pieces->empty()) out = pieces->front().programmed;
                 stop = true;
@@ -177,11 +182,11 @@ std::optional<Programmed> Executor::comp_look_ahead(std::uint32_t after, const P
 // The state machine's moves for `current`; nullopt after its alarm (034, 041), which forgets the
 // compensation.
 std::optional<compensation::Step> Executor::comp_step(const Programmed& current, const std::optional<Programmed>& next,
-                                                      const ast::BlockView& view) {
+                                                      const BlockContext& ctx) {
     compensation::Step step = state_.radius_comp.step(current, next);
     if (!step.alarm) return step;
     state_.radius_comp.reset();
-    alarm(*frame_, view, step.alarm->number, step.alarm->text);
+    alarm(ctx, step.alarm->number, step.alarm->text);
     return std::nullopt;
 }
 
@@ -208,7 +213,7 @@ std::vector<double> move_lengths(const compensation::Step& step, motion::P2 from
 }  // namespace
 
 bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like,
-                              const ast::BlockView& view) {
+                              const BlockContext& ctx) {
     const motion::P2 tip = tip_offset();
     // Compensation acts in the plane (semantics.md §6); the axes off the plane (a helix's Z) go from
     // the tool's start to the block's end along the whole path, shared by length: a connecting move
@@ -226,20 +231,21 @@ bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool c
         // The cancel's last move ends on the programmed point itself (no tip shift).
         const motion::P2 shift = cancels && i + 1 == step.moves.size() ? motion::P2{} : tip;
         const Position end = plane_position(m.end + shift, off_plane);
-        if (m.arc) cycle_arc(!m.ccw, end, plane_position(m.center + shift, off_plane), view);
-        else move(rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+        if (m.arc) cycle_arc(!m.ccw, end, plane_position(m.center + shift, off_plane), ctx);
+        else move(rapid ? EventKind::rapid : EventKind::linear, end, ctx);
         if (stopped_) return false;
     }
     return true;
 }
 
-bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves_words) {
+bool Executor::compensate_motion(const BlockContext& ctx, const Position& to, bool moves_words) {
+    const BlockWords& words = ctx.words;
     bool moves = moves_words;
     const Position start = state_.comp_path.value_or(state_.position);
     const bool circle = full_circle(words);
-    const int side = comp_side_of_block(state_.comp_side);
+    const int side = comp_side_of_block(ctx, state_.comp_side);
     // An angle-only block of direct drawing moves without axis words (semantics.md §10.1).
-    moves = moves || (drawing_words(view) && state_.flags.motion == fn::linear);
+    moves = moves || (drawing_words(ctx) && state_.flags.motion == fn::linear);
     const bool immediate = !moves && !circle && side != 0 && !state_.radius_comp.engaged() && setup_.comp_shift_without_motion;
     if (!moves && !circle && !immediate) {
         state_.comp_side = side;   // G41/G42/G40 without motion: in force from the next move
@@ -249,11 +255,11 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
     // starts or goes on with the next move in the plane ([FANUC]; semantics.md §5 "blocks
     // without motion in the plane").
     const bool arc = state_.flags.motion == fn::circular_cw || state_.flags.motion == fn::circular_ccw;
-    const bool in_plane = arc || drawing_words(view) || motion::norm(plane_point(to) - plane_point(start)) > 1e-9;
+    const bool in_plane = arc || drawing_words(ctx) || motion::norm(plane_point(to) - plane_point(start)) > 1e-9;
     if (!in_plane && !immediate) {
         state_.comp_side = side;
         const Position end = plane_position(plane_point(state_.position), to);
-        move(state_.flags.motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+        move(state_.flags.motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, ctx);
         if (state_.radius_comp.engaged()) {
             state_.comp_path = plane_position(plane_point(start), to);
             state_.programmed = to;
@@ -261,19 +267,19 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
         return true;
     }
     Position programmed_end = to;
-    const auto pieces = comp_pieces(view, words, start, to, false, programmed_end);
+    const auto pieces = comp_pieces(ctx, start, to, false, programmed_end);
     state_.comp_side = side;
     if (!pieces || pieces->empty()) return false;
     const bool rapid = state_.flags.motion == fn::rapid;
     for (std::size_t i = 0; i < pieces->size(); ++i) {
         const Programmed& cur = (*pieces)[i].programmed;
         const std::optional<Programmed> next = i + 1 < pieces->size() ? std::optional<Programmed>((*pieces)[i + 1].programmed)
-                                                                         : comp_look_ahead(scan_.block, programmed_end);
+                                                                         : comp_look_ahead(ctx, programmed_end);
         if (stopped_) return false;   // the block read ahead raised an alarm
         const bool cancels = state_.radius_comp.engaged() && cur.side == 0;
-        const auto step = comp_step(cur, next, view);
+        const auto step = comp_step(cur, next, ctx);
         if (!step) return false;
-        if (!run_comp_moves(*step, rapid, cancels, (*pieces)[i].end, view)) return true;
+        if (!run_comp_moves(*step, rapid, cancels, (*pieces)[i].end, ctx)) return true;
     }
     if (state_.radius_comp.engaged()) {
         state_.comp_path = pieces->empty() ? start : pieces->back().end;
@@ -290,8 +296,8 @@ bool Executor::compensate_motion(const ast::BlockView& view, const BlockWords& w
 // the profile"; semantics.md §5): the finishing path, the return to A included, through the same
 // state machine as programmed blocks, each element with the following one as its look-ahead. The
 // F of a profile block is in effect for its own moves.
-bool Executor::compensate_path(const std::vector<cycles::ProfileMove>& path, const ast::BlockView& view) {
-    const double radius = comp_radius(block_words_);
+bool Executor::compensate_path(const std::vector<cycles::ProfileMove>& path, const BlockContext& ctx) {
+    const double radius = comp_radius(ctx.words);
     std::vector<Programmed> elements;
     Position from = state_.comp_path.value_or(state_.position);
     for (const cycles::ProfileMove& m : path) {
@@ -306,10 +312,10 @@ bool Executor::compensate_path(const std::vector<cycles::ProfileMove>& path, con
         std::optional<Programmed> next;
         for (std::size_t k = i + 1; k < elements.size() && !next; ++k)
             if (elements[k].moves()) next = elements[k];
-        const auto step = comp_step(elements[i], next, view);
+        const auto step = comp_step(elements[i], next, ctx);
         if (!step) return false;
         if (path[i].feed) state_.feed = *path[i].feed;
-        if (!run_comp_moves(*step, path[i].kind == EventKind::rapid, false, path[i].end, view)) return false;
+        if (!run_comp_moves(*step, path[i].kind == EventKind::rapid, false, path[i].end, ctx)) return false;
     }
     state_.comp_path = path.back().end;
     state_.programmed = path.back().end;

@@ -22,9 +22,11 @@ bool Executor::is_cycle(const dialects::CodeInfo& code) const { return code_clas
 
 class CycleContext final : public cycles::Context {
 public:
-    CycleContext(Executor& ex, const dialects::CodeInfo& code, const ast::BlockView& view, const BlockWords& words,
-                 bool has_end, const Position& end)
-        : ex_(ex), code_(code), view_(view), words_(words), has_end_(has_end), end_(end) {}
+    CycleContext(Executor& ex, const dialects::CodeInfo& code, const BlockContext& block, bool has_end, const Position& end)
+        : ex_(ex), code_(code), block_(block), words_(block.words), has_end_(has_end), end_(end) {}
+
+    // The profile blocks N P .. N Q the cycle read, if it read one: G71–G73 go on after N Q.
+    const std::optional<Executor::ProfileBlocks>& profile_blocks() const { return profile_blocks_; }
 
     dialects::FunctionId function() const override { return code_.function; }
     bool thread_chamfer() const override { return ex_.state_.thread_chamfer; }
@@ -37,7 +39,7 @@ public:
     }
     std::optional<int> m_word() const override {
         if (const auto* w = words_.get('M')) return static_cast<int>(std::lround(w->value));   // a parameter M (G384)
-        for (const ast::CodeRef& c : ex_.scan_.m)
+        for (const ast::CodeRef& c : block_.scan.m)
             if (c.key) return static_cast<int>(*c.key / 10);
         return std::nullopt;
     }
@@ -66,7 +68,7 @@ public:
         return w->value * (ex_.state_.flags.inch ? metric / 10.0 : metric);
     }
     bool repeat() const override {
-        for (const std::vector<ast::CodeRef>* codes : {&ex_.scan_.g, &ex_.scan_.m})
+        for (const std::vector<ast::CodeRef>* codes : {&block_.scan.g, &block_.scan.m})
             for (const ast::CodeRef& c : *codes)
                 if (c.info == &code_) return false;
         return true;
@@ -94,7 +96,9 @@ public:
     cycles::DrillModal& drill() override { return ex_.state_.drill; }
     cycles::RigidTapModal& rigid_tap() override { return ex_.state_.rigid_tap; }
     Position machine_offset() const override { return ex_.machine_offset(); }
-    std::optional<cycles::Profile> profile(double p, double q) override { return ex_.cycle_profile(view_, code_.spelling, p, q); }
+    std::optional<cycles::Profile> profile(double p, double q) override {
+        return ex_.cycle_profile(block_, code_.spelling, p, q, profile_blocks_);
+    }
 
     bool rapid(const Position& to) override { return move(EventKind::rapid, to); }
     bool feed(const Position& to, std::optional<double> f) override {
@@ -103,12 +107,12 @@ public:
     }
     bool arc(bool cw, const Position& to, const Position& center, std::optional<double> f) override {
         if (f) ex_.state_.feed = *f;
-        const bool ok = ex_.cycle_arc(cw, to, center, view_);
+        const bool ok = ex_.cycle_arc(cw, to, center, block_);
         ex_.leave_offset_for_cycle();
         return ok;
     }
     bool finishing_path(const std::vector<cycles::ProfileMove>& path) override {
-        if (ex_.compensating()) return ex_.compensate_path(path, view_);   // executor_compensation.cpp
+        if (ex_.compensating()) return ex_.compensate_path(path, block_);   // executor_compensation.cpp
         for (const cycles::ProfileMove& m : path) {
             const bool ok = m.kind == EventKind::rapid ? rapid(m.end)
                             : (m.kind == EventKind::arc_cw || m.kind == EventKind::arc_ccw)
@@ -133,27 +137,27 @@ public:
         ex_.state_.flags.per_revolution = saved_per_rev;
         return ok;
     }
-    void tool(int code) override { ex_.apply_tool_word(view_, code); }
+    void tool(int code) override { ex_.apply_tool_word(block_, code); }
     void dwell(double seconds) override {
-        Event e = ex_.event_at(EventKind::dwell, *ex_.frame_, view_);
+        Event e = ex_.event_at(EventKind::dwell, block_);
         e.time_s = std::max(0.0, seconds);
         ex_.emit(e);
     }
     void m_code(int number) override {
-        Event e = ex_.event_at(EventKind::message, *ex_.frame_, view_);
+        Event e = ex_.event_at(EventKind::message, block_);
         e.code = number;
         e.text = fmt::format("M{} (issued by {})", number, code_.spelling);
         ex_.emit(e);
     }
     void message(std::string text) override {
-        Event e = ex_.event_at(EventKind::message, *ex_.frame_, view_);
+        Event e = ex_.event_at(EventKind::message, block_);
         e.text = std::move(text);
         ex_.emit(e);
     }
-    void alarm(int number, std::string text) override { ex_.alarm(*ex_.frame_, view_, number, std::move(text)); }
+    void alarm(int number, std::string text) override { ex_.alarm(block_, number, std::move(text)); }
     void alarm_at(std::uint32_t block, int number, std::string text) override {
-        const ast::BlockView at = ex_.file_of(*ex_.frame_).block(block);
-        ex_.alarm(*ex_.frame_, at, number, std::move(text));
+        const ast::BlockView at = ex_.file_of(block_.frame).block(block);
+        ex_.alarm(ex_.source(block_.frame, at), number, std::move(text));
     }
 
 private:
@@ -161,24 +165,25 @@ private:
         if (ex_.stopped_) return false;
         // Nothing to move; it still counts as a move, so that a cycle whose step vanishes (a peck
         // below the resolution of a double far from zero) cannot loop without end.
-        if (to == ex_.state_.position && kind != EventKind::thread) return ex_.count_idle_move(*ex_.frame_, view_);
-        ex_.move(kind, to, *ex_.frame_, view_);
+        if (to == ex_.state_.position && kind != EventKind::thread) return ex_.count_idle_move(block_);
+        ex_.move(kind, to, block_);
         ex_.leave_offset_for_cycle();
         return !ex_.stopped_;
     }
 
     Executor& ex_;
     const dialects::CodeInfo& code_;
-    const ast::BlockView& view_;
+    const BlockContext& block_;
     const BlockWords& words_;
     bool has_end_;
     Position end_;
+    std::optional<Executor::ProfileBlocks> profile_blocks_;
 };
 
-const dialects::CodeInfo* Executor::cycle_of_block(bool has_axis_words) const {
+const dialects::CodeInfo* Executor::cycle_of_block(const BlockContext& ctx, bool has_axis_words) const {
     const dialects::CodeInfo* cycle = nullptr;
-    if (scan_.classes & kCycleCode) {   // the block names a cycle (most blocks do not)
-        for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+    if (ctx.scan.classes & kCycleCode) {   // the block names a cycle (most blocks do not)
+        for (const std::vector<ast::CodeRef>* codes : {&ctx.scan.g, &ctx.scan.m})
             for (const ast::CodeRef& c : *codes)
                 if (c.info && is_cycle(*c.info)) cycle = c.info;
     }
@@ -187,13 +192,12 @@ const dialects::CodeInfo* Executor::cycle_of_block(bool has_axis_words) const {
     return state_.flags.motion_cycle ? state_.flags.motion_cycle : state_.flags.modal_cycle;
 }
 
-bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, bool has_axis_words, const Position& to) {
-    const dialects::CodeInfo* cycle = cycle_of_block(has_axis_words);
+bool Executor::apply_cycle(const BlockContext& ctx, bool has_axis_words, const Position& to) {
+    const dialects::CodeInfo* cycle = cycle_of_block(ctx, has_axis_words);
     if (!cycle) return false;
-    cycle_profile_blocks_.reset();
-    CycleContext context(*this, *cycle, view, words, has_axis_words, to);
+    CycleContext context(*this, *cycle, ctx, has_axis_words, to);
     if (!cycles::expand(context)) {
-        Event e = event_at(EventKind::message, *frame_, view);
+        Event e = event_at(EventKind::message, ctx);
         e.code = kerf_warning::not_modelled;
         e.text = fmt::format("{} ({}) is not expanded by kerf: the tool stays at its start point",
                              cycle->spelling, cycle->function);
@@ -203,9 +207,9 @@ bool Executor::apply_cycle(const ast::BlockView& view, const BlockWords& words, 
     // G71–G73: the control goes on after the profile that follows the cycle block (cycles.md
     // §2–§4); G70, or a profile written elsewhere, goes on after the cycle block (§1).
     Frame* frame = current_frame();
-    if (cycle_profile_blocks_ && cycle->function != fn::finishing_cycle && !stopped_ && frame &&
-        cycle_profile_blocks_->first >= frame->block)
-        frame->block = cycle_profile_blocks_->last + 1;
+    const auto& blocks = context.profile_blocks();
+    if (blocks && cycle->function != fn::finishing_cycle && !stopped_ && frame && blocks->first >= frame->block)
+        frame->block = blocks->last + 1;
     return true;
 }
 
@@ -221,10 +225,10 @@ void Executor::leave_offset_for_cycle() {
     state_.programmed.reset();
 }
 
-void Executor::cancel_cycle_by_motion_code() {
+void Executor::cancel_cycle_by_motion_code(const BlockContext& ctx) {
     if (state_.flags.modal_cycle) {
         bool motion = false, cycle = false;
-        for (const ast::CodeRef& c : scan_.g) {
+        for (const ast::CodeRef& c : ctx.scan.g) {
             if (!c.info) continue;
             motion |= c.info->has(dialects::traits::motion_group);
             cycle |= is_cycle(*c.info);
@@ -243,23 +247,21 @@ void Executor::cancel_cycle_by_motion_code() {
 
 // --- profile blocks -----------------------------------------------------------------------------
 
-std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& view, std::string_view spelling, double p,
-                                                       double q) {
-    const Frame& f = *frame_;
+std::optional<cycles::Profile> Executor::cycle_profile(const BlockContext& ctx, std::string_view spelling, double p,
+                                                       double q, std::optional<ProfileBlocks>& blocks) {
+    const Frame& f = ctx.frame;
     const auto first = find_label(f, p);
     const auto last = find_label(f, q);
     if (!first || !last || *last < *first) {
         const std::string why = !first || !last ? fmt::format("sequence number N{} not found in this program", !first ? p : q)
                                                 : fmt::format("N{} comes before N{}", q, p);
-        alarm(f, view, 60, fmt::format("{} P{} Q{}: {} (alarm 060)", spelling, p, q, why));
+        alarm(ctx, 60, fmt::format("{} P{} Q{}: {} (alarm 060)", spelling, p, q, why));
         return std::nullopt;
     }
     // Each profile block is read with the executor's own word evaluation, from the running profile
-    // point; the cycle block's scan, position and motion code are restored afterwards (the profile
-    // leaves the modal state as it was, cycles.md "Notation").
-    const BlockScan saved_scan = scan_;
+    // point; the cycle block's position is restored afterwards (the profile leaves the modal state
+    // as it was, cycles.md "Notation").
     const Position saved_position = state_.position;
-    const ast::BlockView* saved_view = view_;
     cycles::Profile profile;
     // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
     if (state_.comp_path) state_.position = *state_.comp_path;
@@ -268,20 +270,18 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
     dialects::FunctionId motion = state_.flags.motion;
     bool ok = true;
     for (std::uint32_t b = *first; ok && b <= *last; ++b) {
-        const ast::BlockView block = file_of(f).block(b);
-        if (block.block().kind != ast::BlockKind::code) continue;
-        if (block.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
-        view_ = nullptr;
-        scan_block(f, block);
-        scan_.block = b;
-        view_ = &block;
-        ok = read_profile_block(block, motion, profile, *last);
+        const ast::BlockView view = file_of(f).block(b);
+        if (view.block().kind != ast::BlockKind::code) continue;
+        if (view.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
+        BlockScan scan;
+        scan_block(f, view, scan);
+        scan.block = b;
+        BlockWords words;
+        ok = read_profile_block({f, view, scan, words}, words, motion, profile, *last);
     }
-    scan_ = saved_scan;
     state_.position = saved_position;
-    view_ = saved_view;
     if (!ok) return std::nullopt;
-    cycle_profile_blocks_ = ProfileBlocks{*first, *last};
+    blocks = ProfileBlocks{*first, *last};
     return profile;
 }
 
@@ -289,18 +289,17 @@ std::optional<cycles::Profile> Executor::cycle_profile(const ast::BlockView& vie
 // the profile), the arc's centre and sweep, its F (G70, cycles.md §1). Blocks without an end point
 // with direct-drawing words go through the same resolver as a running program
 // (executor_drawing.cpp), so a profile's corners are those of semantics.md §10.
-bool Executor::read_profile_block(const ast::BlockView& block, dialects::FunctionId& motion, cycles::Profile& profile,
-                                  std::uint32_t last) {
-    BlockWords words;
+bool Executor::read_profile_block(const BlockContext& block, BlockWords& words, dialects::FunctionId& motion,
+                                  cycles::Profile& profile, std::uint32_t last) {
     if (!evaluate_words(block, words)) return false;
-    for (const ast::CodeRef& c : scan_.g)
+    for (const ast::CodeRef& c : block.scan.g)
         if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
     bool moves = false;
     const Position to = target_position(words, moves);
-    if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(block, words, to, profile, last);
+    if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(block, to, profile, last);
     if (!moves) return true;
     cycles::ProfileMove m;
-    m.block = scan_.block;
+    m.block = block.index();
     m.end = to;
     m.kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
     if (const auto* w = words.get('F'); w && !w->data) m.feed = w->value;
@@ -309,7 +308,7 @@ bool Executor::read_profile_block(const ast::BlockView& block, dialects::Functio
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
         const motion::ArcResult arc = arc_geometry(motion == fn::circular_cw, state_.position, to, words);
         if (!arc) {
-            alarm(*frame_, block, arc.error().fanuc_alarm,
+            alarm(block, arc.error().fanuc_alarm,
                   fmt::format("profile arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code),
                               arc.error().found, arc.error().allowed));
             return false;
@@ -325,14 +324,15 @@ bool Executor::read_profile_block(const ast::BlockView& block, dialects::Functio
 
 // A direct-drawing block of a profile: the resolver's lines and fillet arcs, from the end of the
 // last profile move (past a corner) and the programmed point state_.position.
-bool Executor::read_profile_drawing(const ast::BlockView& block, const BlockWords& words, const Position& to,
-                                    cycles::Profile& profile, std::uint32_t last) {
+bool Executor::read_profile_drawing(const BlockContext& block, const Position& to, cycles::Profile& profile,
+                                    std::uint32_t last) {
+    const BlockWords& words = block.words;
     const Position tool = profile.moves.empty() ? profile.start : profile.moves.back().end;
-    const auto r = resolve_drawing(block, words, state_.position, tool, to, last);
+    const auto r = resolve_drawing(block, state_.position, tool, to, last);
     if (!r) return false;
     for (const drawing::Move& piece : r->moves) {
         cycles::ProfileMove m;
-        m.block = scan_.block;
+        m.block = block.index();
         m.end = plane_position(piece.end, to);
         m.kind = !piece.arc ? EventKind::linear : piece.sweep < 0 ? EventKind::arc_cw : EventKind::arc_ccw;
         m.center = plane_position(piece.center, to);
@@ -354,7 +354,7 @@ motion::ArcOptions Executor::computed_arc_options() const {
 }
 
 // An arc of a cycle from the current point to `to` about `center` (work coordinates).
-bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, const ast::BlockView& view) {
+bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, const BlockContext& ctx) {
     const double scale = unit_scale();
     const motion::Vec3 start = geometric_mm(state_.position, setup_.diameter_x, scale);
     const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
@@ -362,10 +362,10 @@ bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, co
     const motion::ArcResult arc = motion::arc_from_center(start, end, plane(), cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw,
                                                           c - start, computed_arc_options());
     if (!arc) {
-        move(EventKind::linear, to, *frame_, view);   // a degenerate piece of an arc: its chord
+        move(EventKind::linear, to, ctx);   // a degenerate piece of an arc: its chord
         return !stopped_;
     }
-    emit_arc(arc.arc(), to, view);
+    emit_arc(arc.arc(), to, ctx);
     return !stopped_;
 }
 

@@ -35,7 +35,8 @@ void write_axes(Position& reg, const BlockWords& words, const dialects::LexicalR
 
 }  // namespace
 
-void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& words) {
+void Executor::apply_data_input(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const auto* p = words.get('P');
     const auto* l = words.get('L');
     // Registers are kept in mm (degrees on rotary axes): a G20 program writes inches.
@@ -43,15 +44,15 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
         return axis_value(w, kAxisLetters[axis]) * axis_scale(axis);
     };
     const dialects::LexicalRules& rules = dialect_.lexical;
-    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+    Event e = event_at(EventKind::coordinate_change, ctx);
     if (!p) {
-        alarm(*frame_, view, 10, "G10 without P: which register? (alarm 010)");
+        alarm(ctx, 10, "G10 without P: which register? (alarm 010)");
         return;
     }
     const int n = static_cast<int>(std::lround(p->value));
     if (l && std::lround(l->value) == 2) {
         if (n < 0 || n > 6) {
-            alarm(*frame_, view, 10, fmt::format("G10 L2 P{}: P must be 0 (external) to 6 (G59)", n));
+            alarm(ctx, 10, fmt::format("G10 L2 P{}: P must be 0 (external) to 6 (G59)", n));
             return;
         }
         change_offsets([&] {
@@ -61,7 +62,7 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
         e.text = n == 0 ? "external work offset" : fmt::format("work offset G{}", 53 + n);
     } else if (l && std::lround(l->value) == 20) {
         // G10 L20 Pn: the additional work offset of G54.1 Pn ([FANUC]); G91 adds.
-        const auto number = additional_number(view, p ? std::optional<double>(p->value) : std::nullopt);
+        const auto number = additional_number(ctx, p ? std::optional<double>(p->value) : std::nullopt);
         if (!number) return;
         change_offsets([&] { write_axes(memory_.additional_offsets[*number], words, rules, state_.flags.incremental, value_of); });
         e.text = fmt::format("work offset G54.1 P{}", *number);
@@ -71,7 +72,7 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
         if (!r) return;   // nothing to write
         if (n < 1 || n > setup_.tool_offset_count) {
             // Checked where it is written: #11299 would be alarm 115 later on a 64-offset machine.
-            alarm(*frame_, view, alarms::offset_number,
+            alarm(ctx, alarms::offset_number,
                   fmt::format("G10 P{}: no tool offset {} on this machine (1..{}, tool_offset_count; alarm 030)", n, n,
                               setup_.tool_offset_count));
             return;
@@ -91,7 +92,7 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
         const bool geometry = n > kGeometryBase;
         const int number = geometry ? n - kGeometryBase : n;
         if (number < 1 || number > setup_.tool_offset_count) {
-            alarm(*frame_, view, 10, fmt::format("G10 P{}: no tool offset {} (1..{})", n, number, setup_.tool_offset_count));
+            alarm(ctx, 10, fmt::format("G10 P{}: no tool offset {} (1..{})", n, number, setup_.tool_offset_count));
             return;
         }
         // The active offset changes the machine position, as a T word does (no change_offsets).

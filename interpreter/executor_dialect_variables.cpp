@@ -34,7 +34,7 @@ std::optional<Axis> slot_axis(const dialects::VariableRange& range, const Offset
 
 }  // namespace
 
-std::optional<macro::Value> Executor::read_dialect_variable(const dialects::VariableRange& range, int number) {
+std::optional<macro::Value> Executor::read_dialect_variable(const dialects::VariableRange& range, int number) const {
     using macro::Value;
     switch (range.kind) {
         case dialects::VariableKind::alias:
@@ -64,12 +64,13 @@ std::optional<macro::Value> Executor::read_dialect_variable(const dialects::Vari
     return std::nullopt;
 }
 
-macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value) {
+macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value,
+                                                    macro::SystemVariables& system) {
     using macro::WriteResult;
     if (range.read_only) return WriteResult::read_only;
     switch (range.kind) {
         case dialects::VariableKind::alias:
-            return variables_.write(static_cast<int>(range.alias_of + (number - range.from)), value);
+            return variables_.write(static_cast<int>(range.alias_of + (number - range.from)), value, system);
         case dialects::VariableKind::common:
         case dialects::VariableKind::setting:
         case dialects::VariableKind::parameter:

@@ -38,8 +38,9 @@ Coordinate coordinate_of(const BlockWords& words, char letter, bool incremental_
 
 }  // namespace
 
-drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWords& words, bool linear,
+drawing::Block Executor::drawing_block(const BlockContext& ctx, bool linear,
                                        const Position& start, const Position& to) {
+    const BlockWords& words = ctx.words;
     drawing::Block b;
     b.linear = linear;
     const motion::PlaneAxes axes = motion::plane_axes(plane());
@@ -47,8 +48,8 @@ drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWo
     b.first = coordinate_of(words, motion::axis_letter(axes.first), state_.flags.incremental, s.a, t.a);
     b.second = coordinate_of(words, motion::axis_letter(axes.second), state_.flags.incremental, s.b, t.b);
     // Angle and corner words: ,A ,C ,R (comma words) and plain A / R marked direct_drawing.
-    const ast::SyntaxTree& tree = view.tree();
-    for (const ast::Token& token : view.tokens()) {
+    const ast::SyntaxTree& tree = ctx.view.tree();
+    for (const ast::Token& token : ctx.view.tokens()) {
         const bool plain = token.kind == ast::TokenKind::word && token.role() == ast::Role::direct_drawing;
         if (token.kind != ast::TokenKind::comma_word && !plain) continue;
         if (token.has(ast::token_flags::value_none)) continue;
@@ -73,47 +74,51 @@ drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWo
     return b;
 }
 
-std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::optional<std::uint32_t> last, const Position& from) {
-    const Frame& f = *frame_;
+std::optional<drawing::Block> Executor::look_ahead(const BlockContext& ctx, std::optional<std::uint32_t> last,
+                                                   const Position& from) {
+    const Frame& f = ctx.frame;
     const LoadedFile& file = file_of(f);
-    for (std::uint32_t b = after + 1; file.in_program(f.program.program, b) && (!last || b <= *last); ++b) {
+    for (std::uint32_t b = ctx.index() + 1; file.in_program(f.program.program, b) && (!last || b <= *last); ++b) {
         const ast::BlockView next = file.block(b);
         if (next.block().kind != ast::BlockKind::code) continue;
         if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
-        // Read with the executor's own word evaluation; the running block's scan comes back after.
-        const LookAheadScope guard(*this, f, next, scan_.block);
+        // Read with the executor's own word evaluation; the running block's state comes back after.
+        BlockScan scan;
+        scan_block(f, next, scan);
+        scan.block = ctx.index();
+        BlockWords words;
+        const BlockContext ahead{f, next, scan, words};
+        const LookAheadScope guard(*this);
         // The chain is G01 (only G01 blocks are drawn): the next block is G01 unless it says otherwise.
         dialects::FunctionId motion = fn::linear;
-        for (const ast::CodeRef& c : scan_.g)
+        for (const ast::CodeRef& c : scan.g)
             if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
-        BlockWords words;
         std::optional<drawing::Block> out;
         state_.position = from;
-        if (evaluate_words(next, words)) {
+        if (evaluate_words(ahead, words)) {
             bool moves = false;
             const Position to = target_position(words, moves);
-            out = drawing_block(next, words, motion == fn::linear, from, to);
+            out = drawing_block(ahead, motion == fn::linear, from, to);
         }
         return out;
     }
     return std::nullopt;
 }
 
-std::optional<drawing::Result> Executor::resolve_drawing(const ast::BlockView& view, const BlockWords& words,
+std::optional<drawing::Result> Executor::resolve_drawing(const BlockContext& ctx,
                                                          const Position& start, const Position& tool, const Position& to,
                                                          std::optional<std::uint32_t> last) {
-    const std::uint32_t index = scan_.block;
-    const drawing::Block cur = drawing_block(view, words, true, start, to);
+    const drawing::Block cur = drawing_block(ctx, true, start, to);
     std::optional<drawing::Block> next;
     // Only an angle-only block and a corner need the next block (semantics.md §10.1 (c)).
     if (!cur.named() || cur.corner != drawing::CornerKind::none) {
         const Position from = cur.named() ? to : start;
-        next = look_ahead(index, last, from);
+        next = look_ahead(ctx, last, from);
     }
     if (stopped_) return std::nullopt;   // the block read ahead raised an alarm
     drawing::Result r = drawing::resolve(plane_point(start), plane_point(tool), cur, next ? &*next : nullptr);
     if (r.alarm) {
-        alarm(*frame_, view, r.alarm->number, r.alarm->text);
+        alarm(ctx, r.alarm->number, r.alarm->text);
         return std::nullopt;
     }
     return r;
@@ -127,13 +132,13 @@ Position Executor::programmed_target(const BlockWords& words, bool& moves) {
     return to;
 }
 
-bool Executor::draw_block(const ast::BlockView& view, const BlockWords& words, const Position& start, const Position& to) {
-    const auto r = resolve_drawing(view, words, start, state_.position, to, std::nullopt);
+bool Executor::draw_block(const BlockContext& ctx, const Position& start, const Position& to) {
+    const auto r = resolve_drawing(ctx, start, state_.position, to, std::nullopt);
     if (!r) return false;
     for (const drawing::Move& m : r->moves) {
         const Position end = plane_position(m.end, to);
-        if (m.arc) cycle_arc(m.sweep < 0, end, plane_position(m.center, to), view);
-        else move(EventKind::linear, end, *frame_, view);
+        if (m.arc) cycle_arc(m.sweep < 0, end, plane_position(m.center, to), ctx);
+        else move(EventKind::linear, end, ctx);
         if (stopped_) return true;
     }
     const Position programmed = plane_position(r->end, to);
@@ -143,10 +148,10 @@ bool Executor::draw_block(const ast::BlockView& view, const BlockWords& words, c
     return !r->moves.empty();
 }
 
-void Executor::note_drawing_outside_g01(const ast::BlockView& view) {
-    if (drawing_words(view)) {
+void Executor::note_drawing_outside_g01(const BlockContext& ctx) {
+    if (drawing_words(ctx)) {
         // Direct drawing is a G01 feature (semantics.md §10.1); G01 blocks never come here.
-        Event e = event_at(EventKind::message, *frame_, view);
+        Event e = event_at(EventKind::message, ctx);
         e.text = "direct drawing (,A ,C ,R) in a block that is not G01: the words are ignored (semantics.md §10.1)";
         emit(e);
     }

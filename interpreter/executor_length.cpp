@@ -36,10 +36,11 @@ bool Executor::axial_offset_is_length(const dialects::CodeInfo& code, const Bloc
     return !setup_.iso_g43_approach || words.get('H') != nullptr;
 }
 
-void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords& words) {
+void Executor::apply_length_offset(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     int sign = state_.length_sign;
     const dialects::CodeInfo* code = nullptr;
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || !(code_class_of(*c.info) & kLengthCompCode) || !axial_offset_is_length(*c.info, words)) continue;
         code = c.info;   // several in one block: the last one wins (semantics.md §1.1)
         sign = length_sign_of(c.info->function);
@@ -54,7 +55,7 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
     if (h != 0) {
         const auto it = memory_.tools.find(h);
         if (it == memory_.tools.end() && h > setup_.tool_offset_count) {
-            Event m = event_at(EventKind::message, *frame_, view);
+            Event m = event_at(EventKind::message, ctx);
             m.text = fmt::format("H{}: the machine has offset numbers 1..{} only: length 0", h, setup_.tool_offset_count);
             emit(m);
         }
@@ -63,7 +64,7 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
     state_.length_sign = sign;
     state_.length_h = h;
     state_.length_mm = sign * length;
-    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+    Event e = event_at(EventKind::coordinate_change, ctx);
     e.code = h;
     e.text = sign == 0 ? "tool length offset cancelled (G49): machine Z = programmed Z"
                        : fmt::format("tool length offset {} H{}: machine Z = programmed Z {} {:.3f} mm",
@@ -73,8 +74,8 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
     // With the axis-movement reading of the parameter a block without axis words moves Z by the
     // change at once; else (the default) the next block that moves Z takes it up, this one too.
     if (setup_.length_offset_at_once && !(words.words.mask() & axis_letters_) && !words.incremental.mask()) {
-        take_up_length_offset(view);
-        move(state_.flags.motion == fn::linear ? EventKind::linear : EventKind::rapid, state_.position, *frame_, view);
+        take_up_length_offset(ctx);
+        move(state_.flags.motion == fn::linear ? EventKind::linear : EventKind::rapid, state_.position, ctx);
     }
 }
 
@@ -85,19 +86,20 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
 // The `coordinate_change` event says so where the machine position starts to follow the new offset
 // (the block that takes it up), so that machine minus the offset of the events is the tool tip
 // throughout the trace.
-void Executor::take_up_length_offset(const ast::BlockView& view, const BlockWords& words) {
+void Executor::take_up_length_offset_with_z(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const auto* z = words.get('Z');
-    if ((z && !z->data) || words.incremental.count('Z')) take_up_length_offset(view);
+    if ((z && !z->data) || words.incremental.count('Z')) take_up_length_offset(ctx);
 }
 
-void Executor::take_up_length_offset(const ast::BlockView& view) {
+void Executor::take_up_length_offset(const BlockContext& ctx) {
     state_.length_applied_mm = state_.length_mm;
     if (!state_.pending_length_event) return;
     Event e = std::move(*state_.pending_length_event);
     state_.pending_length_event.reset();
-    if (e.source.line != scan_.source.line) {
+    if (e.source.line != ctx.source().line) {
         e.text += ", given before and taken up by this block's Z";   // no line number: formatting moves lines
-        e.source = source(*frame_, view);
+        e.source = ctx.source();
     }
     e.start = e.end = state_.position;
     emit(std::move(e));

@@ -50,23 +50,23 @@ std::string format_print(std::string_view text, const macro::Variables& variable
 }  // namespace
 
 // Returns false when the block must not go on (a jump, an alarm, a call).
-bool Executor::execute_statements(Frame& frame, const ast::BlockView& view) {
-    const ast::SyntaxTree& tree = view.tree();
-    if (scan_.statements) {
-        for (const std::uint32_t ti : view.statements()) {
+bool Executor::execute_statements(Frame& frame, const BlockContext& ctx) {
+    const ast::SyntaxTree& tree = ctx.view.tree();
+    if (ctx.scan.statements) {
+        for (const std::uint32_t ti : ctx.view.statements()) {
             const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
-            if (!execute_statement(frame, view, s) || stopped_) return false;
+            if (!execute_statement(frame, ctx, s) || stopped_) return false;
         }
     }
-    if (!scan_.macro_call) return true;
-    if (const auto call = view.macro_call()) return !start_macro_call(frame, view, *call);
+    if (!ctx.scan.macro_call) return true;
+    if (const auto call = ctx.view.macro_call()) return !start_macro_call(ctx, *call);
     return true;
 }
 
-bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const ast::Statement& s) {
-    const ast::SyntaxTree& tree = view.tree();
+bool Executor::execute_statement(Frame& frame, const BlockContext& ctx, const ast::Statement& s) {
+    const ast::SyntaxTree& tree = ctx.view.tree();
     auto fail = [&](const macro::Error& e) {
-        alarm(frame, view, e.alarm, e.message);
+        alarm(ctx, e.alarm, e.message);
         return false;
     };
     auto condition = [&]() -> std::optional<bool> {
@@ -86,13 +86,15 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
         return r.value.vacant ? 0.0 : r.value.number;
     };
     switch (s.kind) {
-        case ast::StatementKind::assign:
-            if (const auto e = macro::assign(tree, s, variables_, macro_options(false))) return fail(*e);
+        case ast::StatementKind::assign: {
+            ExecutorSystemVariables system(*this, ctx);   // the block's: #3000 raises its alarm here
+            if (const auto e = macro::assign(tree, s, variables_, system, macro_options(false))) return fail(*e);
             return true;
+        }
         case ast::StatementKind::if_then: {
             const auto c = condition();
             if (!c) return false;
-            if (*c) return execute_statement(frame, view, tree.statements[static_cast<std::size_t>(s.then_statement)]);
+            if (*c) return execute_statement(frame, ctx, tree.statements[static_cast<std::size_t>(s.then_statement)]);
             return true;
         }
         case ast::StatementKind::if_words: {
@@ -111,7 +113,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
             if (!n) return false;
             const auto target = find_label(frame, std::round(*n));
             if (!target) {
-                alarm(frame, view, 128, fmt::format("GOTO {}: no sequence number N{} in this program (alarm 128)", *n, *n));
+                alarm(ctx, 128, fmt::format("GOTO {}: no sequence number N{} in this program (alarm 128)", *n, *n));
                 return false;
             }
             frame.block = *target;
@@ -123,7 +125,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
             const auto m = label_value();
             if (!m) return false;
             if (*m < 1 || *m > 3) {
-                alarm(frame, view, 126, fmt::format("DO {}: the loop number must be 1, 2 or 3 (alarm 126)", *m));
+                alarm(ctx, 126, fmt::format("DO {}: the loop number must be 1, 2 or 3 (alarm 126)", *m));
                 return false;
             }
             const bool enter = s.kind == ast::StatementKind::do_ ? true : [&] {
@@ -132,20 +134,20 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
             }();
             if (stopped_) return false;
             if (enter) {
-                if (frame.loops.empty() || frame.loops.back().do_block != scan_.block) {
+                if (frame.loops.empty() || frame.loops.back().do_block != ctx.scan.block) {
                     if (frame.loops.size() >= 3) {
-                        alarm(frame, view, 124, "WHILE/DO nested deeper than 3 (alarm 124)");
+                        alarm(ctx, 124, "WHILE/DO nested deeper than 3 (alarm 124)");
                         return false;
                     }
-                    frame.loops.push_back({scan_.block, static_cast<int>(*m)});
+                    frame.loops.push_back({ctx.scan.block, static_cast<int>(*m)});
                 }
                 return true;
             }
             // Condition false: continue after the matching END m.
-            if (!frame.loops.empty() && frame.loops.back().do_block == scan_.block) frame.loops.pop_back();
-            const auto end = find_end(frame, scan_.block, static_cast<int>(*m));
+            if (!frame.loops.empty() && frame.loops.back().do_block == ctx.scan.block) frame.loops.pop_back();
+            const auto end = find_end(frame, ctx.scan.block, static_cast<int>(*m));
             if (!end) {
-                alarm(frame, view, 124, fmt::format("DO {} without END {} (alarm 124)", *m, *m));
+                alarm(ctx, 124, fmt::format("DO {} without END {} (alarm 124)", *m, *m));
                 return false;
             }
             frame.block = *end + 1;
@@ -155,7 +157,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
             const auto m = label_value();
             if (!m) return false;
             if (frame.loops.empty() || frame.loops.back().label != static_cast<int>(*m)) {
-                alarm(frame, view, 124, fmt::format("END {} without its DO (alarm 124)", *m));
+                alarm(ctx, 124, fmt::format("END {} without its DO (alarm 124)", *m));
                 return false;
             }
             frame.block = frame.loops.back().do_block;   // back to WHILE: the condition is tested again
@@ -163,7 +165,7 @@ bool Executor::execute_statement(Frame& frame, const ast::BlockView& view, const
         }
         case ast::StatementKind::dprnt:
         case ast::StatementKind::bprnt: {
-            Event e = event_at(EventKind::message, frame, view);
+            Event e = event_at(EventKind::message, ctx);
             e.text = format_print(tree.slice(s.text), variables_);
             emit(e);
             return true;
@@ -190,10 +192,8 @@ std::optional<std::uint32_t> Executor::find_end(const Frame& frame, std::uint32_
     return std::nullopt;
 }
 
-std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_arguments(const Frame& frame,
-                                                                                    const ast::BlockView& view,
-                                                                                    const ast::MacroCall& call) {
-    const ast::SyntaxTree& tree = view.tree();
+std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_arguments(const BlockContext& ctx, const ast::MacroCall& call) {
+    const ast::SyntaxTree& tree = ctx.view.tree();
     macro::ArgumentMapper mapper;
     std::vector<std::pair<int, macro::Value>> arguments;
     for (const std::uint32_t ti : call.arguments) {
@@ -204,7 +204,7 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
         if (t.has(ast::token_flags::value_expr)) {
             const macro::Result r = macro::evaluate(tree, t.payload, variables_, macro_options(true));
             if (r.error) {
-                alarm(frame, view, r.error->alarm, r.error->message);
+                alarm(ctx, r.error->alarm, r.error->message);
                 return std::nullopt;
             }
             v = r.value;
@@ -220,25 +220,25 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
     return arguments;
 }
 
-bool Executor::push_macro_frame(const Frame& frame, const ast::BlockView& view, std::int64_t program,
+bool Executor::push_macro_frame(const BlockContext& ctx, std::int64_t program,
                                 std::int64_t repeats, const std::vector<std::pair<int, macro::Value>>& arguments,
                                 bool modal) {
-    const auto target = programs_.find_or_load(program, frame.program.file);
+    const auto target = programs_.find_or_load(program, ctx.frame.program.file);
     if (!target) {
-        if (!skip_resident_call(frame, view, program, modal ? "G66" : "G65"))
-            alarm(frame, view, 78, fmt::format("G6{}: program O{:04} not found (alarm 078)", modal ? 6 : 5, program));
+        if (!skip_resident_call(ctx, program, modal ? "G66" : "G65"))
+            alarm(ctx, 78, fmt::format("G6{}: program O{:04} not found (alarm 078)", modal ? 6 : 5, program));
         return false;
     }
     int macros = 0;
     for (const Frame& f : frames_) macros += f.macro;
     if (macros >= setup_.max_macro_depth) {
-        alarm(frame, view, 77, fmt::format("macro calls nested deeper than {} (alarm 077)", setup_.max_macro_depth));
+        alarm(ctx, 77, fmt::format("macro calls nested deeper than {} (alarm 077)", setup_.max_macro_depth));
         return false;
     }
     // A new level of local variables, set from the arguments (vacant where not given).
     variables_.push_level();
     for (const auto& [number, value] : arguments) variables_.write(number, value);
-    Event e = event_at(EventKind::call, frame, view);
+    Event e = event_at(EventKind::call, ctx);
     e.code = static_cast<int>(program);
     e.text = modal ? "G66 modal macro call" : "G65 macro call";
     emit(e);
@@ -253,14 +253,14 @@ bool Executor::push_macro_frame(const Frame& frame, const ast::BlockView& view, 
 }
 
 // G65 P_ L_ arguments: true when the block ends here (the call started, or an alarm).
-bool Executor::start_macro_call(Frame& frame, const ast::BlockView& view, const ast::MacroCall& call) {
+bool Executor::start_macro_call(const BlockContext& ctx, const ast::MacroCall& call) {
     if (call.modal) return false;   // G66: execute_block remembers it
     if (!call.program) {
-        alarm(frame, view, 76, "G65 without a program number P (alarm 076)");
+        alarm(ctx, 76, "G65 without a program number P (alarm 076)");
         return true;
     }
-    const auto arguments = macro_arguments(frame, view, call);
-    if (arguments) push_macro_frame(frame, view, *call.program, call.repeats, *arguments, false);
+    const auto arguments = macro_arguments(ctx, call);
+    if (arguments) push_macro_frame(ctx, *call.program, call.repeats, *arguments, false);
     return true;
 }
 

@@ -81,8 +81,7 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
 
 // Stored stroke check 1 (alarms OT500/OT501 [FANUC]): checked before the move, which does not
 // start when its end (or an arc's extreme) lies past a limit.
-bool Executor::within_soft_limits(const Position& low, const Position& high, const Frame& f,
-                                  const ast::BlockView& view) {
+bool Executor::within_soft_limits(const Position& low, const Position& high, const BlockContext& ctx) {
     if (!state_.soft_limits_on || !any_soft_limit_) return true;
     const Position offset = machine_offset();
     for (std::size_t a = 0; a < kAxisCount; ++a) {
@@ -93,7 +92,7 @@ bool Executor::within_soft_limits(const Position& low, const Position& high, con
         const bool under = limit.min && machine_low < *limit.min - 1e-9;
         if (!over && !under) continue;
         const int number = over ? 500 : 501;
-        alarm(f, view, number,
+        alarm(ctx, number,
               fmt::format("OT{}: {} overtravel on {}: machine {:.3f} past the soft limit {:.3f} (stored stroke check)",
                           number, over ? "+" : "-", kAxisLetters[a], over ? machine_high : machine_low,
                           over ? *limit.max : *limit.min));
@@ -140,24 +139,24 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
 
 // A feed move needs a feed rate: F0, or no F since power-on, stops the control with alarm 011
 // ([FANUC] PS011 "feedrate zero"; semantics.md §4). A move that goes nowhere feeds nothing.
-bool Executor::feed_commanded(bool moves, const Frame& f, const ast::BlockView& view) {
+bool Executor::feed_commanded(bool moves, const BlockContext& ctx) {
     if (state_.feed > 0 || !moves) return true;
-    alarm(f, view, alarms::feed_zero,
+    alarm(ctx, alarms::feed_zero,
           fmt::format("feed move with no feed rate commanded (F{:g}): alarm 011; program F before the first "
                       "G01/G02/G03", state_.feed));
     return false;
 }
 
-void Executor::move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view) {
+void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx) {
     // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
-    if (state_.slowdown && kind == EventKind::linear && !in_slowdown_ && state_.flags.motion == fn::linear && slowed_move(to, f, view)) return;
-    if (kind == EventKind::linear && !feed_commanded(to != state_.position, f, view)) return;
+    if (state_.slowdown && kind == EventKind::linear && !in_slowdown_ && state_.flags.motion == fn::linear && slowed_move(to, ctx)) return;
+    if (kind == EventKind::linear && !feed_commanded(to != state_.position, ctx)) return;
     Event e;
     e.kind = kind;
-    e.source = source(f, view);
+    e.source = ctx.source();
     e.start = state_.position;
     e.end = to;
-    if (!within_soft_limits(to, to, f, view)) return;
+    if (!within_soft_limits(to, to, ctx)) return;
     // The axes travel from where they stand to the new machine position: an offset taken up by this
     // move (G43 H, a lathe T offset, G49) is part of it (differential A7: `G43 Z15. H1` at Z15 moves).
     const Position machine_to = machine_position_of(to);
@@ -193,7 +192,7 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
     emit(std::move(e), machine_to);   // offsets unchanged since machine_to was computed from `to` (= e.end)
     if (thread && setup_.max_cutting_feed > 0 && thread_speed > setup_.max_cutting_feed) {
         // cycles.md §9: lead × rpm is the axis speed of a thread; the analyzer reads this event.
-        Event w = event_at(EventKind::message, f, view);
+        Event w = event_at(EventKind::message, ctx);
         w.code = kerf_warning::thread_speed_over_limit;
         w.text = fmt::format("thread at {:g} mm/min (lead × rpm) is over the machine's maximum cutting feed {:g} mm/min",
                              thread_speed, setup_.max_cutting_feed);
@@ -204,8 +203,8 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
 // G32/G33 and G34 (cycles.md §9). The lead is F, or E where the block has one (seed 003 "E = lead
 // in mm", ADV400 "pitch E"); G34 adds K, the lead change per revolution ([FANUC]), and a lead
 // that would reach zero before the end is [FANUC] alarm 313 (lead level error).
-void Executor::thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
-    const Frame& f = *frame_;
+void Executor::thread_move(const BlockContext& ctx, const Position& to) {
+    const BlockWords& words = ctx.words;
     const auto* e = words.get('E');
     state_.thread_lead = e ? axis_value(*e, 'E') : state_.feed;
     const auto* k = words.get('K');
@@ -213,21 +212,22 @@ void Executor::thread_move(const ast::BlockView& view, const BlockWords& words, 
     if (state_.thread_lead_change != 0) {
         const double length = travel_of(state_.position, to, setup_).linear;   // program units, like the lead
         if (!motion::variable_lead(length, state_.thread_lead, state_.thread_lead_change)) {
-            alarm(f, view, 313,
+            alarm(ctx, 313,
                   fmt::format("G34 lead F{:g} K{:g} over {:g}: the lead reaches zero before the end (FANUC alarm 313, "
                               "lead level error)", state_.thread_lead, state_.thread_lead_change, length));
             return;
         }
     }
-    move(EventKind::thread, to, f, view);
+    move(EventKind::thread, to, ctx);
 }
 
-bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
+bool Executor::apply_motion(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     // [polar] G112/G107 modes: the block's path is in the Cartesian plane (polar.cpp).
-    if (state_.transform || (scan_.classes & kTransformCode)) {
-        if (const auto moved = apply_plane_transform(view, words)) return *moved;
+    if (state_.transform || (ctx.scan.classes & kTransformCode)) {
+        if (const auto moved = apply_plane_transform(ctx)) return *moved;
     }
-    if (const auto reference = apply_reference_motion(view, words)) {
+    if (const auto reference = apply_reference_motion(ctx)) {
         state_.programmed.reset();
         return *reference;
     }
@@ -235,23 +235,23 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     // G45–G48 act only in their block (semantics.md §9.3): a block without them measures from where
     // the tool stands (its G91 increments, the axes it does not name), not from the point the
     // offset blocks programmed.
-    if (state_.programmed_by_offset && !(scan_.classes & kPositionOffsetCode)) state_.programmed.reset();
+    if (state_.programmed_by_offset && !(ctx.scan.classes & kPositionOffsetCode)) state_.programmed.reset();
     state_.programmed_by_offset = false;
     // [path changers] After a corner of direct drawing the tool stands off the programmed point,
     // which the block's coordinates are measured from (executor_drawing.cpp).
     const Position to = state_.programmed ? programmed_target(words, moves) : target_position(words, moves);
-    if (apply_cycle(view, words, moves, to)) return false;
+    if (apply_cycle(ctx, moves, to)) return false;
     // [seed 004 G43/G44 without H] the approach of §9.4 (executor_iso_specials.cpp).
-    if (scan_.classes & kApproachOffsetCode)
-        if (const auto moved = axial_offset_motion(view, words, to, moves)) return *moved;
-    if ((scan_.classes & kArcApproachCode) && moves) return arc_approach_move(view, words, to);   // [seed 004 G12/G13]
+    if (ctx.scan.classes & kApproachOffsetCode)
+        if (const auto moved = axial_offset_motion(ctx, to, moves)) return *moved;
+    if ((ctx.scan.classes & kArcApproachCode) && moves) return arc_approach_move(ctx, to);   // [seed 004 G12/G13]
     // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
-    if ((scan_.classes & kRadiusCompCode) || compensating()) return compensate_motion(view, words, to, moves);
-    if (drawing_words(view) && state_.flags.motion == fn::linear) return draw_block(view, words, state_.programmed.value_or(state_.position), to);
-    if (const auto factor = position_offset_factor(); factor && moves)
-        return position_offset_move(view, words, *factor, state_.programmed.value_or(state_.position), to);
+    if ((ctx.scan.classes & kRadiusCompCode) || compensating()) return compensate_motion(ctx, to, moves);
+    if (drawing_words(ctx) && state_.flags.motion == fn::linear) return draw_block(ctx, state_.programmed.value_or(state_.position), to);
+    if (const auto factor = position_offset_factor(ctx); factor && moves)
+        return position_offset_move(ctx, *factor, state_.programmed.value_or(state_.position), to);
     if (moves) state_.programmed.reset();
-    note_drawing_outside_g01(view);
+    note_drawing_outside_g01(ctx);
     const dialects::FunctionId motion = state_.flags.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
     const auto centre_word = [&](char letter) {
@@ -261,13 +261,12 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     const bool full_circle = (motion == fn::circular_cw || motion == fn::circular_ccw) &&
                              (centre_word('I') || centre_word('J') || centre_word('K'));
     if (!moves && !full_circle) return false;
-    const Frame& f = *frame_;
-    if (motion == fn::rapid) move(EventKind::rapid, to, f, view);
-    else if (motion == fn::linear) move(EventKind::linear, to, f, view);
-    else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, words, view);
-    else if (motion == fn::thread_cutting || motion == fn::variable_lead_thread_cutting) thread_move(view, words, to);
+    if (motion == fn::rapid) move(EventKind::rapid, to, ctx);
+    else if (motion == fn::linear) move(EventKind::linear, to, ctx);
+    else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, ctx);
+    else if (motion == fn::thread_cutting || motion == fn::variable_lead_thread_cutting) thread_move(ctx, to);
     else {
-        Event e = event_at(EventKind::message, f, view);
+        Event e = event_at(EventKind::message, ctx);
         if (!motion.empty()) e.code = kerf_warning::not_modelled;
         e.text = motion.empty() ? std::string("axis words without a motion code (no G00/G01/G02/G03 active): no motion")
                                 : fmt::format("motion '{}' is not expanded by kerf: no motion", motion);
@@ -277,8 +276,9 @@ bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words)
     return true;
 }
 
-void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) {
-    if (!(scan_.classes & kOneShotCode) || !has_function(view, fn::dwell)) return;
+void Executor::apply_dwell(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
+    if (!(ctx.scan.classes & kOneShotCode) || !has_function(ctx, fn::dwell)) return;
     // X and U in seconds, P in milliseconds (ADV400: P in seconds); `G4 F1` seconds with the
     // machine's dwell_f_word switch (semantics.md §8.2, §12.15).
     double seconds = 0;
@@ -288,11 +288,11 @@ void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) 
     else if (const auto* p = words.get('P')) seconds = dwell_p_seconds(p->value);
     else if (const auto* f = words.get('F'); f && setup_.dwell_f_seconds) {
         seconds = f->value;
-        Event warn = event_at(EventKind::message, *frame_, view);
+        Event warn = event_at(EventKind::message, ctx);
         warn.text = "G04 F is not a FANUC dwell address: read as seconds (semantics.md §8.2; use X, U or P)";
         emit(warn);
     }
-    Event e = event_at(EventKind::dwell, *frame_, view);
+    Event e = event_at(EventKind::dwell, ctx);
     e.time_s = std::max(0.0, seconds);
     emit(e);
 }
@@ -318,22 +318,24 @@ std::optional<std::uint32_t> Executor::find_label(const Frame& f, double n) cons
 // M98 P (both forms, dialects.md §3.6) and [FANUC] M98 Q: Q is the sequence number where the
 // called program starts; without P it is a label of the program being run (a local subroutine
 // that ends with M99).
-void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
-    const auto call = view.subprogram_call();
+void Executor::call_subprogram(const BlockContext& ctx) {
+    const Frame& frame = ctx.frame;
+    const BlockWords& words = ctx.words;
+    const auto call = ctx.view.subprogram_call();
     const auto* q = words.get('Q');
     if (!call && !q) {
-        alarm(frame, view, 76, "M98 without a program number P or a sequence number Q (alarm 076)");
+        alarm(ctx, 76, "M98 without a program number P or a sequence number Q (alarm 076)");
         return;
     }
     std::optional<ProgramRef> target = frame.program;
     if (call) target = programs_.find_or_load(call->program, frame.program.file);
     if (!target) {
-        if (!skip_resident_call(frame, view, call->program, "M98"))
-            alarm(frame, view, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
+        if (!skip_resident_call(ctx, call->program, "M98"))
+            alarm(ctx, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
         return;
     }
     if (static_cast<int>(frames_.size()) > setup_.max_call_depth) {
-        alarm(frame, view, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
+        alarm(ctx, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
         return;
     }
     Frame sub;
@@ -343,7 +345,7 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
         // Without P the label is one of the running program: searched from the call (Haas forward search).
         const auto label = find_label(call ? sub : frame, q->value);
         if (!label) {
-            alarm(frame, view, 78, fmt::format("M98 Q{}: no sequence number N{} in the called program (alarm 078)", q->value, q->value));
+            alarm(ctx, 78, fmt::format("M98 Q{}: no sequence number N{} in the called program (alarm 078)", q->value, q->value));
             return;
         }
         sub.block = *label;
@@ -351,7 +353,7 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
     sub.start_block = sub.block;
     const auto* l = words.get('L');
     sub.repeats_left = call ? call->repeats : (l ? std::max<std::int64_t>(1, std::lround(l->value)) : 1);
-    Event e = event_at(EventKind::call, frame, view);
+    Event e = event_at(EventKind::call, ctx);
     e.code = call ? static_cast<int>(call->program) : 0;
     e.text = q ? fmt::format("M98 Q{}", q->value) : "M98";
     emit(e);
@@ -361,11 +363,11 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
 // M99 in a main program: back to its start, or to N p (dialects.md §3.6): the bar feeder's loop.
 // The control runs it until the operator stops it; a dry run runs RunOptions::passes passes and
 // ends with a note, so times and pictures are those of a pass, not of ten million blocks.
-void Executor::main_program_pass(Frame& frame, const ast::BlockView& view, const Word* p) {
+void Executor::main_program_pass(Frame& frame, const BlockContext& ctx, const Word* p) {
     std::optional<std::uint32_t> target = program_of(frame).first_block;
     if (p) target = find_label(frame, p->value);
     if (!target) {
-        alarm(frame, view, 78, fmt::format("M99 P{}: no N{} in this program (alarm 078)", p->value, p->value));
+        alarm(ctx, 78, fmt::format("M99 P{}: no N{} in this program (alarm 078)", p->value, p->value));
         return;
     }
     if (*target >= frame.block) {   // M99 P to a later block: a jump forward, not a new pass
@@ -377,7 +379,7 @@ void Executor::main_program_pass(Frame& frame, const ast::BlockView& view, const
         frame.block = *target;
         return;
     }
-    Event e = event_at(EventKind::message, frame, view);
+    Event e = event_at(EventKind::message, ctx);
     e.code = kerf_warning::program_repeats;
     e.text = fmt::format("the program repeats: M99 in the main program starts it again (a bar-feed loop); the dry run "
                          "stops after {} pass{}, and its times are for {} (kerf run --passes N)",
@@ -388,11 +390,12 @@ void Executor::main_program_pass(Frame& frame, const ast::BlockView& view, const
     frames_.clear();
 }
 
-void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words, MPhase phase) {
-    for (const ast::CodeRef& c : scan_.m) {
+void Executor::apply_m_codes(Frame& frame, const BlockContext& ctx, MPhase phase) {
+    const BlockWords& words = ctx.words;
+    for (const ast::CodeRef& c : ctx.scan.m) {
         if (!c.info || c.info->has(dialects::traits::after_motion) != (phase == MPhase::after_motion)) continue;
         const dialects::FunctionId f = c.info->function;
-        Event e = event_at(EventKind::message, frame, view);   // the kind is set per code below
+        Event e = event_at(EventKind::message, ctx);   // the kind is set per code below
         e.code = c.key ? *c.key / 10 : 0;
         if (f == fn::spindle_cw || f == fn::spindle_ccw || f == fn::spindle_stop) {
             state_.spindle_on = f != fn::spindle_stop;
@@ -421,10 +424,10 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             frames_.clear();
             return;
         } else if (f == fn::subprogram_call) {
-            call_subprogram(frame, view, words);
+            call_subprogram(ctx);
             return;
         } else if (f == fn::local_subprogram_call) {
-            call_local_subprogram(frame, view, words);   // [Haas] M97 (executor_local_call.cpp)
+            call_local_subprogram(ctx);   // [Haas] M97 (executor_local_call.cpp)
             return;
         } else if (f == fn::thread_chamfer_on || f == fn::thread_chamfer_off) {
             state_.thread_chamfer = f == fn::thread_chamfer_on;   // [Haas] M23 / M24 (cycles/haas_lathe.cpp)
@@ -433,19 +436,19 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             emit(e);
             const auto* p = words.get('P');
             if (frames_.size() == 1) {
-                main_program_pass(frame, view, p);
+                main_program_pass(frame, ctx, p);
                 return;
             }
             if (--frame.repeats_left > 0) {
                 frame.block = frame.start_block;
                 return;
             }
-            pop_frame();
+            pop_frame();   // ctx.frame is gone: only ctx.source() is read below
             if (p) {
                 // M99 P n: back to sequence number n of the caller (dialects.md §3.6).
                 Frame& caller = frames_.back();
                 if (const auto label = find_label(caller, p->value)) caller.block = *label;
-                else alarm(caller, view, 78, fmt::format("M99 P{}: no N{} in the calling program (alarm 078)", p->value, p->value));
+                else alarm(ctx, 78, fmt::format("M99 P{}: no N{} in the calling program (alarm 078)", p->value, p->value));
             }
             return;
         }

@@ -15,10 +15,10 @@ namespace kerf::interpreter {
 
 namespace fn = dialects::functions;
 
-std::optional<int> Executor::position_offset_factor() const {
+std::optional<int> Executor::position_offset_factor(const BlockContext& ctx) const {
     // The factor is a trait of the code's function (dialects/functions.hpp): no string compare per block.
-    if (!(scan_.classes & kPositionOffsetCode)) return std::nullopt;
-    for (const ast::CodeRef& c : scan_.g)
+    if (!(ctx.scan.classes & kPositionOffsetCode)) return std::nullopt;
+    for (const ast::CodeRef& c : ctx.scan.g)
         if (c.info && c.info->position_offset() != 0) return c.info->position_offset();
     return std::nullopt;
 }
@@ -30,15 +30,16 @@ double Executor::d_register() const {
     return it == memory_.tools.end() ? 0 : (it->second.radius + it->second.radius_wear) / unit_scale();
 }
 
-bool Executor::position_offset_move(const ast::BlockView& view, const BlockWords& words, int factor, const Position& start,
+bool Executor::position_offset_move(const BlockContext& ctx, int factor, const Position& start,
                                     const Position& to) {
+    const BlockWords& words = ctx.words;
     const double d = d_register();
     const dialects::FunctionId motion = state_.flags.motion;
     // An arc needs its centre words: seed 004 N11 `G45 Y0.` and N12 follow the G02 of N10 and
     // still move straight, "10 mm in Y" (semantics.md §9.3 table) [inference: the seed's intent].
     const bool centre = words.get('I') || words.get('J') || words.get('K') || words.get('R');
     if ((motion == fn::circular_cw || motion == fn::circular_ccw) && centre) {
-        if (!position_offset_arc(view, words, motion == fn::circular_cw, factor * d, start, to)) return false;
+        if (!position_offset_arc(ctx, motion == fn::circular_cw, factor * d, start, to)) return false;
     } else {
         Position end = state_.position;
         const auto offset_axis = [&](char letter) {
@@ -50,7 +51,7 @@ bool Executor::position_offset_move(const ast::BlockView& view, const BlockWords
         for (const auto& [letter, w] : words.words)
             if (!w.data && dialect_.lexical.is_axis(letter)) offset_axis(letter);
         for (const auto& [letter, w] : words.incremental) offset_axis(letter);
-        move(motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, *frame_, view);
+        move(motion == fn::rapid ? EventKind::rapid : EventKind::linear, end, ctx);
     }
     state_.programmed = state_.position == to ? std::nullopt : std::optional<Position>(to);
     state_.programmed_by_offset = state_.programmed.has_value();
@@ -59,11 +60,12 @@ bool Executor::position_offset_move(const ast::BlockView& view, const BlockWords
 
 // An arc under G45–G48: the radius grows by `change` (R40 → R50 for G45 D10), the centre and the
 // end point scaled about the tool's start by the same ratio (semantics.md §9.3, N7 and N10).
-bool Executor::position_offset_arc(const ast::BlockView& view, const BlockWords& words, bool cw, double change,
+bool Executor::position_offset_arc(const BlockContext& ctx, bool cw, double change,
                                    const Position& start, const Position& to) {
+    const BlockWords& words = ctx.words;
     const motion::ArcResult arc = arc_geometry(cw, start, to, words);
     if (!arc) {
-        alarm(*frame_, view, arc.error().fanuc_alarm, fmt::format("arc: {}", motion::describe(arc.error().code)));
+        alarm(ctx, arc.error().fanuc_alarm, fmt::format("arc: {}", motion::describe(arc.error().code)));
         return false;
     }
     const double scale = unit_scale();
@@ -78,7 +80,7 @@ bool Executor::position_offset_arc(const ast::BlockView& view, const BlockWords&
     };
     const Position end = from_geometric(scaled(arc.arc().end), to, setup_.diameter_x, scale);
     const Position center = from_geometric(scaled(arc.arc().center), to, setup_.diameter_x, scale);
-    cycle_arc(cw, end, center, view);
+    cycle_arc(cw, end, center, ctx);
     return !stopped_;
 }
 

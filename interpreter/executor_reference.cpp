@@ -22,14 +22,14 @@ bool programmed(const BlockWords& words, std::size_t axis) {
 }  // namespace
 
 // nullopt: the block has none of these codes; otherwise whether the tool moved.
-std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view, const BlockWords& words) {
-    if (!(scan_.classes & kOneShotCode)) return std::nullopt;   // the common block: no group-00 code
-    const Frame& f = *frame_;
-    const bool g53 = has_function(view, fn::machine_coordinate_select) || has_function(view, fn::machine_coordinate_select_g0_g1);
-    const bool g28 = has_function(view, fn::reference_return);
-    const bool g30 = has_function(view, fn::reference_return_nth);
-    const bool g29 = has_function(view, fn::return_from_reference);
-    const bool g27 = has_function(view, fn::reference_return_check);
+std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
+    if (!(ctx.scan.classes & kOneShotCode)) return std::nullopt;   // the common block: no group-00 code
+    const bool g53 = has_function(ctx, fn::machine_coordinate_select) || has_function(ctx, fn::machine_coordinate_select_g0_g1);
+    const bool g28 = has_function(ctx, fn::reference_return);
+    const bool g30 = has_function(ctx, fn::reference_return_nth);
+    const bool g29 = has_function(ctx, fn::return_from_reference);
+    const bool g27 = has_function(ctx, fn::reference_return_check);
     if (!g53 && !g28 && !g30 && !g29 && !g27) return std::nullopt;
     bool moves = false;
     const Position to = target_position(words, moves);
@@ -37,7 +37,7 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
     if (g27) {
         // [FANUC] G27 reference position return check: a rapid positioning to the programmed point
         // (which should be the reference point; the check lamp is the machine's, not the trace's).
-        move(EventKind::rapid, to, f, view);
+        move(EventKind::rapid, to, ctx);
         return !stopped_;
     }
     if (g53) {
@@ -50,8 +50,8 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
                 target[a] = (axis_value(w, letter) * axis_scale(a) - offset[a]) / axis_scale(a);
             }
         // pcnc-mill G53 follows the active G00/G01 and its feed (§2.2); FANUC G53 is a rapid.
-        const bool feed = has_function(view, fn::machine_coordinate_select_g0_g1) && state_.flags.motion == fn::linear;
-        move(feed ? EventKind::linear : EventKind::rapid, target, f, view);
+        const bool feed = has_function(ctx, fn::machine_coordinate_select_g0_g1) && state_.flags.motion == fn::linear;
+        move(feed ? EventKind::linear : EventKind::rapid, target, ctx);
         return !stopped_;
     }
     if (g29) {
@@ -60,10 +60,10 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
         Position mid = state_.position;
         for (std::size_t a = 0; a < kAxisCount; ++a)
             if (programmed(words, a) && state_.intermediate[a]) mid[a] = *state_.intermediate[a];
-        move(EventKind::rapid, mid, f, view);
+        move(EventKind::rapid, mid, ctx);
         if (stopped_) return false;
         bool unused = false;
-        move(EventKind::rapid, target_position(words, unused), f, view);
+        move(EventKind::rapid, target_position(words, unused), ctx);
         return !stopped_;
     }
     int point = 1;
@@ -72,7 +72,7 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
         point = p ? static_cast<int>(std::lround(p->value)) : setup_.g30_default_p;
         // P1 is the G28 point (pcnc-mill, dialects.md §8); P2..P4 the others.
         if (point < 1 || point > 4) {
-            alarm(f, view, 46, fmt::format("G30 P{}: P must be 1 to 4 (alarm 046)", point));
+            alarm(ctx, 46, fmt::format("G30 P{}: P must be 1 to 4 (alarm 046)", point));
             return false;
         }
     }
@@ -86,14 +86,14 @@ std::optional<bool> Executor::apply_reference_motion(const ast::BlockView& view,
     }
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a)) state_.intermediate[a] = via[a];
-    move(EventKind::rapid, via, f, view);
+    move(EventKind::rapid, via, ctx);
     if (stopped_) return false;
     const Position offset = machine_offset();
     Position home = state_.position;
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a))
             home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / axis_scale(a);
-    move(EventKind::rapid, home, f, view);
+    move(EventKind::rapid, home, ctx);
     return !stopped_;
 }
 

@@ -23,7 +23,8 @@ Position Executor::from_program(const Position& program) const {
 // clockwise on ADV400: the machine's g68_positive switch says which, and its default "dialect"
 // reads the dialect's function id (machine.cpp resolve_for_dialect), so a machine file that writes
 // "ccw" wins over the ADV400 table.
-void Executor::apply_rotation(const ast::BlockView&, const BlockWords& words) {
+void Executor::apply_rotation(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     Rotation r;
     r.plane = state_.flags.plane;
     const auto [i, j] = plane_indices(r.plane);

@@ -85,7 +85,7 @@ constexpr AdditionalRange kAdditionalOffsets[] = {{7001, 48}, {14001, 300}};
 
 std::optional<macro::Value> ExecutorSystemVariables::read(int number) { return executor_.read_system(number); }
 macro::WriteResult ExecutorSystemVariables::write(int number, macro::Value value) {
-    return executor_.write_system(number, value);
+    return executor_.write_system(block_, number, value);
 }
 bool ExecutorSystemVariables::read_only(int number) const { return executor_.system_read_only(number); }
 bool ExecutorSystemVariables::modelled(int number) const { return executor_.system_modelled(number); }
@@ -115,7 +115,7 @@ bool Executor::system_read_only(int number) const {
            number == 3007 || number == 3011 || number == 3012;
 }
 
-std::optional<macro::Value> Executor::read_system(int number) {
+std::optional<macro::Value> Executor::read_system(int number) const {
     using macro::Value;
     // The dialect's own ranges first (Haas NGC #10000..: executor_dialect_variables.cpp).
     if (const dialects::VariableRange* range = dialect_.variable_range(number)) return read_dialect_variable(*range, number);
@@ -201,20 +201,25 @@ std::optional<std::pair<int, std::size_t>> Executor::additional_variable(int num
     return std::nullopt;
 }
 
-macro::WriteResult Executor::write_system(int number, macro::Value value) {
+macro::WriteResult Executor::write_system(const BlockContext* ctx, int number, macro::Value value) {
     using macro::WriteResult;
-    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return write_dialect_variable(*range, number, value);
+    // Only a block's assignments write (executor_macro.cpp); the readers' hook (RunOptions::after_block) does not.
+    if (!ctx) return WriteResult::read_only;
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) {
+        ExecutorSystemVariables system(*this, *ctx);
+        return write_dialect_variable(*range, number, value, system);
+    }
     const double v = value.or_zero();
     const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
     if (number == 3000) {
         // Macro alarm: number 3000 + n, the comment of the block is the message ([FANUC]).
-        alarm(*frame_, *view_, 3000 + static_cast<int>(std::lround(v)), block_comment(*view_));
+        alarm(*ctx, 3000 + static_cast<int>(std::lround(v)), block_comment(ctx->view));
         return WriteResult::ok;
     }
     if (number == 3006) {
-        Event e = event_at(EventKind::stop, *frame_, *view_);
+        Event e = event_at(EventKind::stop, *ctx);
         e.code = 3006;
-        e.text = block_comment(*view_);
+        e.text = block_comment(ctx->view);
         emit(e);
         if (options_.stop_at_m00) stopped_ = true;
         return WriteResult::ok;

@@ -32,32 +32,33 @@ bool has_axis_word(const BlockWords& words) {
 // The block's G15/G16, G50/G51, G50.1/G51.1. False when the block has G51, G51.1 or G50.1 with
 // axis words: they are a centre or mirror positions, and the block does not move (like G68); a
 // bare `G50.1` in a safety block lets the rest of the block (M codes) run.
-bool Executor::apply_program_transforms(const ast::BlockView& view, const BlockWords& words) {
+bool Executor::apply_program_transforms(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const bool axis_words = has_axis_word(words);
     bool moves = true;
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || !(code_class_of(*c.info) & kProgramTransformCode)) continue;
         const dialects::FunctionId f = c.info->function;
         if (f == fn::polar_coordinate_command || f == fn::polar_coordinate_command_cancel) {
             const bool on = f == fn::polar_coordinate_command;
-            if (on != state_.polar_command) note_transform(view, on ? "polar coordinate command (G16)" : "polar coordinate command cancel (G15)");
+            if (on != state_.polar_command) note_transform(ctx, on ? "polar coordinate command (G16)" : "polar coordinate command cancel (G15)");
             state_.polar_command = on;
         } else if (f == fn::scaling) {
-            start_scaling(view, words);
+            start_scaling(ctx);
             moves = !axis_words;
         } else if (f == fn::scaling_cancel && state_.scaling) {
             state_.scaling.reset();
-            note_transform(view, "scaling cancel (G50)");
+            note_transform(ctx, "scaling cancel (G50)");
         } else if (f == fn::mirror || f == fn::mirror_cancel) {
-            set_mirror(view, words, f == fn::mirror);
+            set_mirror(ctx, f == fn::mirror);
             moves = !axis_words;
         }
     }
     return moves;
 }
 
-void Executor::note_transform(const ast::BlockView& view, std::string text) {
-    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+void Executor::note_transform(const BlockContext& ctx, std::string text) {
+    Event e = event_at(EventKind::coordinate_change, ctx);
     e.text = std::move(text);
     emit(std::move(e));
 }
@@ -71,7 +72,8 @@ double Executor::magnification(const Word& w) const {
 // one is centred on the current point. P is a magnification from 0 up: zero or negative is FANUC
 // alarm 142 (illegal scale rate), as is a zero I/J/K. Without P, I, J, K the magnification is 1
 // (FANUC reads parameter 5411 there; kerf has no such setting).
-void Executor::start_scaling(const ast::BlockView& view, const BlockWords& words) {
+void Executor::start_scaling(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     Scaling s;
     // The centre is in the frame scaling maps from: inside G51.1 (a mirror is its own inverse),
     // outside G68 (FANUC nesting G51.1 ⊃ G51 ⊃ G68; transforms.hpp).
@@ -86,20 +88,21 @@ void Executor::start_scaling(const ast::BlockView& view, const BlockWords& words
         if (const auto* k = words.get(static_cast<char>('I' + a))) s.factor[a] = magnification(*k);
     const bool bad = (p && s.factor[0] <= 0) || std::any_of(s.factor.begin(), s.factor.end(), [](double k) { return k == 0; });
     if (bad) {
-        alarm(*frame_, view, 142, fmt::format("G51: magnification {:g} {:g} {:g} is not allowed (FANUC alarm 142, illegal "
+        alarm(ctx, 142, fmt::format("G51: magnification {:g} {:g} {:g} is not allowed (FANUC alarm 142, illegal "
                                               "scale rate: P must be positive, I/J/K not zero)",
                                               s.factor[0], s.factor[1], s.factor[2]));
         return;
     }
     state_.scaling = s;
-    note_transform(view, fmt::format("scaling (G51) about X{:g} Y{:g} Z{:g}, magnification X{:g} Y{:g} Z{:g}", s.center[0],
+    note_transform(ctx, fmt::format("scaling (G51) about X{:g} Y{:g} Z{:g}, magnification X{:g} Y{:g} Z{:g}", s.center[0],
                                      s.center[1], s.center[2], s.factor[0], s.factor[1], s.factor[2]));
 }
 
 // `G51.1 X_ Y_ ...`: each named axis is mirrored about the given position (absolute program
 // coordinates); `G50.1 X_ ...` cancels the named axes, and kerf reads a G50.1 without axis words
 // as cancelling all of them (FANUC wants the axes named) [FANUC].
-void Executor::set_mirror(const ast::BlockView& view, const BlockWords& words, bool on) {
+void Executor::set_mirror(const BlockContext& ctx, bool on) {
+    const BlockWords& words = ctx.words;
     const bool named = has_axis_word(words);
     std::string axes;
     for (std::size_t a = 0; a < kAxisCount; ++a) {
@@ -114,7 +117,7 @@ void Executor::set_mirror(const ast::BlockView& view, const BlockWords& words, b
         }
     }
     if (axes.empty()) return;
-    note_transform(view, on ? fmt::format("mirror image (G51.1) about{}", axes) : fmt::format("mirror image cancel (G50.1){}", axes));
+    note_transform(ctx, on ? fmt::format("mirror image (G51.1) about{}", axes) : fmt::format("mirror image cancel (G50.1){}", axes));
 }
 
 // G16 [FANUC]: in the plane of G17/G18/G19 the first axis word is the radius, the second the

@@ -37,13 +37,13 @@ macro::Options Executor::macro_options(bool address) const {
     return o;
 }
 
-bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
-    const ast::SyntaxTree& tree = view.tree();
+bool Executor::evaluate_words(const BlockContext& ctx, BlockWords& out) {
+    const ast::SyntaxTree& tree = ctx.view.tree();
     const dialects::LexicalRules& rules = dialect_.lexical;
     // Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words)
     // do not move the tool and do not set the modal F, S or T (the codes' parameter_words).
-    const std::uint32_t data = scan_.data_letters;
-    const auto tokens = view.tokens();
+    const std::uint32_t data = ctx.scan.data_letters;
+    const auto tokens = ctx.view.tokens();
     for (std::uint32_t i = 0; i < tokens.size(); ++i) {
         const ast::Token& t = tokens[i];
         if (t.kind != ast::TokenKind::word || t.has(ast::token_flags::value_none)) continue;
@@ -51,7 +51,7 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
             t.role() == ast::Role::program)
             continue;
         BlockWords::Word w;
-        w.token = view.first_token() + i;
+        w.token = ctx.view.first_token() + i;
         w.has_point = t.has(ast::token_flags::has_point);
         const bool letter = t.letter >= 'A' && t.letter <= 'Z';
         const std::uint32_t bit = letter ? 1u << (t.letter - 'A') : 0u;
@@ -59,7 +59,7 @@ bool Executor::evaluate_words(const ast::BlockView& view, BlockWords& out) {
         if (t.has(ast::token_flags::value_expr)) {
             const macro::Result r = macro::evaluate(tree, t.payload, variables_, macro_options(true));
             if (r.error) {
-                alarm(*frame_, view, r.error->alarm, r.error->message);
+                alarm(ctx, r.error->alarm, r.error->message);
                 return false;
             }
             if (r.value.vacant) continue;   // a vacant variable omits the address (FANUC macro B)
@@ -102,25 +102,26 @@ double Executor::current_rpm(double x_diameter) const {
     return rpm;
 }
 
-void Executor::apply_feed_speed_tool(const ast::BlockView& view, const BlockWords& words) {
+void Executor::apply_feed_speed_tool(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     if (const auto* f = words.get('F'); f && !f->data) state_.feed = f->value;
     if (const auto* s = words.get('S'); s && !s->data) {
-        if (has_function(view, fn::coordinate_system_setting)) {
+        if (has_function(ctx, fn::coordinate_system_setting)) {
             state_.max_rpm = s->value;   // G50 S / G92 S: the clamp for G96 (semantics.md §4.1)
-        } else if (has_function(view, fn::css_on) || (state_.flags.css && !has_function(view, fn::css_off))) {
+        } else if (has_function(ctx, fn::css_on) || (state_.flags.css && !has_function(ctx, fn::css_off))) {
             state_.css = s->value;
         } else {
             state_.spindle_rpm = s->value;
         }
     }
-    if (const auto* t = words.get('T'); t && !t->data) apply_tool_word(view, static_cast<int>(std::lround(t->value)));
+    if (const auto* t = words.get('T'); t && !t->data) apply_tool_word(ctx, static_cast<int>(std::lround(t->value)));
 }
 
 // T per the dialect's tool word (dialects.md §3.5): `mmnn` = tool mm, offset nn (`T0` / `Tmm00`
 // cancel the offset; the offset applies at once, moving the machine position, not the work
 // position); `number` = a tool number. A turret (lathe) indexes at the T word, a mill's magazine
 // changes on M06.
-void Executor::apply_tool_word(const ast::BlockView& view, int value) {
+void Executor::apply_tool_word(const BlockContext& ctx, int value) {
     const bool split = dialect_.lexical.tool_word == "mmnn";
     const int tool = split ? value / 100 : value;
     if (split) state_.tool_offset = value % 100;
@@ -129,7 +130,7 @@ void Executor::apply_tool_word(const ast::BlockView& view, int value) {
         return;
     }
     if (tool == 0 || tool == state_.tool) return;
-    Event e = event_at(EventKind::tool_change, *frame_, view);
+    Event e = event_at(EventKind::tool_change, ctx);
     e.tool = tool;
     e.code = state_.tool_offset;
     state_.tool = tool;
@@ -137,10 +138,10 @@ void Executor::apply_tool_word(const ast::BlockView& view, int value) {
     emit(e);
 }
 
-void Executor::apply_modal_codes(const ast::BlockView& view) {
+void Executor::apply_modal_codes(const BlockContext& ctx) {
     // Several codes of one group in a block: the last one wins (semantics.md §1.1).
     bool changed = false;          // a group other than motion changed: derive every flag again
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || c.info->has(dialects::traits::one_shot) || c.info->group.empty()) continue;
         // Nearly every block has a G00/G01/G02/G03 and most repeat the active one.
         const bool motion_group = c.info->has(dialects::traits::motion_group);
@@ -155,16 +156,17 @@ void Executor::apply_modal_codes(const ast::BlockView& view) {
         }
     }
     if (changed) update_flags();
-    cancel_cycle_by_motion_code();   // drilling cycles (executor_cycles.cpp)
+    cancel_cycle_by_motion_code(ctx);   // drilling cycles (executor_cycles.cpp)
 }
 
 // What #4102..#4120 read: the last B D E F H M N O S T (FANUC "modal information").
-void Executor::remember_words(const ast::BlockView&, const BlockWords& words) {
+void Executor::remember_words(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     for (const char letter : {'B', 'D', 'E', 'F', 'H', 'S', 'T'})
         if (const auto* w = words.get(letter)) state_.last_words[static_cast<std::size_t>(letter - 'A')] = w->value;
-    for (const ast::CodeRef& c : scan_.m)
+    for (const ast::CodeRef& c : ctx.scan.m)
         if (c.key) state_.last_words['M' - 'A'] = static_cast<double>(*c.key) / 10.0;
-    if (scan_.sequence) state_.last_words['N' - 'A'] = *scan_.sequence;
+    if (ctx.scan.sequence) state_.last_words['N' - 'A'] = *ctx.scan.sequence;
 }
 
 Position Executor::machine_offset() const {
@@ -186,11 +188,11 @@ const Position& Executor::active_work_offset() const {
     return it == memory_.additional_offsets.end() ? kZero : it->second;
 }
 
-std::optional<int> Executor::additional_number(const ast::BlockView& view, std::optional<double> p) {
+std::optional<int> Executor::additional_number(const BlockContext& ctx, std::optional<double> p) {
     const long n = p ? std::lround(*p) : 1;
     if (n >= 1 && n <= setup_.additional_work_offset_count && (!p || *p == static_cast<double>(n)))
         return static_cast<int>(n);
-    alarm(*frame_, view, alarms::offset_number,
+    alarm(ctx, alarms::offset_number,
           fmt::format("additional work offset P{:g}: the machine has P1 to P{} (alarm 030, additional_work_offset_count)",
                       p.value_or(1.0), setup_.additional_work_offset_count));
     return std::nullopt;
@@ -206,8 +208,9 @@ Position Executor::tool_offset() const {
     return p;
 }
 
-bool Executor::apply_coordinate_operations(const ast::BlockView& view, const BlockWords& words) {
-    for (const ast::CodeRef& c : scan_.g) {
+bool Executor::apply_coordinate_operations(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || (code_class_of(*c.info) & kMotionCode)) continue;   // G00/G01...: none of these
         const dialects::FunctionId f = c.info->function;
         if (c.info->work_coordinate() != 0) {   // G54–G59
@@ -226,14 +229,14 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             if (const auto* w = words.get('P')) p = w->value;
             for (const auto& [letter, value] : c.info->implied)
                 if (letter == 'P' && !p) p = value;
-            const auto n = additional_number(view, p);
+            const auto n = additional_number(ctx, p);
             if (!n) return false;
             change_offsets([&] { state_.additional_system = *n; });
         } else if (f == fn::programmable_data_input) {
-            apply_data_input(view, words);
+            apply_data_input(ctx);
             return false;   // no motion in a G10 block
         } else if (f == fn::coordinate_rotation || f == fn::coordinate_rotation_cw) {
-            apply_rotation(view, words);
+            apply_rotation(ctx);
             return false;   // G68 sets the rotation; the next block moves (semantics.md §2.9)
         } else if (f == fn::coordinate_rotation_cancel) {
             state_.rotation.reset();
@@ -255,7 +258,7 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
             }
             return false;
         } else if (f == fn::local_system_shift || f == fn::local_system_current_point) {
-            apply_local_system(view, words, f == fn::local_system_current_point);
+            apply_local_system(ctx, f == fn::local_system_current_point);
             return false;   // G52 does not move the tool (semantics.md §2.4)
         } else if (f == fn::local_system_cancel) {
             change_offsets([&] { state_.local_shift = {}; });   // G152 (pcnc-mill)
@@ -278,7 +281,8 @@ bool Executor::apply_coordinate_operations(const ast::BlockView& view, const Blo
 // G52, semantics.md §2.4. FANUC: the local origin is the work origin plus the programmed vector
 // (G52 X0 Z0 cancels). pcnc/ADV400 (the machine's g52 switch, or the dialect's function id): the
 // current point takes the programmed values on the programmed axes; all zeros cancel (ADV400).
-void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& words, bool current_point_code) {
+void Executor::apply_local_system(const BlockContext& ctx, bool current_point_code) {
+    const BlockWords& words = ctx.words;
     const bool current_point = current_point_code || setup_.g52_current_point;
     bool all_zero = true;
     for (const auto& [letter, w] : words.words)
@@ -298,7 +302,7 @@ void Executor::apply_local_system(const ast::BlockView& view, const BlockWords& 
             state_.local_shift[a] = current_point ? state_.local_shift[a] + (state_.position[a] - v) * axis_scale(a) : v * axis_scale(a);
         }
     });
-    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+    Event e = event_at(EventKind::coordinate_change, ctx);
     e.text = "local coordinate system (G52)";
     emit(e);
 }

@@ -54,36 +54,37 @@ motion::P2 Executor::transform_point(const Position& p) const {
     return {plane_mm(t.linear, p[t.linear]), p[t.rotary] * unit_scale()};   // the virtual axis: mm, never a diameter
 }
 
-std::optional<bool> Executor::apply_plane_transform(const ast::BlockView& view, const BlockWords& words) {
+std::optional<bool> Executor::apply_plane_transform(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     if (state_.transform) {
-        if (const auto improper = improper_in_transform(view)) {
-            alarm(*frame_, view, state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
+        if (const auto improper = improper_in_transform(ctx)) {
+            alarm(ctx, state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
                   fmt::format("{} is not allowed in {} mode ([FANUC] alarm {})", *improper, state_.transform->code,
                               state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical));
             return false;
         }
     }
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info) continue;
         const dialects::FunctionId f = c.info->function;
         if (f == fn::polar_interpolation_off && state_.transform && state_.transform->map.kind == motion::PlaneMap::Kind::polar) {
-            if (!transform_switch_allowed(view, c.info->spelling)) return false;
+            if (!transform_switch_allowed(ctx, c.info->spelling)) return false;
             state_.transform.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
         } else if (f == fn::polar_interpolation_on && !state_.transform) {
-            if (!transform_switch_allowed(view, c.info->spelling)) return false;
-            if (words.get('C')) return start_polar_with_c(view, words, c.info->spelling);
+            if (!transform_switch_allowed(ctx, c.info->spelling)) return false;
+            if (words.get('C')) return start_polar_with_c(ctx, c.info->spelling);
             start_polar(c.info->spelling);
         } else if (f == fn::cylindrical_interpolation) {
-            if (!cylindrical_code(view, words, c.info->spelling)) return false;
+            if (!cylindrical_code(ctx, c.info->spelling)) return false;
             if (!state_.transform) return std::nullopt;   // G07.1 C0: the block's other words run as usual
         }
     }
     if (!state_.transform) return std::nullopt;
-    return transform_move(view, words);
+    return transform_move(ctx);
 }
 
-std::optional<std::string> Executor::improper_in_transform(const ast::BlockView&) const {
-    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+std::optional<std::string> Executor::improper_in_transform(const BlockContext& ctx) const {
+    for (const std::vector<ast::CodeRef>* codes : {&ctx.scan.g, &ctx.scan.m})
         for (const ast::CodeRef& c : *codes) {
             if (!c.info) continue;
             // [FANUC] the modes allow motion G00–G03, dwell, compensation, feed modes and macro
@@ -116,8 +117,9 @@ void Executor::start_polar(const std::string& spelling) {
 }
 
 // Seed 001 §10.11 writes `G112 C45`: the meaning of C is unknown (cycles.md §18): said, not moved.
-bool Executor::start_polar_with_c(const ast::BlockView& view, const BlockWords& words, const std::string& spelling) {
-    Event e = event_at(EventKind::message, *frame_, view);
+bool Executor::start_polar_with_c(const BlockContext& ctx, const std::string& spelling) {
+    const BlockWords& words = ctx.words;
+    Event e = event_at(EventKind::message, ctx);
     e.text = fmt::format("{} C{}: a C word in the {} block has no known meaning (cycles.md §18): ignored", spelling,
                          words.get('C')->value, spelling);
     emit(e);
@@ -127,19 +129,20 @@ bool Executor::start_polar_with_c(const ast::BlockView& view, const BlockWords& 
         if (letter != 'C') rest.words.set(letter, word);
     for (const auto& [letter, word] : words.incremental)
         if (letter != 'C') rest.incremental.set(letter, word);
-    return transform_move(view, rest);
+    return transform_move(ctx.with(rest));
 }
 
 // G07.1 C r starts cylindrical interpolation on a cylinder of radius r (mm), G07.1 C0 ends it
 // (cycles.md §19). The rotary word names the axis: C turns about Z (lathes), A about X, B about
 // Y. C is then programmed in mm of arc: the tool's angle at the start is that many mm of arc.
-bool Executor::cylindrical_code(const ast::BlockView& view, const BlockWords& words, const std::string& spelling) {
+bool Executor::cylindrical_code(const BlockContext& ctx, const std::string& spelling) {
+    const BlockWords& words = ctx.words;
     char letter = 0;
     for (const char l : {'C', 'A', 'B'})
         if (const auto* w = words.get(l); w && !letter) letter = l;
     const auto axes = letter ? cylinder_axes(letter) : std::nullopt;
     if (!axes) {
-        alarm(*frame_, view, kIllegalCylinderAxis,
+        alarm(ctx, kIllegalCylinderAxis,
               fmt::format("{} without the rotary axis and radius (G07.1 C<r>) ([FANUC] alarm {})", spelling,
                           kIllegalCylinderAxis));
         return false;
@@ -162,15 +165,16 @@ bool Executor::cylindrical_code(const ast::BlockView& view, const BlockWords& wo
 
 // A block in the mode: its end point in the Cartesian plane, the line or arc there, its pieces.
 // Under G41/G42 the tool centre's path is offset in the Cartesian plane first (polar_compensation.cpp).
-bool Executor::transform_move(const ast::BlockView& view, const BlockWords& words) {
+bool Executor::transform_move(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     PlaneTransform& t = *state_.transform;
     bool moves = false;
     const Position real = state_.position;
     state_.position = t.programmed;   // the block's words are measured from the programmed point
     const Position to = target_position(words, moves);
     state_.position = real;
-    note_drawing_outside_g01(view);
-    if (compensating() || (scan_.classes & kRadiusCompCode)) return transform_compensated(view, words, to, moves);
+    note_drawing_outside_g01(ctx);
+    if (compensating() || (ctx.scan.classes & kRadiusCompCode)) return transform_compensated(ctx, to, moves);
     const dialects::FunctionId motion = state_.flags.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves) return false;
@@ -180,18 +184,18 @@ bool Executor::transform_move(const ast::BlockView& view, const BlockWords& word
     if (arc) {
         const auto geometry = transform_arc(motion == fn::circular_cw, a, b, words);
         if (!geometry) {
-            transform_arc_alarm(view, geometry);
+            transform_arc_alarm(ctx, geometry);
             return false;
         }
         path = [g = geometry.arc()](double u) { return arc_point(g, u); };
     }
-    run_plane_path(motion == fn::rapid ? EventKind::rapid : EventKind::linear, path, {real, to, 0, 1}, view);
+    run_plane_path(motion == fn::rapid ? EventKind::rapid : EventKind::linear, path, {real, to, 0, 1}, ctx);
     if (!stopped_) t.programmed = to;
     return true;
 }
 
-void Executor::transform_arc_alarm(const ast::BlockView& view, const motion::ArcResult& geometry) {
-    alarm(*frame_, view, geometry.error().fanuc_alarm,
+void Executor::transform_arc_alarm(const BlockContext& ctx, const motion::ArcResult& geometry) {
+    alarm(ctx, geometry.error().fanuc_alarm,
           fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", state_.transform->code,
                       motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed));
 }
@@ -204,12 +208,12 @@ motion::P2 Executor::arc_point(const motion::Arc& arc, double u) {
 // A path of the Cartesian plane from the tool's point (path(0)) run as pieces of the real axes;
 // the axes outside the plane go from span.from toward span.to over the part [u0, u1] of the block.
 void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(double)>& path, const PathSpan& span,
-                              const ast::BlockView& view) {
+                              const BlockContext& ctx) {
     const PlaneTransform& t = *state_.transform;
     const double start_deg = state_.position[t.rotary] - t.origin_deg;
     const std::vector<motion::MappedPoint> pieces = motion::map_path(t.map, path, start_deg, setup_.transform_tolerance);
     const motion::P2 a = path(0);
-    if (kind != EventKind::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(view, pieces, a);
+    if (kind != EventKind::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(ctx, pieces, a);
     motion::P2 previous = a;
     for (const motion::MappedPoint& p : pieces) {
         const double u = span.u0 + (span.u1 - span.u0) * p.t;
@@ -224,7 +228,7 @@ void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(dou
                 const double d = plane_mm(axis, end[axis]) - plane_mm(axis, state_.position[axis]);
                 other_mm2 += d * d;
             }
-        transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), view);
+        transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), ctx);
         if (stopped_) return;
         previous = p.cartesian;
     }
@@ -250,14 +254,14 @@ motion::ArcResult Executor::transform_arc(bool cw, motion::P2 a, motion::P2 b, c
 // Near the centre of the polar plane the rotary axis must turn fast: at F mm/min and radius r it
 // turns F/r·(180/π) °/min; past the axis' rapid rate the control clamps it ([FANUC]) and the block
 // takes longer than the trace says (cycles.md §18 "a dry run should warn").
-void Executor::warn_rotary_speed(const ast::BlockView& view, const std::vector<motion::MappedPoint>& pieces, motion::P2 start) {
+void Executor::warn_rotary_speed(const BlockContext& ctx, const std::vector<motion::MappedPoint>& pieces, motion::P2 start) {
     const double limit = setup_.rapid_mm_min[state_.transform->rotary];
     const double feed = state_.feed * unit_scale();
     if (limit <= 0 || feed <= 0 || state_.flags.per_revolution) return;
     const double r = motion::min_radius(pieces, start);
     const double needed = r > 0 ? feed / r * kDegPerRad : INFINITY;
     if (needed <= limit) return;
-    Event e = event_at(EventKind::message, *frame_, view);
+    Event e = event_at(EventKind::message, ctx);
     e.text = fmt::format("{}: the path passes {:.3f} mm from the centre: C would turn {} °/min at F{}, over its rate "
                          "{} °/min: the control slows down and this block takes longer (cycles.md §18)",
                          state_.transform->code, r, std::isfinite(needed) ? fmt::format("{:.0f}", needed) : std::string("without limit"),
@@ -267,15 +271,15 @@ void Executor::warn_rotary_speed(const ast::BlockView& view, const std::vector<m
 
 // One piece: a rapid at the axes' own rates (executor_motion.cpp move), a feed piece timed along
 // its Cartesian length at F.
-void Executor::transform_piece(EventKind kind, const Position& to, double length_mm, const ast::BlockView& view) {
+void Executor::transform_piece(EventKind kind, const Position& to, double length_mm, const BlockContext& ctx) {
     if (kind == EventKind::rapid) {
-        move(kind, to, *frame_, view);
+        move(kind, to, ctx);
         return;
     }
-    if (!within_soft_limits(to, to, *frame_, view)) return;
+    if (!within_soft_limits(to, to, ctx)) return;
     Event e;
     e.kind = kind;
-    e.source = source(*frame_, view);
+    e.source = ctx.source();
     e.start = state_.position;
     e.end = to;
     e.length_mm = length_mm;

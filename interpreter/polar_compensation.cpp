@@ -28,14 +28,15 @@ constexpr int kIllegalConditions = 145;
 
 // The block's element in the Cartesian plane from the programmed point `start` (read ahead too:
 // comp_pieces comes here while a mode is on).
-std::optional<motion::Element> Executor::transform_element(const BlockWords& words, const Position& start,
+std::optional<motion::Element> Executor::transform_element(const BlockContext& ctx, const Position& start,
                                                             const Position& to, bool quiet) {
+    const BlockWords& words = ctx.words;
     const motion::P2 a = transform_point(start), b = transform_point(to);
     const dialects::FunctionId motion = state_.flags.motion;
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
         const motion::ArcResult geometry = transform_arc(motion == fn::circular_cw, a, b, words);
         if (!geometry) {
-            if (!quiet) transform_arc_alarm(*view_, geometry);
+            if (!quiet) transform_arc_alarm(ctx, geometry);
             return std::nullopt;
         }
         const motion::Vec3 c = geometry.arc().center;
@@ -44,9 +45,9 @@ std::optional<motion::Element> Executor::transform_element(const BlockWords& wor
     return motion::Element{a, b, false, {}, true};
 }
 
-bool Executor::transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves) {
+bool Executor::transform_compensated(const BlockContext& ctx, const Position& to, bool moves) {
     PlaneTransform& t = *state_.transform;
-    const int side = comp_side_of_block(state_.comp_side);
+    const int side = comp_side_of_block(ctx, state_.comp_side);
     const dialects::FunctionId motion = state_.flags.motion;
     const bool runs = motion == fn::rapid || motion == fn::linear || motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves || !runs) {
@@ -60,20 +61,20 @@ bool Executor::transform_compensated(const ast::BlockView& view, const BlockWord
         // the next move in the plane (as executor_compensation.cpp, semantics.md §5).
         state_.comp_side = side;
         const motion::P2 at = t.tool.value_or(transform_point(t.programmed));
-        run_plane_path(kind, [at](double) { return at; }, {state_.position, to, 0, 1}, view);
+        run_plane_path(kind, [at](double) { return at; }, {state_.position, to, 0, 1}, ctx);
         if (!stopped_) t.programmed = to;
         return true;
     }
     Position programmed_end = to;
-    const auto pieces = comp_pieces(view, words, t.programmed, to, false, programmed_end);
+    const auto pieces = comp_pieces(ctx, t.programmed, to, false, programmed_end);
     state_.comp_side = side;
     if (!pieces || pieces->empty()) return false;
     const Programmed& current = pieces->front().programmed;
-    const std::optional<Programmed> next = comp_look_ahead(scan_.block, to);
+    const std::optional<Programmed> next = comp_look_ahead(ctx, to);
     if (stopped_) return false;   // the block read ahead raised an alarm
-    const auto step = comp_step(current, next, view);
+    const auto step = comp_step(current, next, ctx);
     if (!step) return false;
-    run_transform_moves(*step, kind, to, view);
+    run_transform_moves(*step, kind, to, ctx);
     if (stopped_) return true;
     t.programmed = to;
     if (!state_.radius_comp.engaged()) t.tool.reset();   // cancelled: on the programmed point again
@@ -83,7 +84,7 @@ bool Executor::transform_compensated(const ast::BlockView& view, const BlockWord
 // The tool-centre moves of one step, each cut into pieces; the axes outside the plane share the
 // block's travel in proportion to the moves' lengths.
 void Executor::run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to,
-                                   const ast::BlockView& view) {
+                                   const BlockContext& ctx) {
     PlaneTransform& t = *state_.transform;
     const Position from = state_.position;
     std::vector<std::function<motion::P2(double)>> paths;
@@ -113,7 +114,7 @@ void Executor::run_transform_moves(const compensation::Step& step, EventKind kin
         const double u0 = total > 0 ? done / total : 0;
         done += lengths[i];
         const double u1 = total > 0 ? done / total : 1;
-        run_plane_path(kind, paths[i], {from, to, u0, u1}, view);
+        run_plane_path(kind, paths[i], {from, to, u0, u1}, ctx);
         if (stopped_) return;
         t.tool = paths[i](1);
     }
@@ -121,9 +122,9 @@ void Executor::run_transform_moves(const compensation::Step& step, EventKind kin
 
 // G12.1/G13.1 may only be given with the compensation cancelled ([FANUC] PS0145; every seed
 // program gives G40 before G113, cycles.md §18).
-bool Executor::transform_switch_allowed(const ast::BlockView& view, const std::string& spelling) {
+bool Executor::transform_switch_allowed(const BlockContext& ctx, const std::string& spelling) {
     if (!state_.radius_comp.engaged()) return true;
-    alarm(*frame_, view, kIllegalConditions,
+    alarm(ctx, kIllegalConditions,
           fmt::format("{} while tool radius compensation is on: cancel it with G40 and a move first ([FANUC] alarm {})",
                       spelling, kIllegalConditions));
     return false;
