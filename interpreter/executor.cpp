@@ -165,9 +165,9 @@ void Executor::emit(Event&& e, const Position& machine_end) {
 }
 
 Position Executor::machine_position_of(const Position& work) const {
-    const Position offset = machine_offset();
+    const Position offset = machine_offset(state_);
     Position m{};
-    for (std::size_t a = 0; a < kAxisCount; ++a) m[a] = work[a] * axis_scale(a) + offset[a];
+    for (std::size_t a = 0; a < kAxisCount; ++a) m[a] = work[a] * state_.axis_scale(a) + offset[a];
     return m;
 }
 
@@ -188,9 +188,14 @@ bool Executor::count_idle_move(const BlockContext& ctx) {
 }
 
 void Executor::alarm(const SourceRef& where, int number, std::string text) {
-    Event e = event_at(EventKind::alarm, where);
-    e.code = number;
-    e.text = std::move(text);
+    raise(Alarm{where, state_.position, number, std::move(text)});
+}
+
+void Executor::raise(Alarm alarm) {
+    Event e = event_at(EventKind::alarm, alarm.where);
+    e.start = e.end = alarm.at;
+    e.code = alarm.number;
+    e.text = std::move(alarm.text);
     emit(std::move(e));
     stopped_ = true;
 }
@@ -202,10 +207,10 @@ void Executor::pop_frame() {
 
 void Executor::change_offsets(const std::function<void()>& change) {
     // The tool does not move when an offset changes: its work coordinates do (semantics.md §2.7).
-    const Position before = machine_offset();
+    const Position before = machine_offset(state_);
     change();
-    const Position after = machine_offset();
-    for (std::size_t a = 0; a < kAxisCount; ++a) state_.position[a] += (before[a] - after[a]) / axis_scale(a);
+    const Position after = machine_offset(state_);
+    for (std::size_t a = 0; a < kAxisCount; ++a) state_.position[a] += (before[a] - after[a]) / state_.axis_scale(a);
 }
 
 // --- the loop ------------------------------------------------------------------------------------
@@ -217,9 +222,9 @@ RunResult Executor::run(ProgramRef main) {
     frames_.push_back(first);
     for (const auto& [number, value] : options_.preset) variables_.write(number, macro::Value::of(value));
     // The machine has been homed: the program starts at reference point 1 (semantics.md §2.8).
-    const Position offset = machine_offset();
+    const Position offset = machine_offset(state_);
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        state_.position[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
+        state_.position[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / state_.axis_scale(a) : 0.0;
     state_.machine_at = machine_position_of(state_.position);
     while (!frames_.empty() && !stopped_) {
         Frame& f = frames_.back();
@@ -298,7 +303,7 @@ void Executor::execute_block(Frame& frame) {
     const SourceRef where = ctx.source();
     const bool moved = apply_block_words(frame, ctx);
     if (options_.emit_state && !stopped_) emit_state(where);
-    if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(true));
+    if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(state_, true));
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
     if (moved && state_.modal_call && !stopped_ && frames_.size() == depth && !frame.modal_macro)
         push_macro_frame(ctx, state_.modal_call->program, state_.modal_call->repeats, state_.modal_call->arguments, true);

@@ -126,14 +126,23 @@ struct Frame {
 // executor stands for "the block being run". A block read ahead (direct drawing, compensation, a
 // G70–G73 profile) has a context of its own.
 struct BlockContext {
+    BlockContext(const Frame& f, const ast::BlockView& v, const BlockScan& s, const BlockWords& w,
+                 std::optional<dialects::FunctionId> m = std::nullopt)
+        : frame(f), view(v), scan(s), words(w), motion(m) {}
     const Frame& frame;          // the program level running it (gone after the block's M99 or M30, its last step)
     const ast::BlockView& view;
     const BlockScan& scan;       // its codes; scan.block is its index in the file, scan.source where it is
     const BlockWords& words;     // its evaluated words (empty until step 2 has evaluated them)
+    // The motion it runs with when that is not the modal one of the state (a G12/G13 quarter arc
+    // runs as G03/G02; a block read ahead is read with the motion it would run with).
+    std::optional<dialects::FunctionId> motion;
     std::uint32_t index() const { return scan.block; }
     const SourceRef& source() const { return scan.source; }
-    // The same block with other words (a G12 quarter arc with its centre words, G112 C without C).
-    BlockContext with(const BlockWords& other) const { return {frame, view, scan, other}; }
+    dialects::FunctionId motion_in(const MachineState& s) const { return motion.value_or(s.flags.motion); }
+    // The same block with other words (G112 C without its C), or run as another motion with them
+    // (a quarter arc with its centre words).
+    BlockContext with(const BlockWords& other) const { return {frame, view, scan, other, motion}; }
+    BlockContext running_as(const BlockWords& other, dialects::FunctionId m) const { return {frame, view, scan, other, m}; }
 };
 
 // Work coordinates (program units, lathe X diameter) → geometric mm (X radius).
@@ -141,21 +150,44 @@ motion::Vec3 geometric_mm(const Position& p, bool diameter_x, double scale);
 // And back: X, Y, Z of `g` in program units into a copy of `like` (whose other axes are kept).
 Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, double scale);
 
-// The system variables (#1000 and up) as the interpreter's state (executor_system.cpp). Built with a
-// block, they are that block's: its assignments write them (#3000 raises its alarm at the block).
-// Without one (the executor's own, behind RunOptions::after_block and DPRNT) they are read only.
+// The system variables (#1000 and up) as the interpreter's state (executor_system.cpp), read from one
+// machine state with the tool at `at` (the live state, or the one a block is read ahead with, at
+// the point it is read from). Built with a block they are that block's, and its assignments write
+// them into the run (#3000 raises its alarm at the block); otherwise (the executor's own behind
+// RunOptions::after_block and DPRNT, a look-ahead's) every write is refused.
 class ExecutorSystemVariables : public macro::SystemVariables {
 public:
-    explicit ExecutorSystemVariables(Executor& executor) : executor_(executor) {}
-    ExecutorSystemVariables(Executor& executor, const BlockContext& block) : executor_(executor), block_(&block) {}
+    ExecutorSystemVariables(const Executor& executor, const MachineState& state, const Position& at)
+        : executor_(executor), state_(state), at_(at) {}
+    ExecutorSystemVariables(Executor& executor, const BlockContext& block);
     std::optional<macro::Value> read(int number) override;
     macro::WriteResult write(int number, macro::Value value) override;
     bool read_only(int number) const override;
     bool modelled(int number) const override;
 
 private:
-    Executor& executor_;
+    const Executor& executor_;
+    const MachineState& state_;
+    const Position& at_;
+    Executor* writer_ = nullptr;          // with a block: the run its assignments write into
     const BlockContext* block_ = nullptr;
+};
+
+// An alarm as a value: where, with the tool where, what. Reading blocks ahead (const functions over a
+// copy of the machine state) returns it; the live block that asked raises it (Executor::raise).
+struct Alarm {
+    SourceRef where;
+    Position at{};   // the position of the state it was found in (the event's start and end)
+    int number = 0;
+    std::string text;
+};
+
+// A value read, or the alarm that stopped the reading (`value` is then meaningless).
+template <class T>
+struct OrAlarm {
+    T value{};
+    std::optional<Alarm> alarm;
+    bool ok() const { return !alarm; }
 };
 
 class Executor {
@@ -189,14 +221,14 @@ private:
     mutable std::uint32_t line_hint_ = 0;        // source(): the last line found, per file
     mutable std::uint32_t line_hint_file_ = ~0u;
     std::deque<Frame> frames_;   // a deque: pushing a call keeps references to the caller valid
-    ExecutorSystemVariables system_variables_{*this};
-    macro::Variables variables_{system_variables_};
-
     // The live machine state (machine_state.hpp: look-ahead reads blocks with a copy of it) and the
-    // machine's memory (offset registers, G54.1 offsets, dialect variables: never copied).
+    // machine's memory (offset registers, G54.1 offsets, dialect variables, macro variables: never
+    // copied; a block read ahead reads them through const functions only).
     MachineState state_{dialect_, setup_};
     MachineMemory memory_;
-    const Position& active_work_offset() const;    // G54–G59 or G54.1 Pn
+    ExecutorSystemVariables system_variables_{*this, state_, state_.position};   // read only: RunOptions::after_block, DPRNT
+    macro::Variables variables_{system_variables_};
+    const Position& active_work_offset(const MachineState& s) const;    // G54–G59 or G54.1 Pn
     // G54.1 Pn / G154 Pn / G10 L20 Pn: n from 1 to the machine's count, else alarm PS0030 (and nullopt).
     std::optional<int> additional_number(const BlockContext& ctx, std::optional<double> p);
     bool stopped_ = false;
@@ -211,8 +243,12 @@ private:
     bool push_macro_frame(const BlockContext& ctx, std::int64_t program, std::int64_t repeats,
                           const std::vector<std::pair<int, macro::Value>>& arguments, bool modal);
     std::optional<std::uint32_t> find_end(const Frame& frame, std::uint32_t from, int label) const;
-    bool evaluate_words(const BlockContext& ctx, BlockWords& out);
-    macro::Options macro_options(bool address) const;
+    // The block's words evaluated with the machine state `s` and the tool at `at` (the live state and
+    // position, or a block read ahead from where the running one ends); the alarm of the first
+    // expression that fails (it stands at `at`).
+    std::optional<Alarm> read_words(const MachineState& s, const Position& at, const BlockContext& ctx, BlockWords& out) const;
+    bool evaluate_words(const BlockContext& ctx, BlockWords& out);   // the live block's: its alarm raised
+    macro::Options macro_options(const MachineState& s, bool address) const;
     void remember_words(const BlockContext& ctx);
     void apply_feed_speed_tool(const BlockContext& ctx);
     void note_not_modelled(const BlockContext& ctx);
@@ -262,7 +298,8 @@ private:
     // said in a message and skipped; false when the program is not resident (alarm 078 follows).
     bool skip_resident_call(const BlockContext& ctx, std::int64_t program, std::string_view how);
     // [dialect variables] (executor_dialect_variables.cpp): nullopt/undefined when the range says so.
-    std::optional<macro::Value> read_dialect_variable(const dialects::VariableRange& range, int number) const;
+    std::optional<macro::Value> read_dialect_variable(const MachineState& s, const Position& at,
+                                                      const dialects::VariableRange& range, int number) const;
     macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value,
                                               macro::SystemVariables& system);
     void main_program_pass(Frame& frame, const BlockContext& ctx, const Word* p);   // M99 in the main program
@@ -276,17 +313,18 @@ private:
     SourceRef source(const Frame& f, const ast::BlockView& view) const;   // a block's place (the running one: ctx.source())
     bool has_function(const BlockContext& ctx, dialects::FunctionId function) const;
     bool modal_active(dialects::FunctionId function) const;
-    double axis_value(const BlockWords::Word& w, char letter) const;   // program units (mm, inch, deg)
-    double increment(char letter) const;   // least input increment of the letter, program units
-    Position target_position(const BlockWords& words, bool& moves) const;
-    Position to_program(const Position& work) const;     // undo G51.1, G51, G68 (transforms.hpp)
-    Position from_program(const Position& program) const;   // apply G68, G51, G51.1
-    Position machine_offset() const;
+    // What the words of a block mean in the machine state `s`. These and the functions that read a
+    // block ahead read the state they are given, never state_: a look-ahead gives its copy.
+    double axis_value(const MachineState& s, const BlockWords::Word& w, char letter) const;   // program units (mm, inch, deg)
+    double increment(const MachineState& s, char letter) const;   // least input increment of the letter, program units
+    // The block's target from `from` (the tool, or the programmed point it measures from).
+    Position target_position(const MachineState& s, const Position& from, const BlockWords& words, bool& moves) const;
+    Position to_program(const MachineState& s, const Position& work) const;     // undo G51.1, G51, G68 (transforms.hpp)
+    Position from_program(const MachineState& s, const Position& program) const;   // apply G68, G51, G51.1
+    Position machine_offset(const MachineState& s) const;
     Position machine_position_of(const Position& work) const;   // work + the offsets in force, mm
-    Position tool_offset() const;
-    double unit_scale() const { return state_.unit_scale(); }
-    double axis_scale(std::size_t a) const { return state_.axis_scale(a); }
-    double current_rpm(double x_diameter) const;
+    Position tool_offset(const MachineState& s) const;
+    double current_rpm(const MachineState& s, double x_diameter) const;
     // An event of this block at the current position (start = end), before its details are set.
     Event event_at(EventKind kind, const BlockContext& ctx) const { return event_at(kind, ctx.source()); }
     Event event_at(EventKind kind, const SourceRef& where) const;
@@ -302,6 +340,7 @@ private:
     double* tool_time_ = nullptr;
     void alarm(const BlockContext& ctx, int number, std::string text) { alarm(ctx.source(), number, std::move(text)); }
     void alarm(const SourceRef& where, int number, std::string text);
+    void raise(Alarm alarm);   // an alarm found reading (ahead): the event, and the run stops
     // A run bound reached (run_guard.hpp) while `where` runs, the tool at `at`: the alarm, and the
     // run stops.
     void limit_alarm(const SourceRef& where, const Position& at, LimitAlarm limit);
@@ -315,7 +354,6 @@ private:
     // rpm along the path (a line, or `arc` when not null), exact-stop acceleration.
     void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const;
     void arc_move(bool cw, const Position& to, const BlockContext& ctx);
-    motion::Plane plane() const { return state_.plane(); }
     // The block a jump to N`n` lands on in the frame's program: the first from the top, or with the
     // dialect's label_search = forward the first after the frame's current block, wrapping to the top.
     std::optional<std::uint32_t> find_label(const Frame& f, double n) const;
@@ -325,10 +363,9 @@ private:
     Frame* current_frame() { return frames_.empty() ? nullptr : &frames_.back(); }
 
     // System variables (executor_system.cpp).
-    std::optional<macro::Value> read_system(int number) const;
+    std::optional<macro::Value> read_system(const MachineState& s, const Position& at, int number) const;
     bool system_modelled(int number) const;
-    // A write of the block `ctx` (nullptr: a reader's hook, which writes nothing).
-    macro::WriteResult write_system(const BlockContext* ctx, int number, macro::Value value);
+    macro::WriteResult write_system(const BlockContext& ctx, int number, macro::Value value);   // an assignment of block `ctx`
     bool system_read_only(int number) const;
     std::optional<std::pair<int, std::size_t>> additional_variable(int number) const;   // #7001.., #14001..
 
@@ -347,43 +384,44 @@ private:
     // Profile N P .. N Q of the cycle block `ctx` (its blocks into `blocks`); nullopt after an alarm.
     std::optional<cycles::Profile> cycle_profile(const BlockContext& ctx, std::string_view spelling, double p, double q,
                                                  std::optional<ProfileBlocks>& blocks);
-    bool read_profile_block(const BlockContext& block, BlockWords& words, dialects::FunctionId& motion, cycles::Profile& profile,
-                            std::uint32_t last);
-    bool read_profile_drawing(const BlockContext& block, const Position& to, cycles::Profile& profile, std::uint32_t last);
+    struct ProfileRead {
+        cycles::Profile profile;
+        ProfileBlocks blocks{};
+    };
+    // The profile read ahead with a copy of the machine state (each block from the running profile
+    // point; the running block's state is not touched, cycles.md "Notation").
+    OrAlarm<ProfileRead> read_profile(const BlockContext& ctx, std::string_view spelling, double p, double q) const;
+    // One profile block into `profile`; `s` is the reading's state (its position the running point).
+    std::optional<Alarm> read_profile_block(MachineState& s, const BlockContext& block, BlockWords& words,
+                                            dialects::FunctionId& motion, cycles::Profile& profile, std::uint32_t last) const;
+    std::optional<Alarm> read_profile_drawing(MachineState& s, const BlockContext& block, const Position& to,
+                                              cycles::Profile& profile, std::uint32_t last) const;
     bool cycle_arc(bool cw, const Position& to, const Position& center, const BlockContext& ctx);
     motion::ArcOptions computed_arc_options() const;   // arcs kerf computed: radius check ≥ 0.1 µm
     // --- direct drawing (executor_drawing.cpp; the resolver is direct_drawing.hpp) ---------------
-    motion::P2 plane_point(const Position& p) const;
-    Position plane_position(motion::P2 p, const Position& like) const;
+    motion::P2 plane_point(const MachineState& s, const Position& p) const;
+    Position plane_position(const MachineState& s, motion::P2 p, const Position& like) const;
     // The resolver's view of a block whose words are `words`, programmed from `start` to `to`.
-    drawing::Block drawing_block(const BlockContext& ctx, bool linear, const Position& start, const Position& to);
-    // Reading a block ahead (direct drawing, compensation): the running block's position,
-    // programmed point and modal flags come back when this goes out of scope.
-    struct LookAheadScope {
-        Executor& ex;
-        Position position;
-        std::optional<Position> programmed;
-        ModalFlags flags;
-        explicit LookAheadScope(Executor& e)
-            : ex(e), position(e.state_.position), programmed(e.state_.programmed), flags(e.state_.flags) {}
-        ~LookAheadScope() {
-            ex.state_.position = position;
-            ex.state_.programmed = programmed;
-            ex.state_.flags = flags;
-        }
-        LookAheadScope(const LookAheadScope&) = delete;
-        LookAheadScope& operator=(const LookAheadScope&) = delete;
+    drawing::Block drawing_block(const MachineState& s, const Position& at, const BlockContext& ctx, bool linear,
+                                 const Position& start, const Position& to) const;
+    // A code block after the running one, read ahead: its scan and words live here.
+    struct BlockAhead {
+        ast::BlockView view;
+        BlockScan scan;
+        BlockWords words;
     };
-    // The next code block after block `after` (up to block `last` when given) as the resolver
-    // sees it, programmed from `from`; nullopt when there is none. Restores the running scan.
-    std::optional<drawing::Block> look_ahead(const BlockContext& ctx, std::optional<std::uint32_t> last, const Position& from);
-    // The moves of a direct-drawing block from the programmed point `start` (the tool at `tool`);
-    // nullopt after an alarm. `last`: the end of a cycle profile the look-ahead stays in.
-    std::optional<drawing::Result> resolve_drawing(const BlockContext& ctx, const Position& start, const Position& tool,
-                                                   const Position& to, std::optional<std::uint32_t> last);
+    // The next code block after `ctx` (up to block `last` when given) as the resolver sees it,
+    // programmed from `from` and read with `s` and the tool at `from`; nullopt when there is none.
+    OrAlarm<std::optional<drawing::Block>> look_ahead(const MachineState& s, const BlockContext& ctx,
+                                                      std::optional<std::uint32_t> last, const Position& from) const;
+    // The moves of a direct-drawing block from the programmed point `start` (the tool at `tool`),
+    // read with `s` from `at` (where its alarm stands). `last`: the end of a cycle profile the
+    // look-ahead stays in.
+    OrAlarm<drawing::Result> resolve_drawing(const MachineState& s, const Position& at, const BlockContext& ctx,
+                                             const Position& start, const Position& tool, const Position& to,
+                                             std::optional<std::uint32_t> last) const;
     // A G01 block with direct-drawing words, run: its line, chamfer or fillet (executor_drawing.cpp).
     bool draw_block(const BlockContext& ctx, const Position& start, const Position& to);
-    Position programmed_target(const BlockWords& words, bool& moves);   // target_position from state_.programmed
     // --- G45–G48 position offsets (executor_offsets.cpp, semantics.md §9.3) ----------------------
     std::optional<int> position_offset_factor(const BlockContext& ctx) const;   // ±1 / ±2 when the block has G45–G48
     double d_register() const;                             // the modal D's value, program units
@@ -397,20 +435,30 @@ private:
     bool compensating() const { return state_.comp_side != 0 || state_.radius_comp.engaged(); }
     // The block's motion under compensation (or its G40–G42 without motion); true when it moved.
     bool compensate_motion(const BlockContext& ctx, const Position& to, bool moves);
-    int comp_side_of_block(const BlockContext& ctx, int current) const;
-    bool full_circle(const BlockWords& words) const;          // the side the block's G40–G42 set
-    double comp_radius(const BlockWords& words) const;  // mm: D register (mill), nose radius (lathe)
+    int comp_side_of_block(const MachineState& s, const BlockContext& ctx, int current) const;   // the side its G40–G42 set
+    static bool full_circle(dialects::FunctionId motion, const BlockWords& words);
+    double comp_radius(const MachineState& s, const BlockWords& words) const;  // mm: D register (mill), nose radius (lathe)
     motion::P2 tip_offset() const;                       // lathe: nose centre → imaginary tip
     struct CompPiece {
         compensation::Programmed programmed;
         Position end;                                    // the programmed end, work coordinates
     };
-    // The block's programmed elements from `start` (a line, an arc, or the direct-drawing pieces);
-    // `quiet` (read ahead): no message or alarm, nullopt instead.
-    std::optional<std::vector<CompPiece>> comp_pieces(const BlockContext& ctx, const Position& start, const Position& to,
-                                                      bool quiet, Position& programmed_end);
-    // The next motion block's first element (look-ahead; up to two blocks without motion between).
-    std::optional<compensation::Programmed> comp_look_ahead(const BlockContext& ctx, const Position& from);
+    // The block's programmed elements from `start` (a line, an arc, or the direct-drawing pieces),
+    // read with `s` and the block's motion. `ahead` (a block read ahead): a direct-drawing block's
+    // direction only.
+    struct CompPieces {
+        std::vector<CompPiece> pieces;
+        Position programmed_end{};
+        std::optional<Alarm> alarm;    // the block cannot run (an arc, a corner)
+        bool zero_arc = false;         // an R arc whose end is its start: no motion, said by the block
+    };
+    CompPieces comp_pieces(const MachineState& s, const BlockContext& ctx, const Position& start, const Position& to,
+                           bool ahead) const;
+    bool block_pieces_run(CompPieces& read, const BlockContext& ctx);   // the live block's: its alarm raised, a 0° arc said
+    // The next motion block's first element (look-ahead; up to two blocks without motion between),
+    // read through const functions of the live state, each block with its own motion code or the
+    // running block's motion; nullopt when none.
+    OrAlarm<std::optional<compensation::Programmed>> comp_look_ahead(const BlockContext& ctx, const Position& from) const;
     std::optional<compensation::Step> comp_step(const compensation::Programmed& current,
                                                 const std::optional<compensation::Programmed>& next, const BlockContext& ctx);
     bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like, const BlockContext& ctx);
@@ -439,20 +487,21 @@ private:
     // (G42) block with its centre words; true when it moved.
     bool arc_approach_move(const BlockContext& ctx, const Position& to);
     // The block's words with the centre words of that arc from `from`; `ccw` its direction.
-    BlockWords arc_approach_words(const BlockContext& ctx, const Position& from, const Position& to, bool& ccw) const;
+    BlockWords arc_approach_words(const MachineState& s, const BlockContext& ctx, const Position& from, const Position& to,
+                                  bool& ccw) const;
     // Arcs (executor_arc.cpp): the geometry of a G02/G03 block from `from`, and its event.
-    motion::ArcResult arc_geometry(bool cw, const Position& from, const Position& to, const BlockWords& words) const;
+    motion::ArcResult arc_geometry(const MachineState& s, bool cw, const Position& from, const Position& to,
+                                   const BlockWords& words) const;
     void emit_arc(const motion::Arc& arc, const Position& to, const BlockContext& ctx);
     // --- [transforms] G15/G16 polar coordinate command, G50/G51 scaling, G50.1/G51.1 mirror image
     // (executor_transforms.cpp; the geometry with G68 in transforms.hpp) -----------------------
-    ProgramFrame program_frame() const { return state_.program_frame(); }
     bool apply_program_transforms(const BlockContext& ctx);   // false: no motion
     void start_scaling(const BlockContext& ctx);
     double magnification(const Word& w) const;   // a P/I/J/K word: with a point the factor, else units
     void set_mirror(const BlockContext& ctx, bool on);
     void note_transform(const BlockContext& ctx, std::string text);   // a coordinate_change event
     // The plane's two axis words of a G16 block as radius and angle into `to` ([FANUC] rules there).
-    void polar_target(const BlockWords& words, const Position& start, Position& to) const;
+    void polar_target(const MachineState& s, const BlockWords& words, const Position& start, Position& to) const;
     // --- [polar] G112/G113 polar and G107 cylindrical interpolation (polar.cpp, cycles.md §18–§19) --
     struct PathSpan {             // the axes outside the plane: from → to over the part [u0, u1] of a block
         Position from, to;
@@ -466,22 +515,23 @@ private:
     bool start_polar_with_c(const BlockContext& ctx, const std::string& spelling);
     bool cylindrical_code(const BlockContext& ctx, const std::string& spelling);
     bool transform_move(const BlockContext& ctx);
-    motion::ArcResult transform_arc(bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const;
+    motion::ArcResult transform_arc(const MachineState& s, bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const;
     void warn_rotary_speed(const BlockContext& ctx, const std::vector<motion::MappedPoint>& pieces, motion::P2 start);
     void transform_piece(EventKind kind, const Position& to, double length_mm, const BlockContext& ctx);
     void run_plane_path(EventKind kind, const std::function<motion::P2(double)>& path, const PathSpan& span,
                         const BlockContext& ctx);
-    void transform_arc_alarm(const BlockContext& ctx, const motion::ArcResult& geometry);
+    Alarm transform_arc_alarm(const MachineState& s, const BlockContext& ctx, const motion::ArcResult& geometry) const;
     static motion::P2 arc_point(const motion::Arc& arc, double u);
     // G41/G42 in the mode (polar_compensation.cpp): the element of the plane, the compensated block.
-    std::optional<motion::Element> transform_element(const BlockContext& ctx, const Position& start, const Position& to,
-                                                     bool quiet);
+    // The element, or the arc's error (an alarm for the block that runs it).
+    OrAlarm<motion::Element> transform_element(const MachineState& s, const BlockContext& ctx, const Position& start,
+                                               const Position& to) const;
     bool transform_compensated(const BlockContext& ctx, const Position& to, bool moves);
     void run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to, const BlockContext& ctx);
     bool transform_switch_allowed(const BlockContext& ctx, const std::string& spelling);
-    motion::P2 transform_point(const Position& p) const;
-    double plane_mm(std::size_t axis, double value) const;      // program value → geometric mm (X radius)
-    double program_value(std::size_t axis, double mm) const;    // and back
+    motion::P2 transform_point(const MachineState& s, const Position& p) const;
+    double plane_mm(const MachineState& s, std::size_t axis, double value) const;      // program value → geometric mm (X radius)
+    double program_value(const MachineState& s, std::size_t axis, double mm) const;    // and back
 };
 
 }  // namespace kerf::interpreter

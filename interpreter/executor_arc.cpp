@@ -11,34 +11,34 @@
 
 namespace kerf::interpreter {
 
-motion::ArcResult Executor::arc_geometry(bool cw, const Position& from, const Position& to,
+motion::ArcResult Executor::arc_geometry(const MachineState& s, bool cw, const Position& from, const Position& to,
                                          const BlockWords& words) const {
-    const double scale = unit_scale();
+    const double scale = s.unit_scale();
     const motion::Vec3 start = geometric_mm(from, setup_.diameter_x, scale);
     const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
     // [transforms] G68/G51/G51.1 (transforms.hpp): under a mirror of one plane axis the arc runs
     // the other way round ([FANUC] G02 ↔ G03); R is scaled, I/J/K turned, scaled and mirrored.
-    const ProgramFrame frame = program_frame();
-    const bool turned = cw != frame.reverses(plane());
+    const ProgramFrame frame = s.program_frame();
+    const bool turned = cw != frame.reverses(s.plane());
     const motion::ArcDirection dir = turned ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
     motion::ArcOptions options;
     options.radius_tolerance = setup_.arc_tolerance;
     options.allow_negative_r = setup_.arc_negative_r;
     options.enlarge_small_r = setup_.arc_enlarge_small_r;
     if (const auto* r = words.get('R')) {
-        const double radius = axis_value(*r, 'R') * scale * frame.radius_factor(plane());
-        return motion::arc_from_radius(start, end, plane(), dir, radius, options);
+        const double radius = axis_value(s, *r, 'R') * scale * frame.radius_factor(s.plane());
+        return motion::arc_from_radius(start, end, s.plane(), dir, radius, options);
     }
     motion::Vec3 offset{};
-    if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * scale;
-    if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * scale;
-    if (const auto* k = words.get('K')) offset.z = axis_value(*k, 'K') * scale;
-    return motion::arc_from_center(start, end, plane(), dir, frame.vector_to_work(offset), options);
+    if (const auto* i = words.get('I')) offset.x = axis_value(s, *i, 'I') * scale;
+    if (const auto* j = words.get('J')) offset.y = axis_value(s, *j, 'J') * scale;
+    if (const auto* k = words.get('K')) offset.z = axis_value(s, *k, 'K') * scale;
+    return motion::arc_from_center(start, end, s.plane(), dir, frame.vector_to_work(offset), options);
 }
 
 void Executor::arc_move(bool cw, const Position& to, const BlockContext& ctx) {
     const BlockWords& words = ctx.words;
-    const motion::ArcResult arc = arc_geometry(cw, state_.position, to, words);
+    const motion::ArcResult arc = arc_geometry(state_, cw, state_.position, to, words);
     if (!arc) {
         const motion::ArcError& e = arc.error();
         if (e.code == motion::ArcErrorCode::r_zero_chord) {
@@ -57,7 +57,7 @@ void Executor::arc_move(bool cw, const Position& to, const BlockContext& ctx) {
 
 void Executor::emit_arc(const motion::Arc& arc, const Position& to, const BlockContext& ctx) {
     if (!feed_commanded(motion::length(arc) > 0, ctx)) return;
-    const double scale = unit_scale();
+    const double scale = state_.unit_scale();
     const motion::Box box = motion::bounds(arc);
     if (!within_soft_limits(from_geometric(box.min, to, setup_.diameter_x, scale),
                             from_geometric(box.max, to, setup_.diameter_x, scale), ctx))

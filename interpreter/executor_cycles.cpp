@@ -35,7 +35,7 @@ public:
     bool takes(char letter) const override { return code_.takes_word(std::string_view(&letter, 1)); }
     std::optional<double> increment(char axis) const override {
         if (!words_.incremental.count(axis)) return std::nullopt;
-        return ex_.axis_value(words_.incremental.at(axis), axis);
+        return ex_.axis_value(ex_.state_, words_.incremental.at(axis), axis);
     }
     std::optional<int> m_word() const override {
         if (const auto* w = words_.get('M')) return static_cast<int>(std::lround(w->value));   // a parameter M (G384)
@@ -49,7 +49,7 @@ public:
     }
     std::optional<double> mm(char letter) const override {
         const auto* w = words_.get(letter);
-        return w ? std::optional<double>(ex_.axis_value(*w, letter)) : std::nullopt;
+        return w ? std::optional<double>(ex_.axis_value(ex_.state_, *w, letter)) : std::nullopt;
     }
     // cycles.md §0: integers in least-input increments (or the machine's fixed unit); a decimal
     // point is an alarm on most controls: read as mm and said.
@@ -88,14 +88,14 @@ public:
     // cycle's first move (leave_offset_for_cycle) the tool runs on programmed points.
     Position position() const override { return ex_.state_.comp_path.value_or(ex_.state_.position); }
     bool diameter_x() const override { return ex_.setup_.diameter_x; }
-    double per_mm() const override { return 1.0 / ex_.unit_scale(); }
+    double per_mm() const override { return 1.0 / ex_.state_.unit_scale(); }
     const cycles::Settings& settings() const override { return ex_.setup_.cycles; }
     double dwell_seconds(double p) const override { return ex_.dwell_p_seconds(p); }
     cycles::Parameters& parameters() override { return ex_.state_.cycle_parameters; }
     cycles::SingleCycleModal& single_cycle() override { return ex_.state_.single_cycle; }
     cycles::DrillModal& drill() override { return ex_.state_.drill; }
     cycles::RigidTapModal& rigid_tap() override { return ex_.state_.rigid_tap; }
-    Position machine_offset() const override { return ex_.machine_offset(); }
+    Position machine_offset() const override { return ex_.machine_offset(ex_.state_); }
     std::optional<cycles::Profile> profile(double p, double q) override {
         return ex_.cycle_profile(block_, code_.spelling, p, q, profile_blocks_);
     }
@@ -130,7 +130,7 @@ public:
     bool feed_at(const Position& to, double mm_per_min) override {
         const double saved_feed = ex_.state_.feed;
         const bool saved_per_rev = ex_.state_.flags.per_revolution;
-        ex_.state_.feed = mm_per_min / ex_.unit_scale();
+        ex_.state_.feed = mm_per_min / ex_.state_.unit_scale();
         ex_.state_.flags.per_revolution = false;
         const bool ok = move(EventKind::linear, to);
         ex_.state_.feed = saved_feed;
@@ -249,55 +249,62 @@ void Executor::cancel_cycle_by_motion_code(const BlockContext& ctx) {
 
 std::optional<cycles::Profile> Executor::cycle_profile(const BlockContext& ctx, std::string_view spelling, double p,
                                                        double q, std::optional<ProfileBlocks>& blocks) {
+    OrAlarm<ProfileRead> read = read_profile(ctx, spelling, p, q);
+    if (!read.ok()) {
+        raise(std::move(*read.alarm));
+        return std::nullopt;
+    }
+    blocks = read.value.blocks;
+    return std::move(read.value.profile);
+}
+
+OrAlarm<Executor::ProfileRead> Executor::read_profile(const BlockContext& ctx, std::string_view spelling, double p,
+                                                      double q) const {
     const Frame& f = ctx.frame;
     const auto first = find_label(f, p);
     const auto last = find_label(f, q);
     if (!first || !last || *last < *first) {
         const std::string why = !first || !last ? fmt::format("sequence number N{} not found in this program", !first ? p : q)
                                                 : fmt::format("N{} comes before N{}", q, p);
-        alarm(ctx, 60, fmt::format("{} P{} Q{}: {} (alarm 060)", spelling, p, q, why));
-        return std::nullopt;
+        return {{}, Alarm{ctx.source(), state_.position, 60, fmt::format("{} P{} Q{}: {} (alarm 060)", spelling, p, q, why)}};
     }
     // Each profile block is read with the executor's own word evaluation, from the running profile
-    // point; the cycle block's position is restored afterwards (the profile leaves the modal state
-    // as it was, cycles.md "Notation").
-    const Position saved_position = state_.position;
-    cycles::Profile profile;
+    // point, on a copy of the state: the profile leaves the modal state as it was (cycles.md "Notation").
+    MachineState s = state_;
+    ProfileRead read;
+    cycles::Profile& profile = read.profile;
     // Under G41/G42 the profile starts at the programmed point, not at the offset tool [comp3].
-    if (state_.comp_path) state_.position = *state_.comp_path;
-    profile.start = state_.position;
+    if (s.comp_path) s.position = *s.comp_path;
+    profile.start = s.position;
     profile.q_block = *last;
-    dialects::FunctionId motion = state_.flags.motion;
-    bool ok = true;
-    for (std::uint32_t b = *first; ok && b <= *last; ++b) {
-        const ast::BlockView view = file_of(f).block(b);
-        if (view.block().kind != ast::BlockKind::code) continue;
-        if (view.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
-        BlockScan scan;
-        scan_block(f, view, scan);
-        scan.block = b;
-        BlockWords words;
-        ok = read_profile_block({f, view, scan, words}, words, motion, profile, *last);
+    dialects::FunctionId motion = s.flags.motion;
+    for (std::uint32_t b = *first; b <= *last; ++b) {
+        BlockAhead block{file_of(f).block(b), {}, {}};
+        if (block.view.block().kind != ast::BlockKind::code) continue;
+        if (block.view.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
+        scan_block(f, block.view, block.scan);
+        block.scan.block = b;
+        const BlockContext at{f, block.view, block.scan, block.words};
+        if (auto failed = read_profile_block(s, at, block.words, motion, profile, *last)) return {{}, std::move(failed)};
     }
-    state_.position = saved_position;
-    if (!ok) return std::nullopt;
-    blocks = ProfileBlocks{*first, *last};
-    return profile;
+    read.blocks = ProfileBlocks{*first, *last};
+    return {std::move(read), std::nullopt};
 }
 
 // One profile block: its end point from the running profile point, G00/G01/G02/G03 (modal within
 // the profile), the arc's centre and sweep, its F (G70, cycles.md §1). Blocks without an end point
 // with direct-drawing words go through the same resolver as a running program
 // (executor_drawing.cpp), so a profile's corners are those of semantics.md §10.
-bool Executor::read_profile_block(const BlockContext& block, BlockWords& words, dialects::FunctionId& motion,
-                                  cycles::Profile& profile, std::uint32_t last) {
-    if (!evaluate_words(block, words)) return false;
+std::optional<Alarm> Executor::read_profile_block(MachineState& s, const BlockContext& block, BlockWords& words,
+                                                  dialects::FunctionId& motion, cycles::Profile& profile,
+                                                  std::uint32_t last) const {
+    if (auto failed = read_words(s, s.position, block, words)) return failed;
     for (const ast::CodeRef& c : block.scan.g)
         if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
     bool moves = false;
-    const Position to = target_position(words, moves);
-    if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(block, to, profile, last);
-    if (!moves) return true;
+    const Position to = target_position(s, s.position, words, moves);
+    if (motion == fn::linear && drawing_words(block)) return read_profile_drawing(s, block, to, profile, last);
+    if (!moves) return std::nullopt;
     cycles::ProfileMove m;
     m.block = block.index();
     m.end = to;
@@ -306,43 +313,41 @@ bool Executor::read_profile_block(const BlockContext& block, BlockWords& words, 
     m.x_word = words.get('X') || words.incremental.count('X');
     m.z_word = words.get('Z') || words.incremental.count('Z');
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
-        const motion::ArcResult arc = arc_geometry(motion == fn::circular_cw, state_.position, to, words);
-        if (!arc) {
-            alarm(block, arc.error().fanuc_alarm,
-                  fmt::format("profile arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code),
-                              arc.error().found, arc.error().allowed));
-            return false;
-        }
+        const motion::ArcResult arc = arc_geometry(s, motion == fn::circular_cw, s.position, to, words);
+        if (!arc)
+            return Alarm{block.source(), s.position, arc.error().fanuc_alarm,
+                         fmt::format("profile arc: {} (found {:.4f}, allowed {:.4f})", motion::describe(arc.error().code),
+                                     arc.error().found, arc.error().allowed)};
         m.kind = arc.arc().cw ? EventKind::arc_cw : EventKind::arc_ccw;
-        m.center = from_geometric(arc.arc().center, to, setup_.diameter_x, unit_scale());
+        m.center = from_geometric(arc.arc().center, to, setup_.diameter_x, s.unit_scale());
         m.sweep = arc.arc().sweep;
     }
     profile.moves.push_back(m);
-    state_.position = to;
-    return true;
+    s.position = to;
+    return std::nullopt;
 }
 
 // A direct-drawing block of a profile: the resolver's lines and fillet arcs, from the end of the
-// last profile move (past a corner) and the programmed point state_.position.
-bool Executor::read_profile_drawing(const BlockContext& block, const Position& to, cycles::Profile& profile,
-                                    std::uint32_t last) {
+// last profile move (past a corner) and the programmed point s.position.
+std::optional<Alarm> Executor::read_profile_drawing(MachineState& s, const BlockContext& block, const Position& to,
+                                                    cycles::Profile& profile, std::uint32_t last) const {
     const BlockWords& words = block.words;
     const Position tool = profile.moves.empty() ? profile.start : profile.moves.back().end;
-    const auto r = resolve_drawing(block, state_.position, tool, to, last);
-    if (!r) return false;
-    for (const drawing::Move& piece : r->moves) {
+    OrAlarm<drawing::Result> drawn = resolve_drawing(s, s.position, block, s.position, tool, to, last);
+    if (!drawn.ok()) return std::move(drawn.alarm);
+    for (const drawing::Move& piece : drawn.value.moves) {
         cycles::ProfileMove m;
         m.block = block.index();
-        m.end = plane_position(piece.end, to);
+        m.end = plane_position(s, piece.end, to);
         m.kind = !piece.arc ? EventKind::linear : piece.sweep < 0 ? EventKind::arc_cw : EventKind::arc_ccw;
-        m.center = plane_position(piece.center, to);
+        m.center = plane_position(s, piece.center, to);
         m.sweep = piece.sweep;
         if (const auto* w = words.get('F'); w && !w->data) m.feed = w->value;
         m.x_word = m.z_word = true;   // a drawn line moves both axes in general
         profile.moves.push_back(m);
     }
-    state_.position = plane_position(r->end, to);
-    return true;
+    s.position = plane_position(s, drawn.value.end, to);
+    return std::nullopt;
 }
 
 // An arc kerf computed (a cycle's, a compensated tool path's): its ends and centre carry rounding
@@ -355,11 +360,11 @@ motion::ArcOptions Executor::computed_arc_options() const {
 
 // An arc of a cycle from the current point to `to` about `center` (work coordinates).
 bool Executor::cycle_arc(bool cw, const Position& to, const Position& center, const BlockContext& ctx) {
-    const double scale = unit_scale();
+    const double scale = state_.unit_scale();
     const motion::Vec3 start = geometric_mm(state_.position, setup_.diameter_x, scale);
     const motion::Vec3 end = geometric_mm(to, setup_.diameter_x, scale);
     const motion::Vec3 c = geometric_mm(center, setup_.diameter_x, scale);
-    const motion::ArcResult arc = motion::arc_from_center(start, end, plane(), cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw,
+    const motion::ArcResult arc = motion::arc_from_center(start, end, state_.plane(), cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw,
                                                           c - start, computed_arc_options());
     if (!arc) {
         move(EventKind::linear, to, ctx);   // a degenerate piece of an arc: its chord

@@ -41,7 +41,7 @@ void Executor::apply_data_input(const BlockContext& ctx) {
     const auto* l = words.get('L');
     // Registers are kept in mm (degrees on rotary axes): a G20 program writes inches.
     const auto value_of = [this](const BlockWords::Word& w, char letter, std::size_t axis) {
-        return axis_value(w, kAxisLetters[axis]) * axis_scale(axis);
+        return axis_value(state_, w, kAxisLetters[axis]) * state_.axis_scale(axis);
     };
     const dialects::LexicalRules& rules = dialect_.lexical;
     Event e = event_at(EventKind::coordinate_change, ctx);
@@ -78,7 +78,7 @@ void Executor::apply_data_input(const BlockContext& ctx) {
             return;
         }
         ToolOffset& t = memory_.tools[n];
-        const double v = axis_value(*r, 'R') * unit_scale();
+        const double v = axis_value(state_, *r, 'R') * state_.unit_scale();
         auto set = [&](double& reg) { reg = state_.flags.incremental ? reg + v : v; };
         if (kind == 0 || kind == 1 || kind == 10) set(t.length);
         if (kind == 0 || kind == 12) set(t.radius);
@@ -98,7 +98,7 @@ void Executor::apply_data_input(const BlockContext& ctx) {
         // The active offset changes the machine position, as a T word does (no change_offsets).
         ToolOffset& t = memory_.tools[number];
         write_axes(geometry ? t.geometry : t.wear, words, rules, false, value_of);
-        if (const auto* r = words.get('R')) (geometry ? t.nose_radius : t.nose_radius_wear) = axis_value(*r, 'R') * unit_scale();
+        if (const auto* r = words.get('R')) (geometry ? t.nose_radius : t.nose_radius_wear) = axis_value(state_, *r, 'R') * state_.unit_scale();
         if (const auto* q = words.get('Q')) t.tip = static_cast<int>(std::lround(q->value));
         e.text = fmt::format("tool offset {} {}", number, geometry ? "geometry" : "wear");
     }

@@ -34,11 +34,15 @@ std::optional<Axis> slot_axis(const dialects::VariableRange& range, const Offset
 
 }  // namespace
 
-std::optional<macro::Value> Executor::read_dialect_variable(const dialects::VariableRange& range, int number) const {
+std::optional<macro::Value> Executor::read_dialect_variable(const MachineState& s, const Position& at,
+                                                           const dialects::VariableRange& range, int number) const {
     using macro::Value;
     switch (range.kind) {
         case dialects::VariableKind::alias:
-            return variables_.read(static_cast<int>(range.alias_of + (number - range.from)));
+        {
+            ExecutorSystemVariables system(*this, s, at);   // an alias of a system variable reads the same state
+            return variables_.read(static_cast<int>(range.alias_of + (number - range.from)), system);
+        }
         case dialects::VariableKind::common:
         case dialects::VariableKind::setting:
         case dialects::VariableKind::parameter: {
@@ -54,12 +58,12 @@ std::optional<macro::Value> Executor::read_dialect_variable(const dialects::Vari
             // Registers hold mm (degrees); the program reads them in its own unit (G20: inches).
             const auto a = static_cast<std::size_t>(*axis);
             const auto it = memory_.additional_offsets.find(slot.number);
-            return Value::of(it == memory_.additional_offsets.end() ? 0.0 : it->second[a] / axis_scale(a));
+            return Value::of(it == memory_.additional_offsets.end() ? 0.0 : it->second[a] / s.axis_scale(a));
         }
         case dialects::VariableKind::tool_in_spindle:
-            return Value::of(static_cast<double>(state_.tool));
+            return Value::of(static_cast<double>(s.tool));
         case dialects::VariableKind::spindle_rpm:
-            return Value::of(state_.spindle_on ? current_rpm(state_.position[0]) : 0.0);
+            return Value::of(s.spindle_on ? current_rpm(s, at[0]) : 0.0);
     }
     return std::nullopt;
 }
@@ -82,7 +86,7 @@ macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRang
             if (!axis) return WriteResult::undefined;
             // The tool stays where it is; its work coordinates follow the new offset.
             const auto a = static_cast<std::size_t>(*axis);
-            change_offsets([&] { memory_.additional_offsets[slot.number][a] = value.or_zero() * axis_scale(a); });
+            change_offsets([&] { memory_.additional_offsets[slot.number][a] = value.or_zero() * state_.axis_scale(a); });
             return WriteResult::ok;
         }
         case dialects::VariableKind::tool_in_spindle:

@@ -34,7 +34,7 @@ void Executor::apply_corner_slowdown(const BlockContext& ctx) {
             state_.slowdown.reset();
             continue;
         }
-        state_.slowdown = Slowdown{k->value * unit_scale(), p->value / 100.0};
+        state_.slowdown = Slowdown{k->value * state_.unit_scale(), p->value / 100.0};
     }
 }
 
@@ -44,8 +44,8 @@ void Executor::apply_corner_slowdown(const BlockContext& ctx) {
 // over the last d ≤ K mm is ∫ ds / f(s) with f(s) = F·(1 − p) + F·p·s/K:
 // K/(F·p) · ln(f(d) / (F·(1 − p))).
 bool Executor::slowed_move(const Position& to, const BlockContext& ctx) {
-    const double length = motion::distance(geometric_mm(state_.position, setup_.diameter_x, unit_scale()),
-                                           geometric_mm(to, setup_.diameter_x, unit_scale()));
+    const double length = motion::distance(geometric_mm(state_.position, setup_.diameter_x, state_.unit_scale()),
+                                           geometric_mm(to, setup_.diameter_x, state_.unit_scale()));
     if (length <= 1e-9 || state_.feed <= 0) return false;
     const double k = state_.slowdown->k_mm;
     const double d = std::min(k, length);
@@ -104,15 +104,15 @@ std::optional<bool> Executor::axial_offset_motion(const BlockContext& ctx, const
 // centre of the next element's start-up), so the compensation goes on from there.
 bool Executor::approach_offset_move(const BlockContext& ctx, const Position& to) {
     const Position from = state_.comp_path ? *state_.comp_path : state_.programmed.value_or(state_.position);
-    const motion::P2 a = plane_point(from), b = plane_point(to);
+    const motion::P2 a = plane_point(state_, from), b = plane_point(state_, to);
     const double length = motion::norm(b - a);
-    const double d = d_register() * unit_scale();
+    const double d = d_register() * state_.unit_scale();
     const motion::P2 end = length > 1e-9 ? b - (b - a) * (d / length) : b;
     Event m = event_at(EventKind::message, ctx);
     m.text = fmt::format("G43 approach: the tool stops D = {:.3f} mm short of the programmed point (semantics.md §9.4, "
                          "an inference of seed 004 example 6)", d);
     emit(m);
-    move(state_.flags.motion == fn::rapid ? EventKind::rapid : EventKind::linear, plane_position(end, to), ctx);
+    move(state_.flags.motion == fn::rapid ? EventKind::rapid : EventKind::linear, plane_position(state_, end, to), ctx);
     if (stopped_) return true;
     if (state_.comp_side != 0) {
         state_.radius_comp.stand_at(end);
@@ -128,14 +128,15 @@ bool Executor::approach_offset_move(const BlockContext& ctx, const Position& to)
 // the programmed point to X Y, CCW under G41 (and G40), CW under G42, its centre on the side the
 // arc turns to at |chord|/2 from the chord's middle. The block then runs as that G02/G03 with
 // centre words (compensation included).
-BlockWords Executor::arc_approach_words(const BlockContext& ctx, const Position& from, const Position& to, bool& ccw) const {
-    const motion::P2 a = plane_point(from), b = plane_point(to);
-    ccw = comp_side_of_block(ctx, state_.comp_side) >= 0;
+BlockWords Executor::arc_approach_words(const MachineState& s, const BlockContext& ctx, const Position& from,
+                                        const Position& to, bool& ccw) const {
+    const motion::P2 a = plane_point(s, from), b = plane_point(s, to);
+    ccw = comp_side_of_block(s, ctx, s.comp_side) >= 0;
     const motion::P2 half = (b - a) * 0.5;
     const motion::P2 towards = ccw ? motion::P2{-half.b, half.a} : motion::P2{half.b, -half.a};   // the half chord turned ±90°
-    const motion::P2 offset = (half + towards) * (1.0 / unit_scale());   // centre − start, program units
+    const motion::P2 offset = (half + towards) * (1.0 / s.unit_scale());   // centre − start, program units
     static constexpr char kLetters[3][2] = {{'I', 'J'}, {'K', 'I'}, {'J', 'K'}};   // G17, G18, G19 plane frames
-    const auto& letters = kLetters[plane() == motion::Plane::xy ? 0 : plane() == motion::Plane::zx ? 1 : 2];
+    const auto& letters = kLetters[s.plane() == motion::Plane::xy ? 0 : s.plane() == motion::Plane::zx ? 1 : 2];
     BlockWords arc = ctx.words;
     for (const auto& [letter, value] : {std::pair{letters[0], offset.a}, std::pair{letters[1], offset.b}}) {
         Word w;
@@ -148,13 +149,11 @@ BlockWords Executor::arc_approach_words(const BlockContext& ctx, const Position&
 
 bool Executor::arc_approach_move(const BlockContext& ctx, const Position& to) {
     bool ccw = true;
-    const BlockWords arc = arc_approach_words(ctx, state_.comp_path ? *state_.comp_path : state_.programmed.value_or(state_.position), to, ccw);
-    const dialects::FunctionId saved = state_.flags.motion;
-    state_.flags.motion = ccw ? fn::circular_ccw : fn::circular_cw;
+    const BlockWords arc = arc_approach_words(state_, ctx, state_.comp_path ? *state_.comp_path : state_.programmed.value_or(state_.position), to, ccw);
+    const BlockContext as_arc = ctx.running_as(arc, ccw ? fn::circular_ccw : fn::circular_cw);
     bool moved = true;
-    if ((ctx.scan.classes & kRadiusCompCode) || compensating()) moved = compensate_motion(ctx.with(arc), to, true);
-    else arc_move(!ccw, to, ctx.with(arc));
-    state_.flags.motion = saved;
+    if ((ctx.scan.classes & kRadiusCompCode) || compensating()) moved = compensate_motion(as_arc, to, true);
+    else arc_move(!ccw, to, as_arc);
     if (!compensating()) state_.programmed.reset();
     return moved;
 }

@@ -70,7 +70,7 @@ bool Executor::execute_statement(Frame& frame, const BlockContext& ctx, const as
         return false;
     };
     auto condition = [&]() -> std::optional<bool> {
-        const macro::ConditionResult c = macro::evaluate_condition(tree, s.value, variables_, macro_options(false));
+        const macro::ConditionResult c = macro::evaluate_condition(tree, s.value, variables_, macro_options(state_, false));
         if (c.error) {
             fail(*c.error);
             return std::nullopt;
@@ -78,7 +78,7 @@ bool Executor::execute_statement(Frame& frame, const BlockContext& ctx, const as
         return c.value;
     };
     auto label_value = [&]() -> std::optional<double> {
-        const macro::Result r = macro::evaluate(tree, s.label, variables_, macro_options(false));
+        const macro::Result r = macro::evaluate(tree, s.label, variables_, macro_options(state_, false));
         if (r.error) {
             fail(*r.error);
             return std::nullopt;
@@ -88,7 +88,7 @@ bool Executor::execute_statement(Frame& frame, const BlockContext& ctx, const as
     switch (s.kind) {
         case ast::StatementKind::assign: {
             ExecutorSystemVariables system(*this, ctx);   // the block's: #3000 raises its alarm here
-            if (const auto e = macro::assign(tree, s, variables_, system, macro_options(false))) return fail(*e);
+            if (const auto e = macro::assign(tree, s, variables_, system, macro_options(state_, false))) return fail(*e);
             return true;
         }
         case ast::StatementKind::if_then: {
@@ -202,7 +202,7 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
         if (!number) continue;
         macro::Value v = macro::Value::vacant_value();
         if (t.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(tree, t.payload, variables_, macro_options(true));
+            const macro::Result r = macro::evaluate(tree, t.payload, variables_, macro_options(state_, true));
             if (r.error) {
                 alarm(ctx, r.error->alarm, r.error->message);
                 return std::nullopt;
@@ -213,7 +213,7 @@ std::optional<std::vector<std::pair<int, macro::Value>>> Executor::macro_argumen
             // machine has calculator-type input ([FANUC]: G65 X10 gives #24 = 0.010 on IS-B).
             const double n = tree.number_value(t);
             const bool increments = !t.has(ast::token_flags::has_point) && !setup_.calculator_decimal;
-            v = increments ? macro::Value::of_increments(n * increment(t.letter)) : macro::Value::of(n);
+            v = increments ? macro::Value::of_increments(n * increment(state_, t.letter)) : macro::Value::of(n);
         }
         arguments.emplace_back(number, v);
     }

@@ -48,9 +48,9 @@ Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, d
     return p;
 }
 
-Position Executor::target_position(const BlockWords& words, bool& moves) const {
+Position Executor::target_position(const MachineState& s, const Position& from, const BlockWords& words, bool& moves) const {
     // Built in the program's frame (G68, G51, G51.1 undone), then taken back into work coordinates.
-    const Position start = to_program(state_.position);
+    const Position start = to_program(s, from);
     Position to = start;
     moves = false;
     // Only the letters that are axes of the dialect (a table built once: this runs every block).
@@ -60,8 +60,8 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         const Word& w = words.words.at(letter);
         if (w.data) continue;
         const std::size_t a = static_cast<std::size_t>(axis_of_[static_cast<std::size_t>(i)]);
-        const double v = axis_value(w, letter);
-        to[a] = state_.flags.incremental ? to[a] + v : v;
+        const double v = axis_value(s, w, letter);
+        to[a] = s.flags.incremental ? to[a] + v : v;
         moves = true;
     }
     // U W H: incremental in system A; "the later-specified word is used" with X/U together (§3.2).
@@ -72,21 +72,21 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         if (axis_of_[static_cast<std::size_t>(i)] < 0) continue;
         const std::size_t a = static_cast<std::size_t>(axis_of_[static_cast<std::size_t>(i)]);
         const Word* absolute = words.get(axis_letter);
-        if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
+        if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(s, w, axis_letter);
         moves = true;
     }
-    if (state_.polar_command && moves) polar_target(words, start, to);   // [transforms] G16 (executor_transforms.cpp)
-    return from_program(to);
+    if (s.polar_command && moves) polar_target(s, words, start, to);   // [transforms] G16 (executor_transforms.cpp)
+    return from_program(s, to);
 }
 
 // Stored stroke check 1 (alarms OT500/OT501 [FANUC]): checked before the move, which does not
 // start when its end (or an arc's extreme) lies past a limit.
 bool Executor::within_soft_limits(const Position& low, const Position& high, const BlockContext& ctx) {
     if (!state_.soft_limits_on || !any_soft_limit_) return true;
-    const Position offset = machine_offset();
+    const Position offset = machine_offset(state_);
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         const SoftLimit& limit = setup_.soft_limits[a];
-        const double scale = axis_scale(a);
+        const double scale = state_.axis_scale(a);
         const double machine_low = low[a] * scale + offset[a], machine_high = high[a] * scale + offset[a];
         const bool over = limit.max && machine_high > *limit.max + 1e-9;
         const bool under = limit.min && machine_low < *limit.min - 1e-9;
@@ -106,23 +106,23 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
     const bool per_rev = state_.flags.per_revolution || e.kind == EventKind::thread;
     e.feed = e.kind == EventKind::thread ? state_.thread_lead : state_.feed;
     e.feed_per_rev = per_rev;
-    e.spindle_rpm = current_rpm(e.end[0]);
+    e.spindle_rpm = current_rpm(state_, e.end[0]);
     e.spindle_running = state_.spindle_on;
-    const double feed_mm = e.feed * unit_scale();
+    const double feed_mm = e.feed * state_.unit_scale();
     double seconds = 0;
     if (per_rev && state_.flags.css && e.kind != EventKind::thread) {
         // G96: the rpm follows the diameter along the move (motion/time.hpp css_feed_time).
         motion::SpindleClamp clamp;
         if (state_.max_rpm > 0) clamp.max_rpm = state_.max_rpm;
         if (setup_.max_rpm > 0) clamp.max_rpm = std::min(clamp.max_rpm, setup_.max_rpm);
-        const motion::Line line{geometric_mm(e.start, setup_.diameter_x, unit_scale()),
-                                geometric_mm(e.end, setup_.diameter_x, unit_scale())};
+        const motion::Line line{geometric_mm(e.start, setup_.diameter_x, state_.unit_scale()),
+                                geometric_mm(e.end, setup_.diameter_x, state_.unit_scale())};
         if (feed_mm > 0) seconds = arc ? motion::css_feed_time(*arc, state_.css, feed_mm, clamp) : motion::css_feed_time(line, state_.css, feed_mm, clamp);
     } else if (e.kind == EventKind::thread && state_.thread_lead_change != 0) {
         // G34: revolutions from the integral of the lead (motion/time.hpp variable_lead).
-        const auto v = motion::variable_lead(timed_length_mm, feed_mm, state_.thread_lead_change * unit_scale());
+        const auto v = motion::variable_lead(timed_length_mm, feed_mm, state_.thread_lead_change * state_.unit_scale());
         if (v && e.spindle_rpm > 0) seconds = v->revolutions / e.spindle_rpm * 60.0;
-        if (v) e.lead_end = v->lead_end / unit_scale();
+        if (v) e.lead_end = v->lead_end / state_.unit_scale();
     } else {
         const double mm_per_min = per_rev ? motion::feed_per_minute(feed_mm, e.spindle_rpm) : feed_mm;
         seconds = mm_per_min > 0 ? timed_length_mm / mm_per_min * 60.0 : 0;
@@ -149,7 +149,7 @@ bool Executor::feed_commanded(bool moves, const BlockContext& ctx) {
 
 void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx) {
     // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
-    if (state_.slowdown && kind == EventKind::linear && !in_slowdown_ && state_.flags.motion == fn::linear && slowed_move(to, ctx)) return;
+    if (state_.slowdown && kind == EventKind::linear && !in_slowdown_ && ctx.motion_in(state_) == fn::linear && slowed_move(to, ctx)) return;
     if (kind == EventKind::linear && !feed_commanded(to != state_.position, ctx)) return;
     Event e;
     e.kind = kind;
@@ -188,7 +188,7 @@ void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx)
     }
     state_.position = to;
     const bool thread = kind == EventKind::thread;
-    const double thread_speed = thread ? std::max(e.feed, e.lead_end) * unit_scale() * e.spindle_rpm : 0.0;
+    const double thread_speed = thread ? std::max(e.feed, e.lead_end) * state_.unit_scale() * e.spindle_rpm : 0.0;
     emit(std::move(e), machine_to);   // offsets unchanged since machine_to was computed from `to` (= e.end)
     if (thread && setup_.max_cutting_feed > 0 && thread_speed > setup_.max_cutting_feed) {
         // cycles.md §9: lead × rpm is the axis speed of a thread; the analyzer reads this event.
@@ -206,9 +206,9 @@ void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx)
 void Executor::thread_move(const BlockContext& ctx, const Position& to) {
     const BlockWords& words = ctx.words;
     const auto* e = words.get('E');
-    state_.thread_lead = e ? axis_value(*e, 'E') : state_.feed;
+    state_.thread_lead = e ? axis_value(state_, *e, 'E') : state_.feed;
     const auto* k = words.get('K');
-    state_.thread_lead_change = state_.flags.motion == fn::variable_lead_thread_cutting && k ? axis_value(*k, 'K') : 0;
+    state_.thread_lead_change = state_.flags.motion == fn::variable_lead_thread_cutting && k ? axis_value(state_, *k, 'K') : 0;
     if (state_.thread_lead_change != 0) {
         const double length = travel_of(state_.position, to, setup_).linear;   // program units, like the lead
         if (!motion::variable_lead(length, state_.thread_lead, state_.thread_lead_change)) {
@@ -239,7 +239,7 @@ bool Executor::apply_motion(const BlockContext& ctx) {
     state_.programmed_by_offset = false;
     // [path changers] After a corner of direct drawing the tool stands off the programmed point,
     // which the block's coordinates are measured from (executor_drawing.cpp).
-    const Position to = state_.programmed ? programmed_target(words, moves) : target_position(words, moves);
+    const Position to = target_position(state_, state_.programmed.value_or(state_.position), words, moves);
     if (apply_cycle(ctx, moves, to)) return false;
     // [seed 004 G43/G44 without H] the approach of §9.4 (executor_iso_specials.cpp).
     if (ctx.scan.classes & kApproachOffsetCode)
@@ -400,7 +400,7 @@ void Executor::apply_m_codes(Frame& frame, const BlockContext& ctx, MPhase phase
         if (f == fn::spindle_cw || f == fn::spindle_ccw || f == fn::spindle_stop) {
             state_.spindle_on = f != fn::spindle_stop;
             e.kind = EventKind::spindle;
-            e.spindle_rpm = state_.spindle_on ? current_rpm(state_.position[0]) : 0;
+            e.spindle_rpm = state_.spindle_on ? current_rpm(state_, state_.position[0]) : 0;
             e.spindle_running = state_.spindle_on;   // check3: start or stop, for the analyzer (K5010)
             emit(e);
         } else if (f == fn::tool_change) {

@@ -27,7 +27,7 @@ double Executor::d_register() const {
     const auto& d = state_.last_words[static_cast<std::size_t>('D' - 'A')];
     if (!d) return 0;
     const auto it = memory_.tools.find(static_cast<int>(std::lround(*d)));
-    return it == memory_.tools.end() ? 0 : (it->second.radius + it->second.radius_wear) / unit_scale();
+    return it == memory_.tools.end() ? 0 : (it->second.radius + it->second.radius_wear) / state_.unit_scale();
 }
 
 bool Executor::position_offset_move(const BlockContext& ctx, int factor, const Position& start,
@@ -63,16 +63,16 @@ bool Executor::position_offset_move(const BlockContext& ctx, int factor, const P
 bool Executor::position_offset_arc(const BlockContext& ctx, bool cw, double change,
                                    const Position& start, const Position& to) {
     const BlockWords& words = ctx.words;
-    const motion::ArcResult arc = arc_geometry(cw, start, to, words);
+    const motion::ArcResult arc = arc_geometry(state_, cw, start, to, words);
     if (!arc) {
         alarm(ctx, arc.error().fanuc_alarm, fmt::format("arc: {}", motion::describe(arc.error().code)));
         return false;
     }
-    const double scale = unit_scale();
+    const double scale = state_.unit_scale();
     const double k = arc.arc().radius > 0 ? (arc.arc().radius + change * scale) / arc.arc().radius : 1.0;
     const motion::Vec3 tool = geometric_mm(state_.position, setup_.diameter_x, scale);
     const motion::Vec3 from = arc.arc().start;
-    const motion::Vec3 normal = motion::plane_normal(plane());
+    const motion::Vec3 normal = motion::plane_normal(state_.plane());
     const auto scaled = [&](motion::Vec3 p) {
         const motion::Vec3 v = p - from;
         const motion::Vec3 along_normal = normal * motion::dot(v, normal);

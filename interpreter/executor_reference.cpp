@@ -32,7 +32,7 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
     const bool g27 = has_function(ctx, fn::reference_return_check);
     if (!g53 && !g28 && !g30 && !g29 && !g27) return std::nullopt;
     bool moves = false;
-    const Position to = target_position(words, moves);
+    const Position to = target_position(state_, state_.position, words, moves);
     if (!moves) return false;
     if (g27) {
         // [FANUC] G27 reference position return check: a rapid positioning to the programmed point
@@ -42,12 +42,12 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
     }
     if (g53) {
         // The programmed values are machine coordinates, for this block only (§2.2).
-        const Position offset = machine_offset();
+        const Position offset = machine_offset(state_);
         Position target = state_.position;
         for (const auto& [letter, w] : words.words)
             if (const auto axis = axis_of_letter(letter); axis && dialect_.lexical.is_axis(letter)) {
                 const std::size_t a = static_cast<std::size_t>(*axis);
-                target[a] = (axis_value(w, letter) * axis_scale(a) - offset[a]) / axis_scale(a);
+                target[a] = (axis_value(state_, w, letter) * state_.axis_scale(a) - offset[a]) / state_.axis_scale(a);
             }
         // pcnc-mill G53 follows the active G00/G01 and its feed (§2.2); FANUC G53 is a rapid.
         const bool feed = has_function(ctx, fn::machine_coordinate_select_g0_g1) && state_.flags.motion == fn::linear;
@@ -63,7 +63,7 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
         move(EventKind::rapid, mid, ctx);
         if (stopped_) return false;
         bool unused = false;
-        move(EventKind::rapid, target_position(words, unused), ctx);
+        move(EventKind::rapid, target_position(state_, state_.position, words, unused), ctx);
         return !stopped_;
     }
     int point = 1;
@@ -80,19 +80,19 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
     // programmed axes only (§2.8).
     Position via = to;
     if (setup_.g28_point_in_machine) {
-        const Position offset = machine_offset();
+        const Position offset = machine_offset(state_);
         for (std::size_t a = 0; a < kAxisCount; ++a)
-            if (const auto* w = words.get(kAxisLetters[a]); w && programmed(words, a)) via[a] = (axis_value(*w, kAxisLetters[a]) * axis_scale(a) - offset[a]) / axis_scale(a);
+            if (const auto* w = words.get(kAxisLetters[a]); w && programmed(words, a)) via[a] = (axis_value(state_, *w, kAxisLetters[a]) * state_.axis_scale(a) - offset[a]) / state_.axis_scale(a);
     }
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a)) state_.intermediate[a] = via[a];
     move(EventKind::rapid, via, ctx);
     if (stopped_) return false;
-    const Position offset = machine_offset();
+    const Position offset = machine_offset(state_);
     Position home = state_.position;
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a))
-            home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / axis_scale(a);
+            home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / state_.axis_scale(a);
     move(EventKind::rapid, home, ctx);
     return !stopped_;
 }

@@ -80,7 +80,7 @@ void Executor::start_scaling(const BlockContext& ctx) {
     const Position here = ProgramFrame{state_.mirror, std::nullopt, std::nullopt}.to_program(state_.position);
     for (std::size_t a = 0; a < 3; ++a) {
         const auto* w = words.get(kAxisLetters[a]);
-        s.center[a] = w ? axis_value(*w, kAxisLetters[a]) : here[a];
+        s.center[a] = w ? axis_value(state_, *w, kAxisLetters[a]) : here[a];
     }
     const auto* p = words.get('P');
     if (p) s.factor.fill(magnification(*p));
@@ -109,7 +109,7 @@ void Executor::set_mirror(const BlockContext& ctx, bool on) {
         const char letter = kAxisLetters[a];
         const auto* w = words.get(letter);
         if (on && w) {
-            state_.mirror[a] = axis_value(*w, letter);
+            state_.mirror[a] = axis_value(state_, *w, letter);
             axes += fmt::format(" {}{:g}", letter, *state_.mirror[a]);
         } else if (!on && state_.mirror[a] && (w || !named)) {
             state_.mirror[a].reset();
@@ -131,8 +131,8 @@ void Executor::set_mirror(const BlockContext& ctx, bool on) {
 // `start` and `to` are in the program's frame (transforms.hpp undone), so G16 inside G51/G68
 // describes the pattern before it is scaled and turned. G51/G51.1/G68/G52/G92/G10 blocks do not
 // come here (their words are centres and values, not polar: [FANUC]).
-void Executor::polar_target(const BlockWords& words, const Position& start, Position& to) const {
-    const auto [i, j] = plane_indices(state_.flags.plane);
+void Executor::polar_target(const MachineState& s, const BlockWords& words, const Position& start, Position& to) const {
+    const auto [i, j] = plane_indices(s.flags.plane);
     const auto word = [&](std::size_t axis) -> const Word* {
         const Word* w = words.get(kAxisLetters[axis]);
         return w && !w->data ? w : nullptr;
@@ -145,14 +145,14 @@ void Executor::polar_target(const BlockWords& words, const Position& start, Posi
     double r = std::hypot(start[i], start[j]);
     double centre_i = 0, centre_j = 0;
     if (radius) {
-        r = axis_value(*radius, kAxisLetters[i]);
-        if (state_.flags.incremental) {
+        r = axis_value(s, *radius, kAxisLetters[i]);
+        if (s.flags.incremental) {
             centre_i = start[i];
             centre_j = start[j];
         }
     }
     double degrees = here_angle;
-    if (angle) degrees = axis_value(*angle, kAxisLetters[j]) + (state_.flags.incremental ? here_angle : 0.0);
+    if (angle) degrees = axis_value(s, *angle, kAxisLetters[j]) + (s.flags.incremental ? here_angle : 0.0);
     to[i] = centre_i + r * std::cos(degrees * kDeg);
     to[j] = centre_j + r * std::sin(degrees * kDeg);
 }

@@ -27,17 +27,18 @@ double round_to_increment(double value, double increment) {
 
 }  // namespace
 
-macro::Options Executor::macro_options(bool address) const {
+macro::Options Executor::macro_options(const MachineState& s, bool address) const {
     macro::Options o;
     o.angle_range = setup_.atan_minus_180 ? macro::AngleRange::minus_180_to_180 : macro::AngleRange::zero_to_360;
     // ROUND in an address rounds to the least input increment; ADP undoes the increment scaling
     // of G65 arguments written without a point ([FANUC], macro/evaluate.hpp).
-    if (address) o.round_increment = setup_.increment(state_.flags.inch);
-    if (!setup_.calculator_decimal) o.adp_factor = 1.0 / setup_.increment(state_.flags.inch);
+    if (address) o.round_increment = setup_.increment(s.flags.inch);
+    if (!setup_.calculator_decimal) o.adp_factor = 1.0 / setup_.increment(s.flags.inch);
     return o;
 }
 
-bool Executor::evaluate_words(const BlockContext& ctx, BlockWords& out) {
+std::optional<Alarm> Executor::read_words(const MachineState& s, const Position& at, const BlockContext& ctx,
+                                          BlockWords& out) const {
     const ast::SyntaxTree& tree = ctx.view.tree();
     const dialects::LexicalRules& rules = dialect_.lexical;
     // Letters that are data of a code in this block (G04 X, G10 U/W, G71 U/W, SPINNER cycle words)
@@ -57,14 +58,12 @@ bool Executor::evaluate_words(const BlockContext& ctx, BlockWords& out) {
         const std::uint32_t bit = letter ? 1u << (t.letter - 'A') : 0u;
         w.data = (data & bit) != 0 || (t.role() == ast::Role::parameter && (dialect_axes_ & bit) != 0);
         if (t.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(tree, t.payload, variables_, macro_options(true));
-            if (r.error) {
-                alarm(ctx, r.error->alarm, r.error->message);
-                return false;
-            }
+            ExecutorSystemVariables system(*this, s, at);   // #5001 and the like: of the reading
+            const macro::Result r = macro::evaluate(tree, t.payload, variables_, system, macro_options(s, true));
+            if (r.error) return Alarm{ctx.source(), at, r.error->alarm, r.error->message};
             if (r.value.vacant) continue;   // a vacant variable omits the address (FANUC macro B)
             w.value = letter && (kDistanceLetters >> (t.letter - 'A') & 1u || (dialect_axes_ & bit) != 0)
-                          ? round_to_increment(r.value.number, increment(t.letter))
+                          ? round_to_increment(r.value.number, increment(s, t.letter))
                           : r.value.number;
             w.has_point = true;             // macro values are never in least increments
         } else {
@@ -73,31 +72,39 @@ bool Executor::evaluate_words(const BlockContext& ctx, BlockWords& out) {
         if (t.role() == ast::Role::axis_incremental && !w.data) out.incremental.set(rules.incremental_axis_of(t.letter), w);
         else if (letter) out.words.set(t.letter, w);
     }
+    return std::nullopt;
+}
+
+bool Executor::evaluate_words(const BlockContext& ctx, BlockWords& out) {
+    if (auto failed = read_words(state_, state_.position, ctx, out)) {
+        raise(std::move(*failed));
+        return false;
+    }
     return true;
 }
 
 // An axis or distance value in mm: without a decimal point and without calculator-type input it
 // counts least input increments (dialects.md §2 "Numbers", cycles.md §0).
-double Executor::axis_value(const BlockWords::Word& w, char letter) const {
+double Executor::axis_value(const MachineState& s, const BlockWords::Word& w, char letter) const {
     if (w.has_point || setup_.calculator_decimal) return w.value;
-    return w.value * increment(letter);
+    return w.value * increment(s, letter);
 }
 
 // The least input increment of an address in the unit it is read in: inch under G20 (0.0001 in on
 // IS-B, not 0.001), degrees on a rotary axis (C360000 is 360°) ([FANUC] "Least input increment").
-double Executor::increment(char letter) const {
+double Executor::increment(const MachineState& s, char letter) const {
     const auto axis = axis_of_letter(letter);
     if (axis && setup_.rotary[static_cast<std::size_t>(*axis)] && dialect_axes_ >> (letter - 'A') & 1u)
         return setup_.increment_deg();
-    return setup_.increment(state_.flags.inch);
+    return setup_.increment(s.flags.inch);
 }
 
-double Executor::current_rpm(double x_diameter) const {
-    if (!state_.flags.css) return state_.spindle_rpm;
+double Executor::current_rpm(const MachineState& s, double x_diameter) const {
+    if (!s.flags.css) return s.spindle_rpm;
     // G96: n = 1000·Vc / (π·D), clamped by G50/G92 S and the machine (semantics.md §4.1).
     const double d = std::fabs(setup_.diameter_x ? x_diameter : 2 * x_diameter);
-    double rpm = d > 1e-9 ? 1000.0 * state_.css / (M_PI * d) : 1e12;
-    if (state_.max_rpm > 0) rpm = std::min(rpm, state_.max_rpm);
+    double rpm = d > 1e-9 ? 1000.0 * s.css / (M_PI * d) : 1e12;
+    if (s.max_rpm > 0) rpm = std::min(rpm, s.max_rpm);
     if (setup_.max_rpm > 0) rpm = std::min(rpm, setup_.max_rpm);
     return rpm;
 }
@@ -169,22 +176,22 @@ void Executor::remember_words(const BlockContext& ctx) {
     if (ctx.scan.sequence) state_.last_words['N' - 'A'] = *ctx.scan.sequence;
 }
 
-Position Executor::machine_offset() const {
+Position Executor::machine_offset(const MachineState& s) const {
     // semantics.md §2.7: work offset + external − work shift + local shift + setting correction,
     // and on lathes the tool offset (geometry + wear) of the active T (dialects.md §3.5).
-    const Position tool = tool_offset();
+    const Position tool = tool_offset(s);
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        p[a] = active_work_offset()[a] + state_.external_offset[a] + setup_.work_shift_sign * state_.work_shift[a] +
-               state_.local_shift[a] + state_.setting_shift[a] + tool[a];
-    p[2] += state_.length_applied_mm;   // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp)
+        p[a] = active_work_offset(s)[a] + s.external_offset[a] + setup_.work_shift_sign * s.work_shift[a] +
+               s.local_shift[a] + s.setting_shift[a] + tool[a];
+    p[2] += s.length_applied_mm;   // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp)
     return p;
 }
 
-const Position& Executor::active_work_offset() const {
+const Position& Executor::active_work_offset(const MachineState& s) const {
     static const Position kZero{};
-    if (state_.additional_system == 0) return state_.work_offsets[static_cast<std::size_t>(state_.work_system)];
-    const auto it = memory_.additional_offsets.find(state_.additional_system);
+    if (s.additional_system == 0) return s.work_offsets[static_cast<std::size_t>(s.work_system)];
+    const auto it = memory_.additional_offsets.find(s.additional_system);
     return it == memory_.additional_offsets.end() ? kZero : it->second;
 }
 
@@ -198,10 +205,10 @@ std::optional<int> Executor::additional_number(const BlockContext& ctx, std::opt
     return std::nullopt;
 }
 
-Position Executor::tool_offset() const {
+Position Executor::tool_offset(const MachineState& s) const {
     // Mills offset the length with G43/G44 H (executor_length.cpp) and the radius with G41/G42 D, not by T.
-    if (dialect_.machine != dialects::MachineKind::lathe || state_.tool_offset == 0) return {};
-    const auto it = memory_.tools.find(state_.tool_offset);
+    if (dialect_.machine != dialects::MachineKind::lathe || s.tool_offset == 0) return {};
+    const auto it = memory_.tools.find(s.tool_offset);
     if (it == memory_.tools.end()) return {};
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a) p[a] = it->second.geometry[a] + it->second.wear[a];
@@ -252,8 +259,8 @@ bool Executor::apply_coordinate_operations(const BlockContext& ctx) {
                 const auto axis = axis_of_letter(letter);
                 if (!axis) continue;
                 const std::size_t a = static_cast<std::size_t>(*axis);
-                const double value = axis_value(w, letter);
-                state_.setting_shift[a] += (state_.position[a] - value) * axis_scale(a);   // offsets are mm
+                const double value = axis_value(state_, w, letter);
+                state_.setting_shift[a] += (state_.position[a] - value) * state_.axis_scale(a);   // offsets are mm
                 state_.position[a] = value;
             }
             return false;
@@ -269,7 +276,7 @@ bool Executor::apply_coordinate_operations(const BlockContext& ctx) {
             for (std::size_t a = 0; a < kAxisCount; ++a) named = named || words.get(kAxisLetters[a]);
             for (std::size_t a = 0; a < kAxisCount; ++a) {
                 if (named && !words.get(kAxisLetters[a])) continue;
-                state_.position[a] += state_.setting_shift[a] / axis_scale(a);
+                state_.position[a] += state_.setting_shift[a] / state_.axis_scale(a);
                 state_.setting_shift[a] = 0;
             }
             return false;
@@ -296,10 +303,10 @@ void Executor::apply_local_system(const BlockContext& ctx, bool current_point_co
             const auto axis = axis_of_letter(letter);
             if (!axis || !dialect_.lexical.is_axis(letter)) continue;
             const std::size_t a = static_cast<std::size_t>(*axis);
-            const double v = axis_value(w, letter);
+            const double v = axis_value(state_, w, letter);
             // current point: program p maps to work p + L with L = position − value (§2.4);
             // FANUC: the vector itself, in the program's unit (§4.2; offsets are kept in mm).
-            state_.local_shift[a] = current_point ? state_.local_shift[a] + (state_.position[a] - v) * axis_scale(a) : v * axis_scale(a);
+            state_.local_shift[a] = current_point ? state_.local_shift[a] + (state_.position[a] - v) * state_.axis_scale(a) : v * state_.axis_scale(a);
         }
     });
     Event e = event_at(EventKind::coordinate_change, ctx);

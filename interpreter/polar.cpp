@@ -42,16 +42,16 @@ std::optional<std::pair<std::size_t, std::size_t>> cylinder_axes(char rotary) {
 }  // namespace
 
 // A coordinate of a programmed point in the plane, geometric mm (lathe X as a radius).
-double Executor::plane_mm(std::size_t axis, double value) const {
-    return (axis == kX && setup_.diameter_x ? value / 2 : value) * unit_scale();
+double Executor::plane_mm(const MachineState& s, std::size_t axis, double value) const {
+    return (axis == kX && setup_.diameter_x ? value / 2 : value) * s.unit_scale();
 }
-double Executor::program_value(std::size_t axis, double mm) const {
-    return (axis == kX && setup_.diameter_x ? mm * 2 : mm) / unit_scale();
+double Executor::program_value(const MachineState& s, std::size_t axis, double mm) const {
+    return (axis == kX && setup_.diameter_x ? mm * 2 : mm) / s.unit_scale();
 }
 
-motion::P2 Executor::transform_point(const Position& p) const {
-    const PlaneTransform& t = *state_.transform;
-    return {plane_mm(t.linear, p[t.linear]), p[t.rotary] * unit_scale()};   // the virtual axis: mm, never a diameter
+motion::P2 Executor::transform_point(const MachineState& s, const Position& p) const {
+    const PlaneTransform& t = *s.transform;
+    return {plane_mm(s, t.linear, p[t.linear]), p[t.rotary] * s.unit_scale()};   // the virtual axis: mm, never a diameter
 }
 
 std::optional<bool> Executor::apply_plane_transform(const BlockContext& ctx) {
@@ -147,7 +147,7 @@ bool Executor::cylindrical_code(const BlockContext& ctx, const std::string& spel
                           kIllegalCylinderAxis));
         return false;
     }
-    const double radius = axis_value(*words.get(letter), letter) * unit_scale();
+    const double radius = axis_value(state_, *words.get(letter), letter) * state_.unit_scale();
     if (radius == 0) {
         state_.transform.reset();
         return true;
@@ -157,7 +157,7 @@ bool Executor::cylindrical_code(const BlockContext& ctx, const std::string& spel
     t.rotary = axes->first;
     t.linear = axes->second;
     t.programmed = state_.position;
-    t.programmed[t.rotary] = state_.position[t.rotary] / kDegPerRad * t.map.cylinder_radius / unit_scale();
+    t.programmed[t.rotary] = state_.position[t.rotary] / kDegPerRad * t.map.cylinder_radius / state_.unit_scale();
     t.code = spelling;
     state_.transform = t;
     return true;
@@ -170,21 +170,19 @@ bool Executor::transform_move(const BlockContext& ctx) {
     PlaneTransform& t = *state_.transform;
     bool moves = false;
     const Position real = state_.position;
-    state_.position = t.programmed;   // the block's words are measured from the programmed point
-    const Position to = target_position(words, moves);
-    state_.position = real;
+    const Position to = target_position(state_, t.programmed, words, moves);   // measured from the programmed point
     note_drawing_outside_g01(ctx);
     if (compensating() || (ctx.scan.classes & kRadiusCompCode)) return transform_compensated(ctx, to, moves);
     const dialects::FunctionId motion = state_.flags.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves) return false;
     if (motion != fn::rapid && motion != fn::linear && !arc) return false;   // no motion code: nothing moves
-    const motion::P2 a = transform_point(t.programmed), b = transform_point(to);
+    const motion::P2 a = transform_point(state_, t.programmed), b = transform_point(state_, to);
     std::function<motion::P2(double)> path = [a, b](double u) { return a + (b - a) * u; };
     if (arc) {
-        const auto geometry = transform_arc(motion == fn::circular_cw, a, b, words);
+        const auto geometry = transform_arc(state_, motion == fn::circular_cw, a, b, words);
         if (!geometry) {
-            transform_arc_alarm(ctx, geometry);
+            raise(transform_arc_alarm(state_, ctx, geometry));
             return false;
         }
         path = [g = geometry.arc()](double u) { return arc_point(g, u); };
@@ -194,10 +192,10 @@ bool Executor::transform_move(const BlockContext& ctx) {
     return true;
 }
 
-void Executor::transform_arc_alarm(const BlockContext& ctx, const motion::ArcResult& geometry) {
-    alarm(ctx, geometry.error().fanuc_alarm,
-          fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", state_.transform->code,
-                      motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed));
+Alarm Executor::transform_arc_alarm(const MachineState& s, const BlockContext& ctx, const motion::ArcResult& geometry) const {
+    return {ctx.source(), s.position, geometry.error().fanuc_alarm,
+            fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", s.transform->code,
+                        motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed)};
 }
 
 motion::P2 Executor::arc_point(const motion::Arc& arc, double u) {
@@ -220,12 +218,12 @@ void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(dou
         Position end = span.to;   // the axes outside the plane move linearly along the block
         for (std::size_t axis = 0; axis < kAxisCount; ++axis)
             end[axis] = span.from[axis] + (span.to[axis] - span.from[axis]) * u;
-        end[t.linear] = program_value(t.linear, p.machine.a);
+        end[t.linear] = program_value(state_, t.linear, p.machine.a);
         end[t.rotary] = t.origin_deg + p.machine.b;
         double other_mm2 = 0;   // travel of the linear axes outside the plane
         for (std::size_t axis = 0; axis < 3; ++axis)
             if (axis != t.linear && !setup_.rotary[axis]) {
-                const double d = plane_mm(axis, end[axis]) - plane_mm(axis, state_.position[axis]);
+                const double d = plane_mm(state_, axis, end[axis]) - plane_mm(state_, axis, state_.position[axis]);
                 other_mm2 += d * d;
             }
         transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), ctx);
@@ -237,17 +235,17 @@ void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(dou
 // G02/G03 in the Cartesian plane (counter-clockwise from its first axis toward the second): R,
 // or I (first axis, a radius value) and J (second axis) from the start point (cycles.md §18
 // `G2 X-100 C-30 R30`).
-motion::ArcResult Executor::transform_arc(bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const {
+motion::ArcResult Executor::transform_arc(const MachineState& s, bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const {
     const motion::Vec3 start{a.a, a.b, 0}, end{b.a, b.b, 0};
     const motion::ArcDirection dir = cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
     motion::ArcOptions options;
     options.radius_tolerance = setup_.arc_tolerance;
     options.allow_negative_r = setup_.arc_negative_r;
     options.enlarge_small_r = setup_.arc_enlarge_small_r;
-    if (const auto* r = words.get('R')) return motion::arc_from_radius(start, end, motion::Plane::xy, dir, axis_value(*r, 'R') * unit_scale(), options);
+    if (const auto* r = words.get('R')) return motion::arc_from_radius(start, end, motion::Plane::xy, dir, axis_value(s, *r, 'R') * s.unit_scale(), options);
     motion::Vec3 offset{};
-    if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * unit_scale();
-    if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * unit_scale();
+    if (const auto* i = words.get('I')) offset.x = axis_value(s, *i, 'I') * s.unit_scale();
+    if (const auto* j = words.get('J')) offset.y = axis_value(s, *j, 'J') * s.unit_scale();
     return motion::arc_from_center(start, end, motion::Plane::xy, dir, offset, options);
 }
 
@@ -256,7 +254,7 @@ motion::ArcResult Executor::transform_arc(bool cw, motion::P2 a, motion::P2 b, c
 // takes longer than the trace says (cycles.md §18 "a dry run should warn").
 void Executor::warn_rotary_speed(const BlockContext& ctx, const std::vector<motion::MappedPoint>& pieces, motion::P2 start) {
     const double limit = setup_.rapid_mm_min[state_.transform->rotary];
-    const double feed = state_.feed * unit_scale();
+    const double feed = state_.feed * state_.unit_scale();
     if (limit <= 0 || feed <= 0 || state_.flags.per_revolution) return;
     const double r = motion::min_radius(pieces, start);
     const double needed = r > 0 ? feed / r * kDegPerRad : INFINITY;
