@@ -348,11 +348,23 @@ private:
     bool count_idle_move(const BlockContext& ctx);
     // Stored stroke check of the box low..high (work coordinates); false after an OT alarm.
     bool within_soft_limits(const Position& low, const Position& high, const BlockContext& ctx);
-    bool feed_commanded(bool moves, const BlockContext& ctx);   // else alarm 011
-    void move(EventKind kind, const Position& to, const BlockContext& ctx);
+    // The feed a move is timed with: the modal F and feed mode, a cycle's own (feed_at: mm/min
+    // whatever G94/G95), or the reduced feed of a corner slow-down piece and its ramp.
+    struct FeedRate {
+        double value = 0;             // program units per minute, or per revolution
+        bool per_revolution = false;
+        double time_factor = 1.0;     // [seed 004 G28] a ramp's time over the step's
+    };
+    FeedRate modal_feed() const { return {state_.feed, state_.flags.per_revolution, 1.0}; }
+    bool feed_commanded(bool moves, const BlockContext& ctx, double feed);   // else alarm 011
+    void move(EventKind kind, const Position& to, const BlockContext& ctx) { move(kind, to, ctx, modal_feed()); }
+    void move(EventKind kind, const Position& to, const BlockContext& ctx, const FeedRate& feed);
+    // The move itself, never split (move() splits a slowed G01 first).
+    void run_move(EventKind kind, const Position& to, const BlockContext& ctx, const FeedRate& feed);
     // Time of a feed move or thread (e.start/end/kind set): F per minute or per revolution, G96
     // rpm along the path (a line, or `arc` when not null), exact-stop acceleration.
-    void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const;
+    void time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc,
+                        const FeedRate& feed) const;
     void arc_move(bool cw, const Position& to, const BlockContext& ctx);
     // The block a jump to N`n` lands on in the frame's program: the first from the top, or with the
     // dialect's label_search = forward the first after the frame's current block, wrapping to the top.
@@ -473,12 +485,10 @@ private:
     void apply_length_offset(const BlockContext& ctx);
     bool axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const;   // seed-004 G43/G44
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
-    bool in_slowdown_ = false;              // the pieces of a split move are not split again
-    double slowdown_time_factor_ = 1.0;     // time_feed_move: a ramp's time over the step's
     void apply_corner_slowdown(const BlockContext& ctx);
     // A G01 move split before its end into the full-feed and the reduced-feed piece; false when
     // the move is not slowed (move() then runs it whole).
-    bool slowed_move(const Position& to, const BlockContext& ctx);
+    bool slowed_move(const Position& to, const BlockContext& ctx, const FeedRate& feed);
     bool approach_offset_move(const BlockContext& ctx, const Position& to);
     // G43/G44 without H (a length offset otherwise): G43's approach, or what the seed leaves
     // open said; nullopt when the block then runs as usual.

@@ -56,7 +56,8 @@ void Executor::arc_move(bool cw, const Position& to, const BlockContext& ctx) {
 }
 
 void Executor::emit_arc(const motion::Arc& arc, const Position& to, const BlockContext& ctx) {
-    if (!feed_commanded(motion::length(arc) > 0, ctx)) return;
+    const FeedRate feed = modal_feed();
+    if (!feed_commanded(motion::length(arc) > 0, ctx, feed.value)) return;
     const double scale = state_.unit_scale();
     const motion::Box box = motion::bounds(arc);
     if (!within_soft_limits(from_geometric(box.min, to, setup_.diameter_x, scale),
@@ -77,7 +78,7 @@ void Executor::emit_arc(const motion::Arc& arc, const Position& to, const BlockC
         const double axis_accel = setup_.accel_mm_s2[static_cast<std::size_t>(a)];
         if (axis_accel > 0) accel = accel > 0 ? std::min(accel, axis_accel) : axis_accel;
     }
-    time_feed_move(e, motion::feed_length(arc), accel, &arc);
+    time_feed_move(e, motion::feed_length(arc), accel, &arc, feed);
     result_.feed_distance_mm += e.length_mm;
     state_.position = to;
     emit(std::move(e));

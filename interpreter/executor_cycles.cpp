@@ -128,14 +128,8 @@ public:
         return move(EventKind::thread, to);
     }
     bool feed_at(const Position& to, double mm_per_min) override {
-        const double saved_feed = ex_.state_.feed;
-        const bool saved_per_rev = ex_.state_.flags.per_revolution;
-        ex_.state_.feed = mm_per_min / ex_.state_.unit_scale();
-        ex_.state_.flags.per_revolution = false;
-        const bool ok = move(EventKind::linear, to);
-        ex_.state_.feed = saved_feed;
-        ex_.state_.flags.per_revolution = saved_per_rev;
-        return ok;
+        // The cycle's own feed for this move; the modal F and feed mode stay as they are.
+        return move(EventKind::linear, to, Executor::FeedRate{mm_per_min / ex_.state_.unit_scale(), false, 1.0});
     }
     void tool(int code) override { ex_.apply_tool_word(block_, code); }
     void dwell(double seconds) override {
@@ -161,12 +155,13 @@ public:
     }
 
 private:
-    bool move(EventKind kind, const Position& to) {
+    bool move(EventKind kind, const Position& to) { return move(kind, to, ex_.modal_feed()); }
+    bool move(EventKind kind, const Position& to, const Executor::FeedRate& feed) {
         if (ex_.stopped_) return false;
         // Nothing to move; it still counts as a move, so that a cycle whose step vanishes (a peck
         // below the resolution of a double far from zero) cannot loop without end.
         if (to == ex_.state_.position && kind != EventKind::thread) return ex_.count_idle_move(block_);
-        ex_.move(kind, to, block_);
+        ex_.move(kind, to, block_, feed);
         ex_.leave_offset_for_cycle();
         return !ex_.stopped_;
     }

@@ -43,32 +43,27 @@ void Executor::apply_corner_slowdown(const BlockContext& ctx) {
 // or, by default, a linear ramp from F to F·(1 − p) ("at point 7 the feed is 500"), whose time
 // over the last d ≤ K mm is ∫ ds / f(s) with f(s) = F·(1 − p) + F·p·s/K:
 // K/(F·p) · ln(f(d) / (F·(1 − p))).
-bool Executor::slowed_move(const Position& to, const BlockContext& ctx) {
+bool Executor::slowed_move(const Position& to, const BlockContext& ctx, const FeedRate& feed) {
     const double length = motion::distance(geometric_mm(state_.position, setup_.diameter_x, state_.unit_scale()),
                                            geometric_mm(to, setup_.diameter_x, state_.unit_scale()));
-    if (length <= 1e-9 || state_.feed <= 0) return false;
+    if (length <= 1e-9 || feed.value <= 0) return false;
     const double k = state_.slowdown->k_mm;
     const double d = std::min(k, length);
-    in_slowdown_ = true;
     if (d < length) {
         Position mid = state_.position;
         const double t = 1 - d / length;
         for (std::size_t a = 0; a < kAxisCount; ++a) mid[a] = state_.position[a] + (to[a] - state_.position[a]) * t;
-        move(EventKind::linear, mid, ctx);
+        run_move(EventKind::linear, mid, ctx, feed);   // the pieces of a split move are not split again
     }
     if (!stopped_) {
-        const double full = state_.feed;
-        const double reduced = full * (1 - state_.slowdown->fraction);
+        const double full = feed.value;
+        FeedRate reduced{full * (1 - state_.slowdown->fraction), feed.per_revolution, 1.0};
         if (!setup_.corner_slowdown_step) {
-            const double at_d = reduced + (full - reduced) * d / k;
-            slowdown_time_factor_ = (k / (full - reduced) * std::log(at_d / reduced)) / (d / reduced);
+            const double at_d = reduced.value + (full - reduced.value) * d / k;
+            reduced.time_factor = (k / (full - reduced.value) * std::log(at_d / reduced.value)) / (d / reduced.value);
         }
-        state_.feed = reduced;
-        move(EventKind::linear, to, ctx);
-        state_.feed = full;
-        slowdown_time_factor_ = 1.0;
+        run_move(EventKind::linear, to, ctx, reduced);
     }
-    in_slowdown_ = false;
     return true;
 }
 

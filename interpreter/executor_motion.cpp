@@ -101,10 +101,11 @@ bool Executor::within_soft_limits(const Position& low, const Position& high, con
     return true;
 }
 
-void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const {
+void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc,
+                              const FeedRate& feed) const {
     // F under G99/G95 and every thread lead are per revolution (semantics.md §4, cycles.md §9).
-    const bool per_rev = state_.flags.per_revolution || e.kind == EventKind::thread;
-    e.feed = e.kind == EventKind::thread ? state_.thread_lead : state_.feed;
+    const bool per_rev = feed.per_revolution || e.kind == EventKind::thread;
+    e.feed = e.kind == EventKind::thread ? state_.thread_lead : feed.value;
     e.feed_per_rev = per_rev;
     e.spindle_rpm = current_rpm(state_, e.end[0]);
     e.spindle_running = state_.spindle_on;
@@ -128,7 +129,7 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
         seconds = mm_per_min > 0 ? timed_length_mm / mm_per_min * 60.0 : 0;
     }
     if (e.kind == EventKind::thread && state_.thread_lead_change == 0) e.lead_end = e.feed;
-    seconds *= slowdown_time_factor_;   // [seed 004 G28 ramp] 1 except for a ramp piece
+    seconds *= feed.time_factor;   // [seed 004 G28 ramp] 1 except for a ramp piece
     if (seconds > 0 && std::isfinite(seconds) && accel_mm_s2 > 0) {
         // Exact-stop trapezoid at the move's mean speed (motion/time.hpp).
         const double v = timed_length_mm / seconds;
@@ -139,18 +140,22 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
 
 // A feed move needs a feed rate: F0, or no F since power-on, stops the control with alarm 011
 // ([FANUC] PS011 "feedrate zero"; semantics.md §4). A move that goes nowhere feeds nothing.
-bool Executor::feed_commanded(bool moves, const BlockContext& ctx) {
-    if (state_.feed > 0 || !moves) return true;
+bool Executor::feed_commanded(bool moves, const BlockContext& ctx, double feed) {
+    if (feed > 0 || !moves) return true;
     alarm(ctx, alarms::feed_zero,
           fmt::format("feed move with no feed rate commanded (F{:g}): alarm 011; program F before the first "
-                      "G01/G02/G03", state_.feed));
+                      "G01/G02/G03", feed));
     return false;
 }
 
-void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx) {
+void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx, const FeedRate& feed) {
     // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
-    if (state_.slowdown && kind == EventKind::linear && !in_slowdown_ && ctx.motion_in(state_) == fn::linear && slowed_move(to, ctx)) return;
-    if (kind == EventKind::linear && !feed_commanded(to != state_.position, ctx)) return;
+    if (state_.slowdown && kind == EventKind::linear && ctx.motion_in(state_) == fn::linear && slowed_move(to, ctx, feed)) return;
+    run_move(kind, to, ctx, feed);
+}
+
+void Executor::run_move(EventKind kind, const Position& to, const BlockContext& ctx, const FeedRate& feed) {
+    if (kind == EventKind::linear && !feed_commanded(to != state_.position, ctx, feed.value)) return;
     Event e;
     e.kind = kind;
     e.source = ctx.source();
@@ -174,7 +179,7 @@ void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx)
         e.time_s = motion::rapid_time(travel, limits, setup_.rapid_dogleg ? motion::RapidMode::dog_leg
                                                                           : motion::RapidMode::straight);
         if (!std::isfinite(e.time_s)) e.time_s = 0;   // an axis without a rapid rate: not timed
-        e.feed = state_.feed;
+        e.feed = feed.value;
         result_.rapid_distance_mm += e.length_mm;
     } else {
         const motion::Vec3 delta{travel[0], travel[1], travel[2]};
@@ -183,7 +188,7 @@ void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx)
         // F applies to the composite of linear mm and rotary degrees ([FANUC] "feedrate of rotary
         // axes"): a C-only move at F100 turns 100°/min.
         const double timed = std::hypot(e.length_mm, travel_total.rotary);
-        time_feed_move(e, timed, std::isfinite(accel) ? accel : 0.0, nullptr);
+        time_feed_move(e, timed, std::isfinite(accel) ? accel : 0.0, nullptr, feed);
         result_.feed_distance_mm += e.length_mm;
     }
     state_.position = to;

@@ -281,7 +281,7 @@ void Executor::transform_piece(EventKind kind, const Position& to, double length
     e.start = state_.position;
     e.end = to;
     e.length_mm = length_mm;
-    time_feed_move(e, length_mm, 0.0, nullptr);   // pieces blend: no exact stop between them
+    time_feed_move(e, length_mm, 0.0, nullptr, modal_feed());   // pieces blend: no exact stop between them
     result_.feed_distance_mm += length_mm;
     state_.position = to;
     emit(std::move(e));
