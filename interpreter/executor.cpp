@@ -289,7 +289,7 @@ void Executor::execute_block(Frame& frame) {
         emit(e);
     }
     const std::size_t depth = frames_.size();
-    if (!execute_statements(frame, ctx)) return;
+    if (execute_statements(frame, ctx) != Outcome::not_mine) return;   // a jump, a loop, a call, an alarm
     if (frames_.size() != depth || stopped_) return;   // a call or an alarm
     if (const auto call = scan.macro_call ? view.macro_call() : std::nullopt; call && call->modal) {
         // G66 P L args: remembers the call; its words are arguments, not moves (dialects.md §3.7).
@@ -301,7 +301,7 @@ void Executor::execute_block(Frame& frame) {
     }
     if (!evaluate_words(ctx, words)) return;
     const SourceRef where = ctx.source();
-    const bool moved = apply_block_words(frame, ctx);
+    const bool moved = apply_block_words(frame, ctx) == Outcome::moved;
     if (options_.emit_state && !stopped_) emit_state(where);
     if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(state_, true));
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
@@ -309,8 +309,8 @@ void Executor::execute_block(Frame& frame) {
         push_macro_frame(ctx, state_.modal_call->program, state_.modal_call->repeats, state_.modal_call->arguments, true);
 }
 
-// Steps 2-9 of semantics.md §1.2 for the evaluated words; true when the tool moved.
-bool Executor::apply_block_words(Frame& frame, const BlockContext& ctx) {
+// Steps 2-9 of semantics.md §1.2 for the evaluated words.
+Outcome Executor::apply_block_words(Frame& frame, const BlockContext& ctx) {
     remember_words(ctx);
     apply_feed_speed_tool(ctx);
     if (ctx.scan.classes & dialects::traits::not_modelled) note_not_modelled(ctx);
@@ -320,7 +320,7 @@ bool Executor::apply_block_words(Frame& frame, const BlockContext& ctx) {
     // They run after the block's modal codes (step 4) so that `G96 S200 M03` starts at the surface
     // speed: nothing an M code of step 3 does depends on the other modes.
     apply_m_codes(frame, ctx, MPhase::before_motion);
-    if (stopped_) return false;
+    if (stopped_) return Outcome::stopped;
     const std::uint32_t classes = ctx.scan.classes;
     if ((classes & kLengthCompCode) || state_.length_sign != 0) apply_length_offset(ctx);   // [length offsets]
     if (state_.pending_length_event || state_.length_applied_mm != state_.length_mm) take_up_length_offset_with_z(ctx);
@@ -328,14 +328,14 @@ bool Executor::apply_block_words(Frame& frame, const BlockContext& ctx) {
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
     // A block that sets a frame (G10, G50/G92 X Z, G52, G68, G51, G51.1) does not move; its M
     // codes still run (G68 X0 Y0 R45 M08 turns the coolant on).
-    const bool frame_only = ((classes & kProgramTransformCode) && !apply_program_transforms(ctx)) ||
-                            !apply_coordinate_operations(ctx);
-    if (stopped_) return false;
-    const bool moved = !frame_only && apply_motion(ctx);
-    if (stopped_) return moved;
+    const bool frame_only = ((classes & kProgramTransformCode) && apply_program_transforms(ctx) != Outcome::not_mine) ||
+                            apply_coordinate_operations(ctx) != Outcome::not_mine;
+    if (stopped_) return Outcome::stopped;
+    const Outcome motion = frame_only ? Outcome::done : apply_motion(ctx);
+    if (stopped_) return Outcome::stopped;
     apply_dwell(ctx);
     apply_m_codes(frame, ctx, MPhase::after_motion);   // may end the program: `frame` is gone after M30
-    return moved;
+    return unless_stopped(motion);
 }
 
 // A code whose motion the dry run does not reproduce (traits::not_modelled: G31 skip, G36/G37

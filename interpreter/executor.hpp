@@ -173,6 +173,23 @@ private:
     const BlockContext* block_ = nullptr;
 };
 
+// What a step of a block did with it: the one answer of the handlers a block passes through
+// (semantics.md §1.2: its statements, its frame codes, then apply_motion's chain of motion
+// handlers: plane transforms, reference returns, cycles, the seed-004 specials, compensation,
+// direct drawing, position offsets, the plain move). Each takes the block or leaves it to the next.
+enum class Outcome : std::uint8_t {
+    not_mine,   // not this handler's block (or part of it): the next step runs as usual
+    done,       // taken; the tool did not move (a mode or frame set, a jump or call made, nothing to
+                // move, a cycle block: G66 does not call after it)
+    moved,      // taken; the tool moved (G66 calls its macro after such a block)
+    stopped,    // an alarm (or a run bound) stopped the run
+};
+// What still answers bool says so in its name or its comment: predicates (has_function,
+// compensating, full_circle ...), checks that raise their own alarm and answer false then
+// (within_soft_limits, feed_commanded, evaluate_words, transform_switch_allowed), and the moves of
+// a path that answer false once the run stopped (cycle_arc, run_comp_moves, the cycles::Context
+// moves). Macro B conditions are a value or an error (std::optional<bool>, macro/evaluate.hpp).
+
 // An alarm as a value: where, with the tool where, what. Reading blocks ahead (const functions over a
 // copy of the machine state) returns it; the live block that asked raises it (Executor::raise).
 struct Alarm {
@@ -232,14 +249,18 @@ private:
     // G54.1 Pn / G154 Pn / G10 L20 Pn: n from 1 to the machine's count, else alarm PS0030 (and nullopt).
     std::optional<int> additional_number(const BlockContext& ctx, std::optional<double> p);
     bool stopped_ = false;
+    Outcome unless_stopped(Outcome o) const { return stopped_ ? Outcome::stopped : o; }   // `o`, or stopped
 
     // Block execution.
     void execute_block(Frame& frame);
     void scan_block(const Frame& frame, const ast::BlockView& view, BlockScan& out) const;
-    bool execute_statements(Frame& frame, const BlockContext& ctx);
-    bool execute_statement(Frame& frame, const BlockContext& ctx, const ast::Statement& s);
-    bool start_macro_call(const BlockContext& ctx, const ast::MacroCall& call);
+    // Step 1: the block's macro statements and G65 call. not_mine: the rest of the block runs;
+    // done: it ends here (a jump, a loop, a call, IF [..] with the words skipped).
+    Outcome execute_statements(Frame& frame, const BlockContext& ctx);
+    Outcome execute_statement(Frame& frame, const BlockContext& ctx, const ast::Statement& s);
+    Outcome start_macro_call(const BlockContext& ctx, const ast::MacroCall& call);   // not_mine for G66
     std::optional<std::vector<std::pair<int, macro::Value>>> macro_arguments(const BlockContext& ctx, const ast::MacroCall& call);
+    // The G65/G66 call made (a frame pushed): true; false after its alarm or a resident program skipped.
     bool push_macro_frame(const BlockContext& ctx, std::int64_t program, std::int64_t repeats,
                           const std::vector<std::pair<int, macro::Value>>& arguments, bool modal);
     std::optional<std::uint32_t> find_end(const Frame& frame, std::uint32_t from, int label) const;
@@ -255,11 +276,12 @@ private:
     void apply_tool_word(const BlockContext& ctx, int value);
     void apply_modal_codes(const BlockContext& ctx);
     void update_flags();
-    bool apply_coordinate_operations(const BlockContext& ctx);
+    // Step 5: not_mine, the block goes on to its motion; done, it only set a frame (G10, G50/G92 X Z, G52, G68).
+    Outcome apply_coordinate_operations(const BlockContext& ctx);
     void apply_local_system(const BlockContext& ctx, bool current_point_code);
     void apply_data_input(const BlockContext& ctx);
     void apply_rotation(const BlockContext& ctx);
-    bool apply_motion(const BlockContext& ctx);
+    Outcome apply_motion(const BlockContext& ctx);   // step 7: moved, done (no motion) or stopped
     void thread_move(const BlockContext& ctx, const Position& to);
     bool is_cycle(const dialects::CodeInfo& code) const;
     // What a code of the dialect is, as bits: its traits, computed once when the dialect is indexed
@@ -283,7 +305,7 @@ private:
                                   kArcApproachCode = dialects::traits::arc_approach,   // seed 004 G12/G13
                                   kProgramTransformCode = dialects::traits::program_transform;   // G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp)
     void note_drawing_outside_g01(const BlockContext& ctx);
-    std::optional<bool> apply_reference_motion(const BlockContext& ctx);
+    Outcome apply_reference_motion(const BlockContext& ctx);   // G27/G28/G29/G30/G53 (executor_reference.cpp)
     void apply_dwell(const BlockContext& ctx);
     // A P dwell word in seconds: ms, or s on ADV400 (semantics.md §8.2); G04 and the drilling cycles.
     double dwell_p_seconds(double p) const { return setup_.dwell_p_in_seconds ? p : p / 1000.0; }
@@ -303,7 +325,7 @@ private:
     macro::WriteResult write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value,
                                               macro::SystemVariables& system);
     void main_program_pass(Frame& frame, const BlockContext& ctx, const Word* p);   // M99 in the main program
-    bool apply_block_words(Frame& frame, const BlockContext& ctx);
+    Outcome apply_block_words(Frame& frame, const BlockContext& ctx);   // steps 2-9
     void emit_state(const SourceRef& where);
 
     // Helpers.
@@ -390,8 +412,8 @@ private:
         std::uint32_t first, last;   // block indices of N P and N Q
     };
     // The cycle of the block (its code, or the modal one on a block with axis words) expanded into
-    // moves; false when the block has no cycle. `to` is the block's target point.
-    bool apply_cycle(const BlockContext& ctx, bool has_axis_words, const Position& to);
+    // moves (done; not_mine when the block has no cycle). `to` is the block's target point.
+    Outcome apply_cycle(const BlockContext& ctx, bool has_axis_words, const Position& to);
     const dialects::CodeInfo* cycle_of_block(const BlockContext& ctx, bool has_axis_words) const;
     // Profile N P .. N Q of the cycle block `ctx` (its blocks into `blocks`); nullopt after an alarm.
     std::optional<cycles::Profile> cycle_profile(const BlockContext& ctx, std::string_view spelling, double p, double q,
@@ -408,6 +430,7 @@ private:
                                             dialects::FunctionId& motion, cycles::Profile& profile, std::uint32_t last) const;
     std::optional<Alarm> read_profile_drawing(MachineState& s, const BlockContext& block, const Position& to,
                                               cycles::Profile& profile, std::uint32_t last) const;
+    // An arc kerf computed, to `to` about `center`; false once the run stopped (as cycles::Context).
     bool cycle_arc(bool cw, const Position& to, const Position& center, const BlockContext& ctx);
     motion::ArcOptions computed_arc_options() const;   // arcs kerf computed: radius check ≥ 0.1 µm
     // --- direct drawing (executor_drawing.cpp; the resolver is direct_drawing.hpp) ---------------
@@ -433,20 +456,20 @@ private:
                                              const Position& start, const Position& tool, const Position& to,
                                              std::optional<std::uint32_t> last) const;
     // A G01 block with direct-drawing words, run: its line, chamfer or fillet (executor_drawing.cpp).
-    bool draw_block(const BlockContext& ctx, const Position& start, const Position& to);
+    Outcome draw_block(const BlockContext& ctx, const Position& start, const Position& to);
     // --- G45–G48 position offsets (executor_offsets.cpp, semantics.md §9.3) ----------------------
     std::optional<int> position_offset_factor(const BlockContext& ctx) const;   // ±1 / ±2 when the block has G45–G48
     double d_register() const;                             // the modal D's value, program units
-    bool position_offset_move(const BlockContext& ctx, int factor, const Position& start, const Position& to);
-    bool position_offset_arc(const BlockContext& ctx, bool cw, double change, const Position& start, const Position& to);
+    Outcome position_offset_move(const BlockContext& ctx, int factor, const Position& start, const Position& to);
+    Outcome position_offset_arc(const BlockContext& ctx, bool cw, double change, const Position& start, const Position& to);
     static bool drawing_words(const BlockContext& ctx) { return ctx.scan.comma_words || ctx.scan.direct_drawing; }
     // --- cutter / nose radius compensation G40–G42 (executor_compensation.cpp, semantics.md §5,
     // §6). While the tool stands at an offset point, state_.position is the tool (centre, or the
     // imaginary tip on a lathe), state_.programmed the programmed point and state_.comp_path the point of the
     // programmed path (they differ past a direct-drawing corner).
     bool compensating() const { return state_.comp_side != 0 || state_.radius_comp.engaged(); }
-    // The block's motion under compensation (or its G40–G42 without motion); true when it moved.
-    bool compensate_motion(const BlockContext& ctx, const Position& to, bool moves);
+    // The block's motion under compensation (or its G40–G42 without motion).
+    Outcome compensate_motion(const BlockContext& ctx, const Position& to, bool moves);
     int comp_side_of_block(const MachineState& s, const BlockContext& ctx, int current) const;   // the side its G40–G42 set
     static bool full_circle(dialects::FunctionId motion, const BlockWords& words);
     double comp_radius(const MachineState& s, const BlockWords& words) const;  // mm: D register (mill), nose radius (lathe)
@@ -473,8 +496,10 @@ private:
     OrAlarm<std::optional<compensation::Programmed>> comp_look_ahead(const BlockContext& ctx, const Position& from) const;
     std::optional<compensation::Step> comp_step(const compensation::Programmed& current,
                                                 const std::optional<compensation::Programmed>& next, const BlockContext& ctx);
+    // The step's tool moves; false once the run stopped.
     bool run_comp_moves(const compensation::Step& step, bool rapid, bool cancels, const Position& like, const BlockContext& ctx);
-    // A G70 finishing path under G41/G42: each element offset with the next one as look-ahead.
+    // A G70 finishing path under G41/G42: each element offset with the next one as look-ahead;
+    // false once the run stopped (cycles::Context::finishing_path).
     bool compensate_path(const std::vector<cycles::ProfileMove>& path, const BlockContext& ctx);
     void leave_offset_for_cycle();   // a cycle's own move under G41/G42: the offset is left (executor_cycles.cpp)
     // --- G43/G44/G49 tool length offsets (executor_length.cpp, semantics.md §7, §2.7) ----------
@@ -486,16 +511,16 @@ private:
     bool axial_offset_is_length(const dialects::CodeInfo& code, const BlockWords& words) const;   // seed-004 G43/G44
     // --- iso-legacy-mill specials (executor_iso_specials.cpp, semantics.md §9.4, §9.5) ----------
     void apply_corner_slowdown(const BlockContext& ctx);
-    // A G01 move split before its end into the full-feed and the reduced-feed piece; false when
+    // A G01 move split before its end into the full-feed and the reduced-feed piece; not_mine when
     // the move is not slowed (move() then runs it whole).
-    bool slowed_move(const Position& to, const BlockContext& ctx, const FeedRate& feed);
-    bool approach_offset_move(const BlockContext& ctx, const Position& to);
+    Outcome slowed_move(const Position& to, const BlockContext& ctx, const FeedRate& feed);
+    Outcome approach_offset_move(const BlockContext& ctx, const Position& to);
     // G43/G44 without H (a length offset otherwise): G43's approach, or what the seed leaves
-    // open said; nullopt when the block then runs as usual.
-    std::optional<bool> axial_offset_motion(const BlockContext& ctx, const Position& to, bool moves);
+    // open said; not_mine when the block then runs as usual.
+    Outcome axial_offset_motion(const BlockContext& ctx, const Position& to, bool moves);
     // G12/G13 X Y: a quarter arc from the programmed point to X Y, run as a G03 (G41, G40) or G02
-    // (G42) block with its centre words; true when it moved.
-    bool arc_approach_move(const BlockContext& ctx, const Position& to);
+    // (G42) block with its centre words.
+    Outcome arc_approach_move(const BlockContext& ctx, const Position& to);
     // The block's words with the centre words of that arc from `from`; `ccw` its direction.
     BlockWords arc_approach_words(const MachineState& s, const BlockContext& ctx, const Position& from, const Position& to,
                                   bool& ccw) const;
@@ -505,7 +530,7 @@ private:
     void emit_arc(const motion::Arc& arc, const Position& to, const BlockContext& ctx);
     // --- [transforms] G15/G16 polar coordinate command, G50/G51 scaling, G50.1/G51.1 mirror image
     // (executor_transforms.cpp; the geometry with G68 in transforms.hpp) -----------------------
-    bool apply_program_transforms(const BlockContext& ctx);   // false: no motion
+    Outcome apply_program_transforms(const BlockContext& ctx);   // done: the block's words were centres, no motion
     void start_scaling(const BlockContext& ctx);
     double magnification(const Word& w) const;   // a P/I/J/K word: with a point the factor, else units
     void set_mirror(const BlockContext& ctx, bool on);
@@ -517,14 +542,14 @@ private:
         Position from, to;
         double u0 = 0, u1 = 1;
     };
-    // The block under a mode (or starting/ending one): true/false = moved or not, handled here;
-    // nullopt = the block runs as usual (no mode, or G113 / G07.1 C0 just ended it).
-    std::optional<bool> apply_plane_transform(const BlockContext& ctx);
+    // The block under a mode (or starting/ending one); not_mine: the block runs as usual (no mode,
+    // or G113 / G07.1 C0 just ended it).
+    Outcome apply_plane_transform(const BlockContext& ctx);
     std::optional<std::string> improper_in_transform(const BlockContext& ctx) const;
     void start_polar(const std::string& spelling);
-    bool start_polar_with_c(const BlockContext& ctx, const std::string& spelling);
-    bool cylindrical_code(const BlockContext& ctx, const std::string& spelling);
-    bool transform_move(const BlockContext& ctx);
+    Outcome start_polar_with_c(const BlockContext& ctx, const std::string& spelling);
+    Outcome cylindrical_code(const BlockContext& ctx, const std::string& spelling);   // done (mode set or ended) or stopped
+    Outcome transform_move(const BlockContext& ctx);
     motion::ArcResult transform_arc(const MachineState& s, bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const;
     void warn_rotary_speed(const BlockContext& ctx, const std::vector<motion::MappedPoint>& pieces, motion::P2 start);
     void transform_piece(EventKind kind, const Position& to, double length_mm, const BlockContext& ctx);
@@ -536,9 +561,9 @@ private:
     // The element, or the arc's error (an alarm for the block that runs it).
     OrAlarm<motion::Element> transform_element(const MachineState& s, const BlockContext& ctx, const Position& start,
                                                const Position& to) const;
-    bool transform_compensated(const BlockContext& ctx, const Position& to, bool moves);
+    Outcome transform_compensated(const BlockContext& ctx, const Position& to, bool moves);
     void run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to, const BlockContext& ctx);
-    bool transform_switch_allowed(const BlockContext& ctx, const std::string& spelling);
+    bool transform_switch_allowed(const BlockContext& ctx, const std::string& spelling);   // false after alarm 145
     motion::P2 transform_point(const MachineState& s, const Position& p) const;
     double plane_mm(const MachineState& s, std::size_t axis, double value) const;      // program value → geometric mm (X radius)
     double program_value(const MachineState& s, std::size_t axis, double mm) const;    // and back

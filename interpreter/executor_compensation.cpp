@@ -238,7 +238,7 @@ bool Executor::run_comp_moves(const compensation::Step& step, bool rapid, bool c
     return true;
 }
 
-bool Executor::compensate_motion(const BlockContext& ctx, const Position& to, bool moves_words) {
+Outcome Executor::compensate_motion(const BlockContext& ctx, const Position& to, bool moves_words) {
     const BlockWords& words = ctx.words;
     const dialects::FunctionId motion = ctx.motion_in(state_);
     bool moves = moves_words;
@@ -250,7 +250,7 @@ bool Executor::compensate_motion(const BlockContext& ctx, const Position& to, bo
     const bool immediate = !moves && !circle && side != 0 && !state_.radius_comp.engaged() && setup_.comp_shift_without_motion;
     if (!moves && !circle && !immediate) {
         state_.comp_side = side;   // G41/G42/G40 without motion: in force from the next move
-        return false;
+        return Outcome::done;
     }
     // A move off the plane (a Z plunge in G17, a C turn): the offset stays, the compensation
     // starts or goes on with the next move in the plane ([FANUC]; semantics.md §5 "blocks
@@ -265,11 +265,11 @@ bool Executor::compensate_motion(const BlockContext& ctx, const Position& to, bo
             state_.comp_path = plane_position(state_, plane_point(state_, start), to);
             state_.programmed = to;
         }
-        return true;
+        return unless_stopped(Outcome::moved);
     }
     CompPieces read = comp_pieces(state_, ctx, start, to, false);
     state_.comp_side = side;
-    if (!block_pieces_run(read, ctx)) return false;
+    if (!block_pieces_run(read, ctx)) return unless_stopped(Outcome::done);
     const std::vector<CompPiece>& pieces = read.pieces;
     const Position& programmed_end = read.programmed_end;
     const bool rapid = motion == fn::rapid;
@@ -282,14 +282,14 @@ bool Executor::compensate_motion(const BlockContext& ctx, const Position& to, bo
             OrAlarm<std::optional<Programmed>> ahead = comp_look_ahead(ctx, programmed_end);
             if (!ahead.ok()) {
                 raise(std::move(*ahead.alarm));   // the block read ahead cannot be read
-                return false;
+                return Outcome::stopped;
             }
             next = ahead.value;
         }
         const bool cancels = state_.radius_comp.engaged() && cur.side == 0;
         const auto step = comp_step(cur, next, ctx);
-        if (!step) return false;
-        if (!run_comp_moves(*step, rapid, cancels, pieces[i].end, ctx)) return true;
+        if (!step) return Outcome::stopped;
+        if (!run_comp_moves(*step, rapid, cancels, pieces[i].end, ctx)) return Outcome::stopped;
     }
     if (state_.radius_comp.engaged()) {
         state_.comp_path = pieces.empty() ? start : pieces.back().end;
@@ -299,7 +299,7 @@ bool Executor::compensate_motion(const BlockContext& ctx, const Position& to, bo
         state_.programmed.reset();
         state_.position = programmed_end;   // exactly on the programmed point after the cancel
     }
-    return true;
+    return Outcome::moved;
 }
 
 // G70 under G41/G42 (cycles.md §1 "tool-nose radius compensation active before G70 is applied to

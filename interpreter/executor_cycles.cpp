@@ -187,9 +187,9 @@ const dialects::CodeInfo* Executor::cycle_of_block(const BlockContext& ctx, bool
     return state_.flags.motion_cycle ? state_.flags.motion_cycle : state_.flags.modal_cycle;
 }
 
-bool Executor::apply_cycle(const BlockContext& ctx, bool has_axis_words, const Position& to) {
+Outcome Executor::apply_cycle(const BlockContext& ctx, bool has_axis_words, const Position& to) {
     const dialects::CodeInfo* cycle = cycle_of_block(ctx, has_axis_words);
-    if (!cycle) return false;
+    if (!cycle) return Outcome::not_mine;
     CycleContext context(*this, *cycle, ctx, has_axis_words, to);
     if (!cycles::expand(context)) {
         Event e = event_at(EventKind::message, ctx);
@@ -197,7 +197,7 @@ bool Executor::apply_cycle(const BlockContext& ctx, bool has_axis_words, const P
         e.text = fmt::format("{} ({}) is not expanded by kerf: the tool stays at its start point",
                              cycle->spelling, cycle->function);
         emit(e);
-        return true;
+        return Outcome::done;
     }
     // G71–G73: the control goes on after the profile that follows the cycle block (cycles.md
     // §2–§4); G70, or a profile written elsewhere, goes on after the cycle block (§1).
@@ -205,7 +205,7 @@ bool Executor::apply_cycle(const BlockContext& ctx, bool has_axis_words, const P
     const auto& blocks = context.profile_blocks();
     if (blocks && cycle->function != fn::finishing_cycle && !stopped_ && frame && blocks->first >= frame->block)
         frame->block = blocks->last + 1;
-    return true;
+    return unless_stopped(Outcome::done);
 }
 
 // Rough cycles do not apply the compensation (cycles.md §2 "Roughing ignores nose-radius

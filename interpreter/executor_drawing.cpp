@@ -115,24 +115,24 @@ OrAlarm<drawing::Result> Executor::resolve_drawing(const MachineState& s, const 
     return {std::move(r), std::nullopt};
 }
 
-bool Executor::draw_block(const BlockContext& ctx, const Position& start, const Position& to) {
+Outcome Executor::draw_block(const BlockContext& ctx, const Position& start, const Position& to) {
     auto drawn = resolve_drawing(state_, state_.position, ctx, start, state_.position, to, std::nullopt);
     if (!drawn.ok()) {
         raise(std::move(*drawn.alarm));
-        return false;
+        return Outcome::stopped;
     }
     const drawing::Result* r = &drawn.value;
     for (const drawing::Move& m : r->moves) {
         const Position end = plane_position(state_, m.end, to);
         if (m.arc) cycle_arc(m.sweep < 0, end, plane_position(state_, m.center, to), ctx);
         else move(EventKind::linear, end, ctx);
-        if (stopped_) return true;
+        if (stopped_) return Outcome::stopped;
     }
     const Position programmed = plane_position(state_, r->end, to);
     const bool off = motion::norm(plane_point(state_, programmed) - plane_point(state_, state_.position)) > 1e-9;
     state_.programmed = off ? std::optional<Position>(programmed) : std::nullopt;
     if (!off) state_.position = programmed;   // exactly on the programmed point again
-    return !r->moves.empty();
+    return r->moves.empty() ? Outcome::done : Outcome::moved;
 }
 
 void Executor::note_drawing_outside_g01(const BlockContext& ctx) {

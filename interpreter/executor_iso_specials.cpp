@@ -43,10 +43,10 @@ void Executor::apply_corner_slowdown(const BlockContext& ctx) {
 // or, by default, a linear ramp from F to F·(1 − p) ("at point 7 the feed is 500"), whose time
 // over the last d ≤ K mm is ∫ ds / f(s) with f(s) = F·(1 − p) + F·p·s/K:
 // K/(F·p) · ln(f(d) / (F·(1 − p))).
-bool Executor::slowed_move(const Position& to, const BlockContext& ctx, const FeedRate& feed) {
+Outcome Executor::slowed_move(const Position& to, const BlockContext& ctx, const FeedRate& feed) {
     const double length = motion::distance(geometric_mm(state_.position, setup_.diameter_x, state_.unit_scale()),
                                            geometric_mm(to, setup_.diameter_x, state_.unit_scale()));
-    if (length <= 1e-9 || feed.value <= 0) return false;
+    if (length <= 1e-9 || feed.value <= 0) return Outcome::not_mine;
     const double k = state_.slowdown->k_mm;
     const double d = std::min(k, length);
     if (d < length) {
@@ -64,20 +64,20 @@ bool Executor::slowed_move(const Position& to, const BlockContext& ctx, const Fe
         }
         run_move(EventKind::linear, to, ctx, reduced);
     }
-    return true;
+    return unless_stopped(Outcome::moved);
 }
 
 // G43/G44 of seed 004 without H (with H they are the axial length offset, executor_length.cpp).
 // G43 in a G00/G01 move is the approach of §9.4; G44 is only "the opposite direction of G43"
 // (semantics.md §7, the seed's chapter 8 is missing): it moves nothing else and says so, as does
 // a G43 without a move.
-std::optional<bool> Executor::axial_offset_motion(const BlockContext& ctx, const Position& to,
+Outcome Executor::axial_offset_motion(const BlockContext& ctx, const Position& to,
                                                   bool moves) {
     const BlockWords& words = ctx.words;
     const dialects::CodeInfo* code = nullptr;
     for (const ast::CodeRef& c : ctx.scan.g)
         if (c.info && (code_class_of(*c.info) & kApproachOffsetCode)) code = c.info;
-    if (!code || axial_offset_is_length(*code, words)) return std::nullopt;
+    if (!code || axial_offset_is_length(*code, words)) return Outcome::not_mine;
     const bool straight = state_.flags.motion == fn::rapid || state_.flags.motion == fn::linear;
     if (code->function == fn::axial_offset_plus && moves && straight) return approach_offset_move(ctx, to);
     Event m = event_at(EventKind::message, ctx);
@@ -90,14 +90,14 @@ std::optional<bool> Executor::axial_offset_motion(const BlockContext& ctx, const
                                "its chapter 8 is missing): no offset applied; give H for an axial offset",
                                code->spelling);
     emit(m);
-    return std::nullopt;
+    return Outcome::not_mine;   // said; the block runs as usual
 }
 
 // §9.4 (example 6 `N60 G0 G43 X140. Y35. D08`): the tool stops D short of the programmed point
 // along the approach from the programmed start [inference, flagged in a message; machine switch
 // iso_g43]. Under G41/G42 the tool then stands at an offset point of the programmed end (the
 // centre of the next element's start-up), so the compensation goes on from there.
-bool Executor::approach_offset_move(const BlockContext& ctx, const Position& to) {
+Outcome Executor::approach_offset_move(const BlockContext& ctx, const Position& to) {
     const Position from = state_.comp_path ? *state_.comp_path : state_.programmed.value_or(state_.position);
     const motion::P2 a = plane_point(state_, from), b = plane_point(state_, to);
     const double length = motion::norm(b - a);
@@ -108,13 +108,13 @@ bool Executor::approach_offset_move(const BlockContext& ctx, const Position& to)
                          "an inference of seed 004 example 6)", d);
     emit(m);
     move(state_.flags.motion == fn::rapid ? EventKind::rapid : EventKind::linear, plane_position(state_, end, to), ctx);
-    if (stopped_) return true;
+    if (stopped_) return Outcome::stopped;
     if (state_.comp_side != 0) {
         state_.radius_comp.stand_at(end);
         state_.comp_path = to;
     }
     state_.programmed = to;
-    return true;
+    return Outcome::moved;
 }
 
 // §9.6 (example 4: `G12 X95. Y30. F200` may replace `G3 X95. Y90. I-40. J0. F200`, `G13 X55. Y50.
@@ -142,15 +142,15 @@ BlockWords Executor::arc_approach_words(const MachineState& s, const BlockContex
     return arc;
 }
 
-bool Executor::arc_approach_move(const BlockContext& ctx, const Position& to) {
+Outcome Executor::arc_approach_move(const BlockContext& ctx, const Position& to) {
     bool ccw = true;
     const BlockWords arc = arc_approach_words(state_, ctx, state_.comp_path ? *state_.comp_path : state_.programmed.value_or(state_.position), to, ccw);
     const BlockContext as_arc = ctx.running_as(arc, ccw ? fn::circular_ccw : fn::circular_cw);
-    bool moved = true;
+    Outcome moved = Outcome::moved;
     if ((ctx.scan.classes & kRadiusCompCode) || compensating()) moved = compensate_motion(as_arc, to, true);
     else arc_move(!ccw, to, as_arc);
     if (!compensating()) state_.programmed.reset();
-    return moved;
+    return unless_stopped(moved);
 }
 
 }  // namespace kerf::interpreter

@@ -49,27 +49,28 @@ std::string format_print(std::string_view text, const macro::Variables& variable
 
 }  // namespace
 
-// Returns false when the block must not go on (a jump, an alarm, a call).
-bool Executor::execute_statements(Frame& frame, const BlockContext& ctx) {
+// not_mine: the rest of the block runs; done: it ends here (a jump, a loop, a call, IF [..] whose
+// words are skipped); stopped: an alarm.
+Outcome Executor::execute_statements(Frame& frame, const BlockContext& ctx) {
     const ast::SyntaxTree& tree = ctx.view.tree();
     if (ctx.scan.statements) {
         for (const std::uint32_t ti : ctx.view.statements()) {
             const ast::Statement& s = tree.statements[static_cast<std::size_t>(tree.tokens[ti].payload)];
-            if (!execute_statement(frame, ctx, s) || stopped_) return false;
+            if (const Outcome o = unless_stopped(execute_statement(frame, ctx, s)); o != Outcome::not_mine) return o;
         }
     }
-    if (!ctx.scan.macro_call) return true;
-    if (const auto call = ctx.view.macro_call()) return !start_macro_call(ctx, *call);
-    return true;
+    if (!ctx.scan.macro_call) return Outcome::not_mine;
+    if (const auto call = ctx.view.macro_call()) return start_macro_call(ctx, *call);
+    return Outcome::not_mine;
 }
 
-bool Executor::execute_statement(Frame& frame, const BlockContext& ctx, const ast::Statement& s) {
+Outcome Executor::execute_statement(Frame& frame, const BlockContext& ctx, const ast::Statement& s) {
     const ast::SyntaxTree& tree = ctx.view.tree();
     auto fail = [&](const macro::Error& e) {
         alarm(ctx, e.alarm, e.message);
-        return false;
+        return Outcome::stopped;
     };
-    auto condition = [&]() -> std::optional<bool> {
+    auto condition = [&]() -> std::optional<bool> {   // the value, or nullopt after its alarm
         const macro::ConditionResult c = macro::evaluate_condition(tree, s.value, variables_, macro_options(state_, false));
         if (c.error) {
             fail(*c.error);
@@ -89,92 +90,93 @@ bool Executor::execute_statement(Frame& frame, const BlockContext& ctx, const as
         case ast::StatementKind::assign: {
             ExecutorSystemVariables system(*this, ctx);   // the block's: #3000 raises its alarm here
             if (const auto e = macro::assign(tree, s, variables_, system, macro_options(state_, false))) return fail(*e);
-            return true;
+            return unless_stopped(Outcome::not_mine);   // #3006 may stop the run
         }
         case ast::StatementKind::if_then: {
             const auto c = condition();
-            if (!c) return false;
+            if (!c) return Outcome::stopped;
             if (*c) return execute_statement(frame, ctx, tree.statements[static_cast<std::size_t>(s.then_statement)]);
-            return true;
+            return Outcome::not_mine;
         }
         case ast::StatementKind::if_words: {
             // [Haas] IF [...] G65 P9725: the block's words run only when the condition holds.
             const auto c = condition();
-            return c.value_or(false);
+            if (!c) return Outcome::stopped;
+            return *c ? Outcome::not_mine : Outcome::done;
         }
         case ast::StatementKind::if_goto:
         case ast::StatementKind::goto_: {
             if (s.kind == ast::StatementKind::if_goto) {
                 const auto c = condition();
-                if (!c) return false;
-                if (!*c) return true;
+                if (!c) return Outcome::stopped;
+                if (!*c) return Outcome::not_mine;
             }
             const auto n = label_value();
-            if (!n) return false;
+            if (!n) return Outcome::stopped;
             const auto target = find_label(frame, std::round(*n));
             if (!target) {
                 alarm(ctx, 128, fmt::format("GOTO {}: no sequence number N{} in this program (alarm 128)", *n, *n));
-                return false;
+                return Outcome::stopped;
             }
             frame.block = *target;
             frame.loops.clear();   // a jump out of a loop leaves it
-            return false;
+            return Outcome::done;
         }
         case ast::StatementKind::while_do:
         case ast::StatementKind::do_: {
             const auto m = label_value();
-            if (!m) return false;
+            if (!m) return Outcome::stopped;
             if (*m < 1 || *m > 3) {
                 alarm(ctx, 126, fmt::format("DO {}: the loop number must be 1, 2 or 3 (alarm 126)", *m));
-                return false;
+                return Outcome::stopped;
             }
             const bool enter = s.kind == ast::StatementKind::do_ ? true : [&] {
                 const auto c = condition();
                 return c.value_or(false);
             }();
-            if (stopped_) return false;
+            if (stopped_) return Outcome::stopped;
             if (enter) {
                 if (frame.loops.empty() || frame.loops.back().do_block != ctx.scan.block) {
                     if (frame.loops.size() >= 3) {
                         alarm(ctx, 124, "WHILE/DO nested deeper than 3 (alarm 124)");
-                        return false;
+                        return Outcome::stopped;
                     }
                     frame.loops.push_back({ctx.scan.block, static_cast<int>(*m)});
                 }
-                return true;
+                return Outcome::not_mine;
             }
             // Condition false: continue after the matching END m.
             if (!frame.loops.empty() && frame.loops.back().do_block == ctx.scan.block) frame.loops.pop_back();
             const auto end = find_end(frame, ctx.scan.block, static_cast<int>(*m));
             if (!end) {
                 alarm(ctx, 124, fmt::format("DO {} without END {} (alarm 124)", *m, *m));
-                return false;
+                return Outcome::stopped;
             }
             frame.block = *end + 1;
-            return false;
+            return Outcome::done;
         }
         case ast::StatementKind::end: {
             const auto m = label_value();
-            if (!m) return false;
+            if (!m) return Outcome::stopped;
             if (frame.loops.empty() || frame.loops.back().label != static_cast<int>(*m)) {
                 alarm(ctx, 124, fmt::format("END {} without its DO (alarm 124)", *m));
-                return false;
+                return Outcome::stopped;
             }
             frame.block = frame.loops.back().do_block;   // back to WHILE: the condition is tested again
-            return false;
+            return Outcome::done;
         }
         case ast::StatementKind::dprnt:
         case ast::StatementKind::bprnt: {
             Event e = event_at(EventKind::message, ctx);
             e.text = format_print(tree.slice(s.text), variables_);
             emit(e);
-            return true;
+            return Outcome::not_mine;
         }
         case ast::StatementKind::popen:
         case ast::StatementKind::pclos:
-            return true;
+            return Outcome::not_mine;
     }
-    return true;
+    return Outcome::not_mine;
 }
 
 std::optional<std::uint32_t> Executor::find_end(const Frame& frame, std::uint32_t from, int label) const {
@@ -252,16 +254,17 @@ bool Executor::push_macro_frame(const BlockContext& ctx, std::int64_t program,
     return true;
 }
 
-// G65 P_ L_ arguments: true when the block ends here (the call started, or an alarm).
-bool Executor::start_macro_call(const BlockContext& ctx, const ast::MacroCall& call) {
-    if (call.modal) return false;   // G66: execute_block remembers it
+// G65 P_ L_ arguments: the block ends here (done: the call started or was skipped; stopped: an
+// alarm); G66 is not_mine (execute_block remembers it).
+Outcome Executor::start_macro_call(const BlockContext& ctx, const ast::MacroCall& call) {
+    if (call.modal) return Outcome::not_mine;
     if (!call.program) {
         alarm(ctx, 76, "G65 without a program number P (alarm 076)");
-        return true;
+        return Outcome::stopped;
     }
     const auto arguments = macro_arguments(ctx, call);
     if (arguments) push_macro_frame(ctx, *call.program, call.repeats, *arguments, false);
-    return true;
+    return unless_stopped(Outcome::done);
 }
 
 }  // namespace kerf::interpreter

@@ -150,7 +150,9 @@ bool Executor::feed_commanded(bool moves, const BlockContext& ctx, double feed) 
 
 void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx, const FeedRate& feed) {
     // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
-    if (state_.slowdown && kind == EventKind::linear && ctx.motion_in(state_) == fn::linear && slowed_move(to, ctx, feed)) return;
+    if (state_.slowdown && kind == EventKind::linear && ctx.motion_in(state_) == fn::linear &&
+        slowed_move(to, ctx, feed) != Outcome::not_mine)
+        return;
     run_move(kind, to, ctx, feed);
 }
 
@@ -226,15 +228,15 @@ void Executor::thread_move(const BlockContext& ctx, const Position& to) {
     move(EventKind::thread, to, ctx);
 }
 
-bool Executor::apply_motion(const BlockContext& ctx) {
+Outcome Executor::apply_motion(const BlockContext& ctx) {
     const BlockWords& words = ctx.words;
     // [polar] G112/G107 modes: the block's path is in the Cartesian plane (polar.cpp).
     if (state_.transform || (ctx.scan.classes & kTransformCode)) {
-        if (const auto moved = apply_plane_transform(ctx)) return *moved;
+        if (const Outcome o = apply_plane_transform(ctx); o != Outcome::not_mine) return o;
     }
-    if (const auto reference = apply_reference_motion(ctx)) {
+    if (const Outcome o = apply_reference_motion(ctx); o != Outcome::not_mine) {
         state_.programmed.reset();
-        return *reference;
+        return o;
     }
     bool moves = false;
     // G45–G48 act only in their block (semantics.md §9.3): a block without them measures from where
@@ -245,10 +247,11 @@ bool Executor::apply_motion(const BlockContext& ctx) {
     // [path changers] After a corner of direct drawing the tool stands off the programmed point,
     // which the block's coordinates are measured from (executor_drawing.cpp).
     const Position to = target_position(state_, state_.programmed.value_or(state_.position), words, moves);
-    if (apply_cycle(ctx, moves, to)) return false;
+    // A cycle block is not a move block for G66 (done, not moved): the modal call does not follow it.
+    if (const Outcome o = apply_cycle(ctx, moves, to); o != Outcome::not_mine) return o;
     // [seed 004 G43/G44 without H] the approach of §9.4 (executor_iso_specials.cpp).
     if (ctx.scan.classes & kApproachOffsetCode)
-        if (const auto moved = axial_offset_motion(ctx, to, moves)) return *moved;
+        if (const Outcome o = axial_offset_motion(ctx, to, moves); o != Outcome::not_mine) return o;
     if ((ctx.scan.classes & kArcApproachCode) && moves) return arc_approach_move(ctx, to);   // [seed 004 G12/G13]
     // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
     if ((ctx.scan.classes & kRadiusCompCode) || compensating()) return compensate_motion(ctx, to, moves);
@@ -259,13 +262,7 @@ bool Executor::apply_motion(const BlockContext& ctx) {
     note_drawing_outside_g01(ctx);
     const dialects::FunctionId motion = state_.flags.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
-    const auto centre_word = [&](char letter) {
-        const auto* w = words.get(letter);
-        return w && !w->data;
-    };
-    const bool full_circle = (motion == fn::circular_cw || motion == fn::circular_ccw) &&
-                             (centre_word('I') || centre_word('J') || centre_word('K'));
-    if (!moves && !full_circle) return false;
+    if (!moves && !full_circle(motion, words)) return Outcome::done;
     if (motion == fn::rapid) move(EventKind::rapid, to, ctx);
     else if (motion == fn::linear) move(EventKind::linear, to, ctx);
     else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, ctx);
@@ -276,9 +273,9 @@ bool Executor::apply_motion(const BlockContext& ctx) {
         e.text = motion.empty() ? std::string("axis words without a motion code (no G00/G01/G02/G03 active): no motion")
                                 : fmt::format("motion '{}' is not expanded by kerf: no motion", motion);
         emit(e);
-        return false;
+        return Outcome::done;
     }
-    return true;
+    return unless_stopped(Outcome::moved);
 }
 
 void Executor::apply_dwell(const BlockContext& ctx) {

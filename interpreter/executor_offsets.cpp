@@ -30,7 +30,7 @@ double Executor::d_register() const {
     return it == memory_.tools.end() ? 0 : (it->second.radius + it->second.radius_wear) / state_.unit_scale();
 }
 
-bool Executor::position_offset_move(const BlockContext& ctx, int factor, const Position& start,
+Outcome Executor::position_offset_move(const BlockContext& ctx, int factor, const Position& start,
                                     const Position& to) {
     const BlockWords& words = ctx.words;
     const double d = d_register();
@@ -39,7 +39,8 @@ bool Executor::position_offset_move(const BlockContext& ctx, int factor, const P
     // still move straight, "10 mm in Y" (semantics.md §9.3 table) [inference: the seed's intent].
     const bool centre = words.get('I') || words.get('J') || words.get('K') || words.get('R');
     if ((motion == fn::circular_cw || motion == fn::circular_ccw) && centre) {
-        if (!position_offset_arc(ctx, motion == fn::circular_cw, factor * d, start, to)) return false;
+        if (const Outcome o = position_offset_arc(ctx, motion == fn::circular_cw, factor * d, start, to); o != Outcome::moved)
+            return o;
     } else {
         Position end = state_.position;
         const auto offset_axis = [&](char letter) {
@@ -55,18 +56,18 @@ bool Executor::position_offset_move(const BlockContext& ctx, int factor, const P
     }
     state_.programmed = state_.position == to ? std::nullopt : std::optional<Position>(to);
     state_.programmed_by_offset = state_.programmed.has_value();
-    return true;
+    return unless_stopped(Outcome::moved);
 }
 
 // An arc under G45–G48: the radius grows by `change` (R40 → R50 for G45 D10), the centre and the
 // end point scaled about the tool's start by the same ratio (semantics.md §9.3, N7 and N10).
-bool Executor::position_offset_arc(const BlockContext& ctx, bool cw, double change,
+Outcome Executor::position_offset_arc(const BlockContext& ctx, bool cw, double change,
                                    const Position& start, const Position& to) {
     const BlockWords& words = ctx.words;
     const motion::ArcResult arc = arc_geometry(state_, cw, start, to, words);
     if (!arc) {
         alarm(ctx, arc.error().fanuc_alarm, fmt::format("arc: {}", motion::describe(arc.error().code)));
-        return false;
+        return Outcome::stopped;
     }
     const double scale = state_.unit_scale();
     const double k = arc.arc().radius > 0 ? (arc.arc().radius + change * scale) / arc.arc().radius : 1.0;
@@ -81,7 +82,7 @@ bool Executor::position_offset_arc(const BlockContext& ctx, bool cw, double chan
     const Position end = from_geometric(scaled(arc.arc().end), to, setup_.diameter_x, scale);
     const Position center = from_geometric(scaled(arc.arc().center), to, setup_.diameter_x, scale);
     cycle_arc(cw, end, center, ctx);
-    return !stopped_;
+    return unless_stopped(Outcome::moved);
 }
 
 }  // namespace kerf::interpreter

@@ -21,24 +21,24 @@ bool programmed(const BlockWords& words, std::size_t axis) {
 
 }  // namespace
 
-// nullopt: the block has none of these codes; otherwise whether the tool moved.
-std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
+// not_mine: the block has none of these codes; otherwise moved, done (no axis words) or stopped.
+Outcome Executor::apply_reference_motion(const BlockContext& ctx) {
     const BlockWords& words = ctx.words;
-    if (!(ctx.scan.classes & kOneShotCode)) return std::nullopt;   // the common block: no group-00 code
+    if (!(ctx.scan.classes & kOneShotCode)) return Outcome::not_mine;   // the common block: no group-00 code
     const bool g53 = has_function(ctx, fn::machine_coordinate_select) || has_function(ctx, fn::machine_coordinate_select_g0_g1);
     const bool g28 = has_function(ctx, fn::reference_return);
     const bool g30 = has_function(ctx, fn::reference_return_nth);
     const bool g29 = has_function(ctx, fn::return_from_reference);
     const bool g27 = has_function(ctx, fn::reference_return_check);
-    if (!g53 && !g28 && !g30 && !g29 && !g27) return std::nullopt;
+    if (!g53 && !g28 && !g30 && !g29 && !g27) return Outcome::not_mine;
     bool moves = false;
     const Position to = target_position(state_, state_.position, words, moves);
-    if (!moves) return false;
+    if (!moves) return Outcome::done;
     if (g27) {
         // [FANUC] G27 reference position return check: a rapid positioning to the programmed point
         // (which should be the reference point; the check lamp is the machine's, not the trace's).
         move(EventKind::rapid, to, ctx);
-        return !stopped_;
+        return unless_stopped(Outcome::moved);
     }
     if (g53) {
         // The programmed values are machine coordinates, for this block only (§2.2).
@@ -52,7 +52,7 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
         // pcnc-mill G53 follows the active G00/G01 and its feed (§2.2); FANUC G53 is a rapid.
         const bool feed = has_function(ctx, fn::machine_coordinate_select_g0_g1) && state_.flags.motion == fn::linear;
         move(feed ? EventKind::linear : EventKind::rapid, target, ctx);
-        return !stopped_;
+        return unless_stopped(Outcome::moved);
     }
     if (g29) {
         // To the remembered intermediate point, then to the programmed point; incremental words
@@ -61,10 +61,10 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
         for (std::size_t a = 0; a < kAxisCount; ++a)
             if (programmed(words, a) && state_.intermediate[a]) mid[a] = *state_.intermediate[a];
         move(EventKind::rapid, mid, ctx);
-        if (stopped_) return false;
+        if (stopped_) return Outcome::stopped;
         bool unused = false;
         move(EventKind::rapid, target_position(state_, state_.position, words, unused), ctx);
-        return !stopped_;
+        return unless_stopped(Outcome::moved);
     }
     int point = 1;
     if (g30) {
@@ -73,7 +73,7 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
         // P1 is the G28 point (pcnc-mill, dialects.md §8); P2..P4 the others.
         if (point < 1 || point > 4) {
             alarm(ctx, 46, fmt::format("G30 P{}: P must be 1 to 4 (alarm 046)", point));
-            return false;
+            return Outcome::stopped;
         }
     }
     // Through the intermediate point (remembered per axis for G29), then to the reference point,
@@ -87,14 +87,14 @@ std::optional<bool> Executor::apply_reference_motion(const BlockContext& ctx) {
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a)) state_.intermediate[a] = via[a];
     move(EventKind::rapid, via, ctx);
-    if (stopped_) return false;
+    if (stopped_) return Outcome::stopped;
     const Position offset = machine_offset(state_);
     Position home = state_.position;
     for (std::size_t a = 0; a < kAxisCount; ++a)
         if (programmed(words, a))
             home[a] = (setup_.reference_points[static_cast<std::size_t>(point - 1)][a] - offset[a]) / state_.axis_scale(a);
     move(EventKind::rapid, home, ctx);
-    return !stopped_;
+    return unless_stopped(Outcome::moved);
 }
 
 }  // namespace kerf::interpreter

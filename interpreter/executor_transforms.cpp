@@ -29,10 +29,10 @@ bool has_axis_word(const BlockWords& words) {
 
 }  // namespace
 
-// The block's G15/G16, G50/G51, G50.1/G51.1. False when the block has G51, G51.1 or G50.1 with
+// The block's G15/G16, G50/G51, G50.1/G51.1. Done when the block has G51, G51.1 or G50.1 with
 // axis words: they are a centre or mirror positions, and the block does not move (like G68); a
-// bare `G50.1` in a safety block lets the rest of the block (M codes) run.
-bool Executor::apply_program_transforms(const BlockContext& ctx) {
+// bare `G50.1` in a safety block lets the rest of the block (M codes) run (not_mine).
+Outcome Executor::apply_program_transforms(const BlockContext& ctx) {
     const BlockWords& words = ctx.words;
     const bool axis_words = has_axis_word(words);
     bool moves = true;
@@ -54,7 +54,7 @@ bool Executor::apply_program_transforms(const BlockContext& ctx) {
             moves = !axis_words;
         }
     }
-    return moves;
+    return unless_stopped(moves ? Outcome::not_mine : Outcome::done);
 }
 
 void Executor::note_transform(const BlockContext& ctx, std::string text) {

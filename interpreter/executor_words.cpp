@@ -215,7 +215,7 @@ Position Executor::tool_offset(const MachineState& s) const {
     return p;
 }
 
-bool Executor::apply_coordinate_operations(const BlockContext& ctx) {
+Outcome Executor::apply_coordinate_operations(const BlockContext& ctx) {
     const BlockWords& words = ctx.words;
     for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || (code_class_of(*c.info) & kMotionCode)) continue;   // G00/G01...: none of these
@@ -237,14 +237,14 @@ bool Executor::apply_coordinate_operations(const BlockContext& ctx) {
             for (const auto& [letter, value] : c.info->implied)
                 if (letter == 'P' && !p) p = value;
             const auto n = additional_number(ctx, p);
-            if (!n) return false;
+            if (!n) return Outcome::stopped;
             change_offsets([&] { state_.additional_system = *n; });
         } else if (f == fn::programmable_data_input) {
             apply_data_input(ctx);
-            return false;   // no motion in a G10 block
+            return unless_stopped(Outcome::done);   // no motion in a G10 block
         } else if (f == fn::coordinate_rotation || f == fn::coordinate_rotation_cw) {
             apply_rotation(ctx);
-            return false;   // G68 sets the rotation; the next block moves (semantics.md §2.9)
+            return unless_stopped(Outcome::done);   // G68 sets the rotation; the next block moves (semantics.md §2.9)
         } else if (f == fn::coordinate_rotation_cancel) {
             state_.rotation.reset();
         } else if (f == fn::modal_macro_call_cancel) {
@@ -263,10 +263,10 @@ bool Executor::apply_coordinate_operations(const BlockContext& ctx) {
                 state_.setting_shift[a] += (state_.position[a] - value) * state_.axis_scale(a);   // offsets are mm
                 state_.position[a] = value;
             }
-            return false;
+            return unless_stopped(Outcome::done);
         } else if (f == fn::local_system_shift || f == fn::local_system_current_point) {
             apply_local_system(ctx, f == fn::local_system_current_point);
-            return false;   // G52 does not move the tool (semantics.md §2.4)
+            return unless_stopped(Outcome::done);   // G52 does not move the tool (semantics.md §2.4)
         } else if (f == fn::local_system_cancel) {
             change_offsets([&] { state_.local_shift = {}; });   // G152 (pcnc-mill)
         } else if (f == fn::cancel_coordinate_setting) {
@@ -279,10 +279,10 @@ bool Executor::apply_coordinate_operations(const BlockContext& ctx) {
                 state_.position[a] += state_.setting_shift[a] / state_.axis_scale(a);
                 state_.setting_shift[a] = 0;
             }
-            return false;
+            return unless_stopped(Outcome::done);
         }
     }
-    return true;
+    return Outcome::not_mine;   // the block goes on to its motion
 }
 
 // G52, semantics.md §2.4. FANUC: the local origin is the work origin plus the programmed vector

@@ -54,32 +54,32 @@ motion::P2 Executor::transform_point(const MachineState& s, const Position& p) c
     return {plane_mm(s, t.linear, p[t.linear]), p[t.rotary] * s.unit_scale()};   // the virtual axis: mm, never a diameter
 }
 
-std::optional<bool> Executor::apply_plane_transform(const BlockContext& ctx) {
+Outcome Executor::apply_plane_transform(const BlockContext& ctx) {
     const BlockWords& words = ctx.words;
     if (state_.transform) {
         if (const auto improper = improper_in_transform(ctx)) {
             alarm(ctx, state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
                   fmt::format("{} is not allowed in {} mode ([FANUC] alarm {})", *improper, state_.transform->code,
                               state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical));
-            return false;
+            return Outcome::stopped;
         }
     }
     for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info) continue;
         const dialects::FunctionId f = c.info->function;
         if (f == fn::polar_interpolation_off && state_.transform && state_.transform->map.kind == motion::PlaneMap::Kind::polar) {
-            if (!transform_switch_allowed(ctx, c.info->spelling)) return false;
+            if (!transform_switch_allowed(ctx, c.info->spelling)) return Outcome::stopped;
             state_.transform.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
         } else if (f == fn::polar_interpolation_on && !state_.transform) {
-            if (!transform_switch_allowed(ctx, c.info->spelling)) return false;
+            if (!transform_switch_allowed(ctx, c.info->spelling)) return Outcome::stopped;
             if (words.get('C')) return start_polar_with_c(ctx, c.info->spelling);
             start_polar(c.info->spelling);
         } else if (f == fn::cylindrical_interpolation) {
-            if (!cylindrical_code(ctx, c.info->spelling)) return false;
-            if (!state_.transform) return std::nullopt;   // G07.1 C0: the block's other words run as usual
+            if (cylindrical_code(ctx, c.info->spelling) == Outcome::stopped) return Outcome::stopped;
+            if (!state_.transform) return Outcome::not_mine;   // G07.1 C0: the block's other words run as usual
         }
     }
-    if (!state_.transform) return std::nullopt;
+    if (!state_.transform) return Outcome::not_mine;
     return transform_move(ctx);
 }
 
@@ -117,7 +117,7 @@ void Executor::start_polar(const std::string& spelling) {
 }
 
 // Seed 001 §10.11 writes `G112 C45`: the meaning of C is unknown (cycles.md §18): said, not moved.
-bool Executor::start_polar_with_c(const BlockContext& ctx, const std::string& spelling) {
+Outcome Executor::start_polar_with_c(const BlockContext& ctx, const std::string& spelling) {
     const BlockWords& words = ctx.words;
     Event e = event_at(EventKind::message, ctx);
     e.text = fmt::format("{} C{}: a C word in the {} block has no known meaning (cycles.md §18): ignored", spelling,
@@ -135,7 +135,7 @@ bool Executor::start_polar_with_c(const BlockContext& ctx, const std::string& sp
 // G07.1 C r starts cylindrical interpolation on a cylinder of radius r (mm), G07.1 C0 ends it
 // (cycles.md §19). The rotary word names the axis: C turns about Z (lathes), A about X, B about
 // Y. C is then programmed in mm of arc: the tool's angle at the start is that many mm of arc.
-bool Executor::cylindrical_code(const BlockContext& ctx, const std::string& spelling) {
+Outcome Executor::cylindrical_code(const BlockContext& ctx, const std::string& spelling) {
     const BlockWords& words = ctx.words;
     char letter = 0;
     for (const char l : {'C', 'A', 'B'})
@@ -145,12 +145,12 @@ bool Executor::cylindrical_code(const BlockContext& ctx, const std::string& spel
         alarm(ctx, kIllegalCylinderAxis,
               fmt::format("{} without the rotary axis and radius (G07.1 C<r>) ([FANUC] alarm {})", spelling,
                           kIllegalCylinderAxis));
-        return false;
+        return Outcome::stopped;
     }
     const double radius = axis_value(state_, *words.get(letter), letter) * state_.unit_scale();
     if (radius == 0) {
         state_.transform.reset();
-        return true;
+        return Outcome::done;
     }
     PlaneTransform t;
     t.map = {motion::PlaneMap::Kind::cylindrical, std::fabs(radius)};
@@ -160,12 +160,12 @@ bool Executor::cylindrical_code(const BlockContext& ctx, const std::string& spel
     t.programmed[t.rotary] = state_.position[t.rotary] / kDegPerRad * t.map.cylinder_radius / state_.unit_scale();
     t.code = spelling;
     state_.transform = t;
-    return true;
+    return Outcome::done;
 }
 
 // A block in the mode: its end point in the Cartesian plane, the line or arc there, its pieces.
 // Under G41/G42 the tool centre's path is offset in the Cartesian plane first (polar_compensation.cpp).
-bool Executor::transform_move(const BlockContext& ctx) {
+Outcome Executor::transform_move(const BlockContext& ctx) {
     const BlockWords& words = ctx.words;
     PlaneTransform& t = *state_.transform;
     bool moves = false;
@@ -175,21 +175,21 @@ bool Executor::transform_move(const BlockContext& ctx) {
     if (compensating() || (ctx.scan.classes & kRadiusCompCode)) return transform_compensated(ctx, to, moves);
     const dialects::FunctionId motion = state_.flags.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
-    if (!moves) return false;
-    if (motion != fn::rapid && motion != fn::linear && !arc) return false;   // no motion code: nothing moves
+    if (!moves) return Outcome::done;
+    if (motion != fn::rapid && motion != fn::linear && !arc) return Outcome::done;   // no motion code: nothing moves
     const motion::P2 a = transform_point(state_, t.programmed), b = transform_point(state_, to);
     std::function<motion::P2(double)> path = [a, b](double u) { return a + (b - a) * u; };
     if (arc) {
         const auto geometry = transform_arc(state_, motion == fn::circular_cw, a, b, words);
         if (!geometry) {
             raise(transform_arc_alarm(state_, ctx, geometry));
-            return false;
+            return Outcome::stopped;
         }
         path = [g = geometry.arc()](double u) { return arc_point(g, u); };
     }
     run_plane_path(motion == fn::rapid ? EventKind::rapid : EventKind::linear, path, {real, to, 0, 1}, ctx);
     if (!stopped_) t.programmed = to;
-    return true;
+    return unless_stopped(Outcome::moved);
 }
 
 Alarm Executor::transform_arc_alarm(const MachineState& s, const BlockContext& ctx, const motion::ArcResult& geometry) const {

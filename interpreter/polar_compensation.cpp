@@ -42,14 +42,14 @@ OrAlarm<motion::Element> Executor::transform_element(const MachineState& s, cons
     return {motion::Element{a, b, false, {}, true}, std::nullopt};
 }
 
-bool Executor::transform_compensated(const BlockContext& ctx, const Position& to, bool moves) {
+Outcome Executor::transform_compensated(const BlockContext& ctx, const Position& to, bool moves) {
     PlaneTransform& t = *state_.transform;
     const int side = comp_side_of_block(state_, ctx, state_.comp_side);
     const dialects::FunctionId motion = ctx.motion_in(state_);
     const bool runs = motion == fn::rapid || motion == fn::linear || motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves || !runs) {
         state_.comp_side = side;   // G41/G42/G40 without motion: in force from the next move
-        return false;
+        return Outcome::done;
     }
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
     const EventKind kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
@@ -60,24 +60,24 @@ bool Executor::transform_compensated(const BlockContext& ctx, const Position& to
         const motion::P2 at = t.tool.value_or(transform_point(state_, t.programmed));
         run_plane_path(kind, [at](double) { return at; }, {state_.position, to, 0, 1}, ctx);
         if (!stopped_) t.programmed = to;
-        return true;
+        return unless_stopped(Outcome::moved);
     }
     CompPieces read = comp_pieces(state_, ctx, t.programmed, to, false);
     state_.comp_side = side;
-    if (!block_pieces_run(read, ctx)) return false;
+    if (!block_pieces_run(read, ctx)) return unless_stopped(Outcome::done);
     const Programmed& current = read.pieces.front().programmed;
     OrAlarm<std::optional<Programmed>> next = comp_look_ahead(ctx, to);
     if (!next.ok()) {
         raise(std::move(*next.alarm));   // the block read ahead cannot be read
-        return false;
+        return Outcome::stopped;
     }
     const auto step = comp_step(current, next.value, ctx);
-    if (!step) return false;
+    if (!step) return Outcome::stopped;
     run_transform_moves(*step, kind, to, ctx);
-    if (stopped_) return true;
+    if (stopped_) return Outcome::stopped;
     t.programmed = to;
     if (!state_.radius_comp.engaged()) t.tool.reset();   // cancelled: on the programmed point again
-    return true;
+    return Outcome::moved;
 }
 
 // The tool-centre moves of one step, each cut into pieces; the axes outside the plane share the
