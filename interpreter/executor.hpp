@@ -1,5 +1,19 @@
-// The executor behind interpreter::run: the machine state and the block loop. Internal to the
+// The executor behind interpreter::run: the block loop over the machine state. Internal to the
 // interpreter library (the public contract is interpreter.hpp).
+//
+// Three things travel explicitly (issue 13):
+//   - the block being run, as a BlockContext (frame, view, scan, words) handed to every step;
+//   - the machine state, one value (MachineState, machine_state.hpp): the executor's live state_,
+//     and the state a block is read with. Reading a block (its words, target, direct-drawing
+//     corner, compensation element, G70–G73 profile) is done by const member functions that take
+//     the MachineState and the position they read from: a look-ahead cannot change the run (the
+//     compiler holds it to that), and what it finds wrong comes back as an Alarm value the running
+//     block raises. The G70–G73 profile is read on a copy of the state whose point advances block
+//     by block; the direct-drawing and compensation look-aheads read the live state as it is,
+//     from the point the running block ends at (no copy: a per-block copy of the 2.5 KB state cost
+//     10–12 % on a compensation-heavy program). The machine's memory (offset registers, G54.1
+//     offsets, dialect and macro variables) is never copied: a reading only reads it;
+//   - what a step did with the block, as an Outcome.
 #pragma once
 
 #include <array>

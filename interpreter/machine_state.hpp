@@ -1,14 +1,15 @@
 // The machine state of a dry run as one value (issue 13): where the tool is, the modal codes and
 // the modes they set, the coordinate systems, feed, spindle and tool, compensation and the
-// cycles' modal data. The executor keeps the live one; reading blocks ahead (direct drawing's next
-// block, compensation's look-ahead, a G70–G73 profile) works on a copy, so nothing it does can
-// leak into the run. Internal to the interpreter library.
+// cycles' modal data. The executor keeps the live one and reads blocks with a MachineState it is
+// given (executor.hpp): the live one through const functions for direct drawing's and
+// compensation's next block, a copy whose point advances for a G70–G73 profile, so nothing a
+// reading does can leak into the run. Internal to the interpreter library.
 //
-// A copy is a few kilobytes and at most two small allocations (the group slots, and the G66
-// arguments while a modal call is on): the state holds no table that grows with the program. The
-// tables a program can grow (offset registers, G54.1 offsets, the dialect's variables, the macro
-// variables) are the machine's memory (MachineMemory, and macro::Variables in the executor): a
-// block read ahead only reads them, through const functions of the executor.
+// A copy is 2.5 KB and at most two small allocations (the group slots, and the G66 arguments while
+// a modal call is on): the state holds no table that grows with the program. The tables a program
+// can grow (offset registers, G54.1 offsets, the dialect's variables, the macro variables) are the
+// machine's memory (MachineMemory, and macro::Variables in the executor): a reading only reads
+// them, through const functions of the executor and macro::evaluate's const Variables.
 #pragma once
 
 #include <array>
