@@ -333,7 +333,7 @@ Outcome Executor::apply_block_words(Frame& frame, const BlockContext& ctx) {
     if (stopped_) return Outcome::stopped;
     const Outcome motion = frame_only ? Outcome::done : apply_motion(ctx);
     if (stopped_) return Outcome::stopped;
-    apply_dwell(ctx);
+    if (classes & kOneShotCode) apply_dwell(ctx);   // G04 is group 00
     apply_m_codes(frame, ctx, MPhase::after_motion);   // may end the program: `frame` is gone after M30
     return unless_stopped(motion);
 }

@@ -282,7 +282,11 @@ private:
     // position, or a block read ahead from where the running one ends); the alarm of the first
     // expression that fails (it stands at `at`).
     std::optional<Alarm> read_words(const MachineState& s, const Position& at, const BlockContext& ctx, BlockWords& out) const;
-    bool evaluate_words(const BlockContext& ctx, BlockWords& out);   // the live block's: its alarm raised
+    bool evaluate_words(const BlockContext& ctx, BlockWords& out) {   // the live block's: its alarm raised
+        std::optional<Alarm> failed = read_words(state_, state_.position, ctx, out);
+        if (failed) raise(std::move(*failed));
+        return !failed;
+    }
     macro::Options macro_options(const MachineState& s, bool address) const;
     void remember_words(const BlockContext& ctx);
     void apply_feed_speed_tool(const BlockContext& ctx);

@@ -234,9 +234,11 @@ Outcome Executor::apply_motion(const BlockContext& ctx) {
     if (state_.transform || (ctx.scan.classes & kTransformCode)) {
         if (const Outcome o = apply_plane_transform(ctx); o != Outcome::not_mine) return o;
     }
-    if (const Outcome o = apply_reference_motion(ctx); o != Outcome::not_mine) {
-        state_.programmed.reset();
-        return o;
+    if (ctx.scan.classes & kOneShotCode) {   // G27–G30, G53 are group 00: the common block has none
+        if (const Outcome o = apply_reference_motion(ctx); o != Outcome::not_mine) {
+            state_.programmed.reset();
+            return o;
+        }
     }
     bool moves = false;
     // G45–G48 act only in their block (semantics.md §9.3): a block without them measures from where
@@ -246,7 +248,8 @@ Outcome Executor::apply_motion(const BlockContext& ctx) {
     state_.programmed_by_offset = false;
     // [path changers] After a corner of direct drawing the tool stands off the programmed point,
     // which the block's coordinates are measured from (executor_drawing.cpp).
-    const Position to = target_position(state_, state_.programmed.value_or(state_.position), words, moves);
+    const Position& from = state_.programmed ? *state_.programmed : state_.position;   // no copy: every block passes here
+    const Position to = target_position(state_, from, words, moves);
     // A cycle block is not a move block for G66 (done, not moved): the modal call does not follow it.
     if (const Outcome o = apply_cycle(ctx, moves, to); o != Outcome::not_mine) return o;
     // [seed 004 G43/G44 without H] the approach of §9.4 (executor_iso_specials.cpp).

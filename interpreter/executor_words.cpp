@@ -75,14 +75,6 @@ std::optional<Alarm> Executor::read_words(const MachineState& s, const Position&
     return std::nullopt;
 }
 
-bool Executor::evaluate_words(const BlockContext& ctx, BlockWords& out) {
-    if (auto failed = read_words(state_, state_.position, ctx, out)) {
-        raise(std::move(*failed));
-        return false;
-    }
-    return true;
-}
-
 // An axis or distance value in mm: without a decimal point and without calculator-type input it
 // counts least input increments (dialects.md §2 "Numbers", cycles.md §0).
 double Executor::axis_value(const MachineState& s, const BlockWords::Word& w, char letter) const {
