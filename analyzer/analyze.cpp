@@ -44,6 +44,15 @@ ActiveRules active_rules(const Registry& registry, const CheckConfig& config) {
 
 const Registry& registry_of(const CheckOptions& options) { return options.registry ? *options.registry : builtin_rules(); }
 
+void run_program_checks(const FileContext& ctx, const ActiveRules& rules, const std::function<RuleTally*(const Rule&)>& tally_of,
+                        std::vector<Finding>& out) {
+    for (const Rule* r : rules) {
+        if (!r->program_check) continue;
+        Reporter reporter(*r, out, tally_of(*r));
+        for (std::size_t p = 0; p < ctx.typed.programs().size(); ++p) r->program_check->program(ctx, p, reporter);
+    }
+}
+
 }  // namespace detail
 
 namespace {
@@ -86,10 +95,9 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
     std::vector<StaticRun> checks;
     for (const Rule* r : rules)
         if (r->make_static) checks.push_back({r, r->make_static(), Reporter(*r, out, tallies.of(*r))});
-    if (checks.empty()) return;
     detail::BlockStep step;
     const std::vector<ast::Program>& programs = ctx.typed.programs();
-    for (std::size_t p = 0; p < programs.size(); ++p) {
+    for (std::size_t p = 0; p < programs.size() && !checks.empty(); ++p) {
         ModalState modal(ctx.dialect, ctx.setup.power_on);
         for (StaticRun& c : checks) c.check->begin_program(ctx, p, c.out);
         for (std::uint32_t b = programs[p].first_block; b < programs[p].end_block; ++b) {
@@ -98,6 +106,7 @@ void run_static(const FileContext& ctx, const ActiveRules& rules, Tallies& talli
         }
         for (StaticRun& c : checks) c.check->end_program(ctx, p, c.out);
     }
+    detail::run_program_checks(ctx, rules, tally_of(tallies), out);
 }
 
 // The sink of the dry run: each event to every dynamic check, alarms to the rule that owns their
@@ -352,17 +361,20 @@ std::optional<std::vector<Finding>> foreign_control(const ast::SyntaxTree& tree,
 
 }  // namespace
 
+std::optional<std::vector<Finding>> check_foreign(const interpreter::ProgramSet& programs, std::uint32_t file,
+                                                  const CheckOptions& options) {
+    const Registry& registry = registry_of(options);
+    const interpreter::LoadedFile& loaded = programs.file(file);
+    auto foreign = foreign_control(*loaded.whole_tree(), *loaded.whole_lines(), registry, active_rules(registry, options.config), options);
+    if (foreign) finalize(*foreign, find_suppressions(*loaded.whole_tree()), *loaded.whole_lines(), registry, options.config);
+    return foreign;
+}
+
 std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t file, const dialects::Dialect& dialect,
                                 const interpreter::Setup& setup, const CheckOptions& options) {
     const Registry& registry = registry_of(options);
     const ActiveRules rules = active_rules(registry, options.config);
-    {
-        const interpreter::LoadedFile& loaded = programs.file(file);
-        if (auto foreign = foreign_control(*loaded.whole_tree(), *loaded.whole_lines(), registry, rules, options)) {
-            finalize(*foreign, find_suppressions(*loaded.whole_tree()), *loaded.whole_lines(), registry, options.config);
-            return *std::move(foreign);
-        }
-    }
+    if (auto foreign = check_foreign(programs, file, options)) return *std::move(foreign);
     std::vector<Finding> out;
     // The analyzer reads files given whole (ProgramSet::add): the static rules walk every block.
     const interpreter::LoadedFile& loaded = programs.file(file);
@@ -440,8 +452,22 @@ bool number_before(const LabelTable::Entry& a, const LabelTable::Entry& b) { ret
 LabelTable::LabelTable(std::vector<Entry> entries) : sorted_(std::move(entries)) {
     // Most programs number their blocks in ascending order: then there is nothing to sort. Stable,
     // so the blocks of one number stay in block order.
-    if (!std::is_sorted(sorted_.begin(), sorted_.end(), number_before))
+    if (std::is_sorted(sorted_.begin(), sorted_.end(), number_before)) return;
+    const auto [lo, hi] = std::minmax_element(sorted_.begin(), sorted_.end(), number_before);
+    const std::int64_t first = lo->number;
+    const std::uint64_t span = static_cast<std::uint64_t>(hi->number - first) + 1;
+    if (span > 4 * sorted_.size() + 65536) {
         std::stable_sort(sorted_.begin(), sorted_.end(), number_before);
+        return;
+    }
+    // CAM output whose N numbers wrap (a million blocks, N10 to N99990 over and over): a counting
+    // sort over the few numbers, stable, in two passes, instead of a merge sort of the entries.
+    std::vector<std::uint32_t> start(span + 1, 0);
+    for (const Entry& e : sorted_) ++start[static_cast<std::size_t>(e.number - first) + 1];
+    for (std::size_t i = 1; i <= span; ++i) start[i] += start[i - 1];
+    std::vector<Entry> out(sorted_.size());
+    for (const Entry& e : sorted_) out[start[static_cast<std::size_t>(e.number - first)]++] = e;
+    sorted_ = std::move(out);
 }
 
 std::pair<std::vector<LabelTable::Entry>::const_iterator, std::vector<LabelTable::Entry>::const_iterator>
@@ -467,6 +493,30 @@ void LabelTable::splice(std::uint32_t first, std::uint32_t old_last, std::int64_
     for (Entry& e : sorted_)
         if (e.block >= old_last) e.block = static_cast<std::uint32_t>(e.block + moved);
 }
+
+void LabelTable::replace(std::uint32_t first, std::uint32_t end, std::span<const Entry> now) {
+    std::erase_if(sorted_, [&](const Entry& e) { return e.block >= first && e.block < end; });
+    for (const Entry& e : now) {
+        // After the entries of its number in earlier blocks, before those in later ones.
+        const auto at = std::upper_bound(sorted_.begin(), sorted_.end(), e, [](const Entry& a, const Entry& b) {
+            return a.number != b.number ? a.number < b.number : a.block < b.block;
+        });
+        sorted_.insert(at, e);
+    }
+}
+
+bool JumpTargets::has(std::int64_t n) const { return std::binary_search(labels.begin(), labels.end(), n); }
+
+std::shared_ptr<const JumpTargets> FileContext::shared_jump_targets() const {
+    if (!targets_) {
+        auto t = std::make_shared<JumpTargets>();
+        t->labels = analyzer::jump_targets(tree(), t->computed);
+        targets_ = std::move(t);
+    }
+    return targets_;
+}
+
+const JumpTargets& FileContext::jump_targets() const { return *shared_jump_targets(); }
 
 const LabelTable& FileContext::labels(std::size_t program) const {
     if (const auto it = labels_.find(program); it != labels_.end()) return it->second;

@@ -65,6 +65,11 @@ std::vector<Finding> check_file(interpreter::ProgramSet& programs, std::uint32_t
 // once and the dry run's when it has finished (issue 14). Raw findings: finish_findings makes them
 // what check_file returns.
 
+// When `options.foreign` says the file is another control's program: its one finding (K2009), and
+// nothing else is checked (check_file returns it as it is). nullopt: check the file.
+std::optional<std::vector<Finding>> check_foreign(const interpreter::ProgramSet& programs, std::uint32_t file,
+                                                  const CheckOptions& options);
+
 // The static rules and the parser's and binder's diagnostics. `program_exists` answers K3003
 // (does a called program exist); empty: this file, then the program set's loader.
 // `cancel`, once set, stops the walk at the next program or 4096 blocks (the result is then partial).

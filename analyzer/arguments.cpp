@@ -70,6 +70,9 @@ LocalSet file_caller_arguments(const ast::TypedFile& file, std::int64_t number, 
     const ast::SyntaxTree& tree = file.tree();
     for (std::uint32_t b = 0; b < tree.block_count(); ++b) {
         const ast::BlockView view = file.block(b);
+        // The P word first: looking up a block's codes costs more, and most blocks have no P.
+        const auto p = view.word('P');
+        if (!p || ast::integer_value(tree, tree.tokens[*p]) != number) continue;
         const auto call = view.macro_call();
         if (!call || call->program != number) continue;
         called = true;

@@ -45,23 +45,6 @@ bool reported_comment(std::string_view s) {
     return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
 }
 
-// K3011 (duplicate sequence numbers) reads every label of a program: an edit whose labels another
-// block carries too, before the edit (the last walk's tables) or after it (the new text), changes
-// what it says, so the file is walked whole. A label of its own matters only as a jump target.
-bool repeats_a_label(const std::vector<BlockEdit>& edits, const LabelTables& old, const ast::SyntaxTree& tree) {
-    std::vector<std::int64_t> edited;
-    for (const BlockEdit& e : edits) edited.insert(edited.end(), e.labels.begin(), e.labels.end());
-    if (edited.empty()) return false;
-    for (const auto& [program, table] : old)
-        if (std::any_of(edited.begin(), edited.end(), [&](std::int64_t n) { return table.count(n) > 1; })) return true;
-    std::vector<std::int64_t> now = block_labels(tree, 0, static_cast<std::uint32_t>(tree.block_count()));
-    std::sort(now.begin(), now.end());
-    return std::any_of(edited.begin(), edited.end(), [&](std::int64_t n) {
-        const auto [lo, hi] = std::equal_range(now.begin(), now.end(), n);
-        return hi - lo > 1;
-    });
-}
-
 }  // namespace
 
 std::uint64_t static_facts(const ast::SyntaxTree& tree, std::uint32_t first_block, std::uint32_t end_block) {
@@ -160,10 +143,11 @@ namespace {
 std::pair<std::uint32_t, int> order(std::uint32_t block, bool before_begin) { return {block, before_begin ? 0 : 1}; }
 
 // The static rules the walk runs, in registry order.
-detail::ActiveRules static_rules(const CheckOptions& options) {
+detail::ActiveRules static_rules(const CheckOptions& options, std::uint32_t shard, std::uint32_t shards) {
     detail::ActiveRules out;
+    std::uint32_t place = 0;
     for (const Rule* r : detail::active_rules(detail::registry_of(options), options.config))
-        if (r->make_static && r->clone_static) out.push_back(r);
+        if (r->make_static && r->clone_static && place++ % std::max<std::uint32_t>(shards, 1) == shard) out.push_back(r);
     return out;
 }
 
@@ -210,8 +194,7 @@ void IncrementalStatic::forget() {
 void IncrementalStatic::apply(const BlockEdit& edit) {
     if (!valid_) return;
     const ast::BlockSplice& s = edit.splice;
-    const bool jump_target = std::any_of(edit.labels.begin(), edit.labels.end(),
-                                         [&](std::int64_t n) { return std::binary_search(targets_->begin(), targets_->end(), n); });
+    const bool jump_target = std::any_of(edit.labels.begin(), edit.labels.end(), [&](std::int64_t n) { return targets_->has(n); });
     if (edit.facts_changed || jump_target || s.old_end == kWholeText) {
         forget();
         return;
@@ -244,33 +227,50 @@ void IncrementalStatic::apply(const BlockEdit& edit) {
         if (!move_finding(findings_[i], s)) poisoned_.push_back(i);
 }
 
+void IncrementalStatic::relabel(const ast::TypedFile& typed) {
+    for (auto& [program, table] : labels_) {
+        if (program >= programs_.size()) continue;
+        const std::uint32_t lo = std::max(dirty_lo_, programs_[program].first_block);
+        const std::uint32_t hi = std::min(dirty_hi_, programs_[program].end_block);
+        if (lo >= hi) continue;
+        std::vector<LabelTable::Entry> now;
+        for (std::uint32_t b = lo; b < hi; ++b)
+            if (const auto n = typed.block(b).sequence_number()) now.push_back({static_cast<std::int64_t>(*n), *n, b});
+        table.replace(lo, hi, now);
+    }
+}
+
 std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
     const interpreter::LoadedFile& loaded = in.programs.file(in.file);
     const ast::SyntaxTree& tree = *loaded.whole_tree();
     const ast::TypedFile& typed = *loaded.whole_typed();
-    const detail::ActiveRules rules = static_rules(in.options);
+    const detail::ActiveRules rules = static_rules(in.options, in.shard, in.shards);
     walked_ = 0;
     whole_ = false;
 
     if (!in.edits || in.world != world_ || rules != rules_) forget();
-    if (valid_ && !targets_ && std::any_of(in.edits->begin(), in.edits->end(), [](const BlockEdit& e) { return !e.labels.empty(); })) {
+    if (valid_ && !targets_) {
         // The jump targets as the last whole walk saw them: those of this text unless an edit
         // changed a target, and such an edit changed a fact, which makes the walk whole anyway.
-        bool computed = false;
-        targets_ = jump_targets(tree, computed);
+        auto t = std::make_shared<JumpTargets>();
+        t->labels = jump_targets(tree, t->computed);
+        targets_ = std::move(t);
     }
-    if (valid_ && repeats_a_label(*in.edits, labels_, tree)) forget();
     if (valid_)
         for (const BlockEdit& e : *in.edits) apply(e);
     if (valid_ && !same_programs(programs_, typed.programs())) forget();
+    if (valid_ && dirty_) relabel(typed);   // as FileContext::labels reads them
 
     std::function<bool(std::int64_t)> exists = in.program_exists;
     if (!exists) {
         const interpreter::ProgramSet::Loader loader = in.programs.loader();
         exists = [&loaded, loader](std::int64_t n) { return loaded.find_program(n).has_value() || (loader && loader(n).has_value()); };
     }
-    const FileContext ctx{typed, in.dialect, in.setup, std::move(exists), in.options.program_files};
+    FileContext ctx{typed, in.dialect, in.setup, std::move(exists), in.options.program_files};
+    ctx.resident = in.options.resident;
+    ctx.caller_arguments = in.options.caller_arguments;
     ctx.adopt_labels(std::move(labels_));
+    if (valid_) ctx.adopt_jump_targets(targets_);
     const std::vector<ast::Program>& programs = typed.programs();
 
     // Where the walk starts: the file's start, or the last point before what changed.
@@ -284,6 +284,7 @@ std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
     if (whole) {
         forget();
         ctx.adopt_labels({});
+        ctx.adopt_jump_targets(nullptr);
     }
     if (whole || dirty_) {
         const Point start = whole ? Point{} : points_[from];
@@ -346,8 +347,11 @@ std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
         run();
         walked_ = w.walked;
         whole_ = whole;
-        labels_ = ctx.take_labels();
-        if (cancelled) return std::nullopt;
+        if (cancelled) {
+            labels_ = ctx.take_labels();
+            if (valid_) targets_ = ctx.shared_jump_targets();
+            return std::nullopt;
+        }
         // A kept finding that points into an edited line cannot be moved: walk the file whole.
         const std::size_t keep_end = converged ? points_[*converged].finding : findings_.size();
         if (!whole && std::any_of(poisoned_.begin(), poisoned_.end(), [&](std::size_t i) { return i < base || i >= keep_end; })) {
@@ -381,15 +385,19 @@ std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
         world_ = in.world;
         rules_ = rules;
         programs_ = programs;
-    } else {
-        labels_ = ctx.take_labels();
     }
 
     std::vector<Finding> out = findings_;
-    const detail::ActiveRules all = detail::active_rules(detail::registry_of(in.options), in.options.config);
-    const auto no_tally = [](const Rule&) -> RuleTally* { return nullptr; };
-    detail::map_diagnostics(tree, tree.diagnostics, detail::registry_of(in.options), all, no_tally, out);
-    detail::map_diagnostics(tree, typed.diagnostics(), detail::registry_of(in.options), all, no_tally, out);
+    if (in.shard == 0) {
+        const detail::ActiveRules all = detail::active_rules(detail::registry_of(in.options), in.options.config);
+        const auto no_tally = [](const Rule&) -> RuleTally* { return nullptr; };
+        // The program checks sum up each program from its label table: again after every edit.
+        detail::run_program_checks(ctx, all, no_tally, out);
+        detail::map_diagnostics(tree, tree.diagnostics, detail::registry_of(in.options), all, no_tally, out);
+        detail::map_diagnostics(tree, typed.diagnostics(), detail::registry_of(in.options), all, no_tally, out);
+    }
+    labels_ = ctx.take_labels();
+    targets_ = ctx.shared_jump_targets();
     return out;
 }
 

@@ -65,6 +65,11 @@ public:
         // The edits since the last call, in order; nullopt: not known (the file is walked whole).
         std::optional<std::vector<BlockEdit>> edits;
         const std::atomic<bool>* cancel = nullptr;
+        // This check's share of the static rules: those whose place among them is `shard` modulo
+        // `shards` (the server walks two shares on two threads). Shard 0 also has the program
+        // checks and the parser's diagnostics; the shares' findings together are check_static's.
+        std::uint32_t shard = 0;
+        std::uint32_t shards = 1;
     };
 
     // check_static(programs, file, ...) for the file as it is now; nullopt when `cancel` stopped
@@ -86,6 +91,7 @@ private:
         std::shared_ptr<const Snapshot> snapshot;
     };
     void apply(const BlockEdit& edit);
+    void relabel(const ast::TypedFile& typed);   // the label tables' entries of the changed blocks
     void forget();
 
     std::uint32_t every_;
@@ -99,8 +105,8 @@ private:
     bool dirty_ = false;                   // blocks [dirty_lo_, dirty_hi_) changed since the last walk
     std::uint32_t dirty_lo_ = 0, dirty_hi_ = 0;
     LabelTables labels_;
-    // jump_targets of the file, once an edit changed a label (a fact: the same until a whole walk)
-    std::optional<std::vector<std::int64_t>> targets_;
+    // The jump targets of the file (a fact: the same until a whole walk).
+    std::shared_ptr<const JumpTargets> targets_;
     std::uint64_t walked_ = 0;
     bool whole_ = false;
 };

@@ -1,5 +1,6 @@
 // A rule: a stable id, a short name, a category, a default severity, its documentation and its
 // check. Static checks see every block once in text order (with the text-order modal state);
+// program checks see a program whole, through the tables FileContext keeps of it (its labels);
 // dynamic checks see the interpreter's events (design.md "analyzer = static rules on the AST +
 // dynamic rules on the trace"). Parser diagnostics and interpreter alarms are turned into findings
 // by the rules that list their codes, so a defect the grammar already found is not detected twice.
@@ -84,11 +85,14 @@ public:
     // The blocks whose N value is exactly `n`, in block order (references::label_blocks without the
     // walk over the program: AmbiguousLabel asks once per jump, and CAM output repeats N numbers).
     std::vector<std::uint32_t> blocks(std::int64_t n) const;
+    // Every entry, by number, then block.
+    std::span<const Entry> entries() const { return sorted_; }
     // An edit replaced blocks [first, old_last) and moved the later ones by `moved` (the language
     // server's incremental check keeps the table while no jump target changed): the replaced
-    // blocks' entries go (their numbers are no jump targets, else the table is rebuilt), the later
-    // ones move.
+    // blocks' entries go, the later ones move. replace() then puts in those of the new blocks.
     void splice(std::uint32_t first, std::uint32_t old_last, std::int64_t moved);
+    // The entries of blocks [first, end) become `now` (in block order).
+    void replace(std::uint32_t first, std::uint32_t end, std::span<const Entry> now);
 
 private:
     std::pair<std::vector<Entry>::const_iterator, std::vector<Entry>::const_iterator> range(std::int64_t n) const;
@@ -100,6 +104,11 @@ using LabelTables = std::map<std::size_t, LabelTable>;   // program index → it
 // and the numbers of P and Q words (calls, cycles, returns); `computed` when a GOTO's target is an
 // expression (K3007; incremental checking: a label that is no target matters to no rule).
 std::vector<std::int64_t> jump_targets(const ast::SyntaxTree& tree, bool& computed);
+struct JumpTargets {
+    std::vector<std::int64_t> labels;   // sorted
+    bool computed = false;              // a GOTO's target is an expression: it may reach any label
+    bool has(std::int64_t n) const;
+};
 
 // What a static check sees of the whole file.
 struct FileContext {
@@ -128,9 +137,15 @@ struct FileContext {
     // (incremental checking carries them over edits that change no N number: incremental.hpp).
     LabelTables take_labels() const { return std::move(labels_); }
     void adopt_labels(LabelTables labels) const { labels_ = std::move(labels); }
+    // jump_targets(tree()), computed on first use; shared with incremental checking, which keeps it
+    // while no edit changes a fact (a target is one: static_facts).
+    const JumpTargets& jump_targets() const;
+    std::shared_ptr<const JumpTargets> shared_jump_targets() const;
+    void adopt_jump_targets(std::shared_ptr<const JumpTargets> targets) const { targets_ = std::move(targets); }
 
 private:
     mutable LabelTables labels_;
+    mutable std::shared_ptr<const JumpTargets> targets_;
 };
 
 // The text-order modal state before a block: one slot per modal group (power-on defaults first),
@@ -219,6 +234,16 @@ public:
     virtual void state(StateKey&) const {}
 };
 
+// A check of a whole program at once, from what FileContext keeps of it (its label table, the jump
+// targets) rather than by walking its blocks: a finding that sums up the program (K3011 names every
+// repeated N number). Incremental checking runs these again after every edit instead of walking the
+// file whole, so one must cost no more than a pass over the program's labels.
+class ProgramCheck {
+public:
+    virtual ~ProgramCheck() = default;
+    virtual void program(const FileContext& file, std::size_t program, Reporter& out) const = 0;
+};
+
 // What a dynamic check sees: the run's files (events point into them) and the checked file.
 struct RunContext {
     const interpreter::ProgramSet& programs;
@@ -253,6 +278,7 @@ struct Rule {
     // A copy of a check made by make_static, its state included (incremental checking's checkpoints).
     std::function<std::unique_ptr<StaticCheck>(const StaticCheck&)> clone_static;
     std::function<std::unique_ptr<DynamicCheck>()> make_dynamic;
+    std::shared_ptr<const ProgramCheck> program_check;
 };
 
 }  // namespace kerf::analyzer

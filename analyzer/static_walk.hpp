@@ -22,6 +22,10 @@ const Registry& registry_of(const CheckOptions& options);
 void map_diagnostics(const ast::SyntaxTree& tree, const std::vector<ast::Diagnostic>& diagnostics, const Registry& registry,
                      const ActiveRules& rules, const std::function<RuleTally*(const Rule&)>& tally_of, std::vector<Finding>& out);
 
+// Every program check of `rules` on every program of the file (rule.hpp ProgramCheck).
+void run_program_checks(const FileContext& ctx, const ActiveRules& rules, const std::function<RuleTally*(const Rule&)>& tally_of,
+                        std::vector<Finding>& out);
+
 inline bool modal_code(const dialects::CodeInfo& c) { return c.modal && !c.group.empty() && c.group != "00"; }
 
 inline void update_modal(ModalState& modal, std::span<const ast::CodeRef> g) {

@@ -1,6 +1,6 @@
-// kerf plot FILE [-o OUT.svg] [--dialect D] [--machine M.toml] [--lenient]: the toolpath of the dry
-// run as SVG (plot/svg.hpp). Alarms are reported as by `kerf run`, and the picture still shows what
-// ran up to them.
+// kerf plot FILE [-o OUT.svg] [--frame part|all] [--dialect D] [--machine M.toml] [--lenient]: the
+// toolpath of the dry run as SVG (plot/svg.hpp), framed on the part or on the whole path. Alarms are
+// reported as by `kerf run`, and the picture still shows what ran up to them.
 #include <fmt/format.h>
 
 #include <filesystem>
@@ -18,6 +18,7 @@ namespace {
 struct PlotCliOptions {
     DryRunOptions run;
     std::string output;   // "" = stdout
+    std::string frame = "part";
 };
 
 // "file.nc (dialect)": the picture says what it shows.
@@ -44,9 +45,10 @@ int run_plot(const PlotCliOptions& o) {
     if (const int* code = std::get_if<int>(&prepared)) return *code;
     project::DryRun& run = *std::get<std::unique_ptr<project::DryRun>>(prepared);
     // The toolpath is built and simplified while the run goes on: no event is kept (plot/toolpath.hpp).
-    plot::ToolpathSink sink({run.dialect->machine, run.setup.diameter_x});
+    const plot::Frame frame = o.frame == "all" ? plot::Frame::all : plot::Frame::part;
+    plot::ToolpathSink sink({run.dialect->machine, run.setup.diameter_x, frame});
     const interpreter::RunResult result = project::execute(run, sink, o.run.lenient);
-    const plot::SvgOptions options{run.dialect->machine, run.setup.diameter_x, title_of(run, o.run.file)};
+    const plot::SvgOptions options{run.dialect->machine, run.setup.diameter_x, title_of(run, o.run.file), frame};
     const std::string svg = plot::render_svg(std::move(sink).finish(), options);
     const int code = report_alarms(run, result);
     return write_svg(svg, o.output) ? code : kExitUsage;
@@ -59,6 +61,10 @@ Command add_plot_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("plot", "draw the toolpath of a dry run as SVG (lathes Z-X, mills X-Y)");
     add_dry_run_options(*cmd, o->run);
     cmd->add_option("-o,--output", o->output, "write the SVG to this file (default: stdout)");
+    cmd->add_option("--frame", o->frame,
+                    "what the picture frames: part (the cutting moves; rapids that leave it are cut off at its edge "
+                    "with an arrow) or all (the whole path, home returns included)")
+        ->check(CLI::IsMember({"part", "all"}));
     return [o] { return run_plot(*o); };
 }
 

@@ -53,9 +53,11 @@ std::variant<std::unique_ptr<project::DryRun>, int> prepare(const DryRunOptions&
 }
 
 int report_alarms(const project::DryRun& run, const interpreter::RunResult& result) {
+    // The number the control shows: its own when the dialect numbers the alarm ([alarms]), else kerf's.
     for (const interpreter::Event& a : result.alarms)
         std::cerr << fmt::format("{}:{}: error: alarm {}: {}\n", run.programs.file(a.source.file).name(), a.source.line,
-                                 a.code, ast::printable(a.text));   // alarm texts quote the program (#3000, comments)
+                                 a.control_alarm ? a.control_alarm : a.code,
+                                 ast::printable(a.text));   // alarm texts quote the program (#3000, comments)
     return result.alarms.empty() ? kExitClean : kExitFindings;
 }
 

@@ -127,4 +127,16 @@ inline constexpr AlarmDef kAlarms[] = {
     {program_repeats, "program_repeats", "kerf note: M99 ended a pass of the main program; the control starts it again (bar feeder)"},
 };
 
+// kerf's own alarms, warnings and notes (90001 and up): no control shows them, so no dialect's
+// [alarms] table maps them (dialects/SCHEMA.md).
+constexpr bool is_kerf_own(int number) { return number >= 90000; }
+
+// The number of the alarm whose constant is named `name` ("program_not_found" → 78), or 0: the
+// names a dialect's [alarms] table maps to the control's own numbers (dialects/SCHEMA.md).
+constexpr int number_of(std::string_view name) {
+    for (const AlarmDef& a : kAlarms)
+        if (a.name == name) return a.number;
+    return 0;
+}
+
 }  // namespace kerf::alarms

@@ -4,6 +4,10 @@
 #include <cctype>
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "dialects/alarms.hpp"
+
 namespace kerf::dialects {
 
 std::optional<CodeKey> code_key(double number) {
@@ -59,6 +63,59 @@ const VariableRange* Dialect::variable_range(std::int64_t number) const {
     for (const VariableRange& v : variables)
         if (number >= v.from && number <= v.to) return &v;
     return nullptr;
+}
+
+std::optional<AlarmTable::Shown> AlarmTable::shown(int kerf) const {
+    const ControlAlarm* range = nullptr;
+    for (const ControlAlarm& a : entries) {
+        if (a.kerf == kerf) return Shown{a.number, &a};
+        if (a.kerf == alarms::user_alarm_first) range = &a;
+    }
+    if (range && kerf >= alarms::user_alarm_first && kerf <= alarms::user_alarm_last)
+        return Shown{range->number + (kerf - alarms::user_alarm_first), range};
+    return std::nullopt;
+}
+
+namespace {
+// kerf's texts quote the FANUC number they stand for ("program O9810 not found (alarm 078)"); under
+// a control with numbers of its own that number is named as FANUC's, so it is not read as the
+// control's.
+std::string qualify_fanuc_number(std::string_view text, int kerf) {
+    if (kerf >= 1000) return std::string(text);   // #3000 = n: the text is the program's message
+    const std::string quoted = fmt::format("alarm {:03}", kerf);
+    std::string out;
+    std::size_t from = 0;
+    for (std::size_t at = text.find(quoted); at != std::string_view::npos; at = text.find(quoted, from)) {
+        out.append(text.substr(from, at - from));
+        if (!out.ends_with("FANUC ") && !out.ends_with("FANUC] ")) out += "FANUC ";
+        out += quoted;
+        from = at + quoted.size();
+    }
+    out.append(text.substr(from));
+    return out;
+}
+}  // namespace
+
+std::string AlarmTable::name_of(int kerf) const {
+    const std::optional<Shown> s = shown(kerf);
+    if (!s) return kerf < 1000 ? fmt::format("alarm {:03}", kerf) : fmt::format("alarm {}", kerf);
+    const std::string who = control.empty() ? std::string("control") : control;
+    if (s->entry->text.empty()) return fmt::format("{} alarm {}", who, s->number);
+    return fmt::format("{} alarm {} {}", who, s->number, s->entry->text);
+}
+
+std::string AlarmTable::message(int kerf, std::string_view kerf_text) const {
+    if (!shown(kerf)) return std::string(kerf_text);
+    return fmt::format("{}: {}", name_of(kerf), qualify_fanuc_number(kerf_text, kerf));
+}
+
+void AlarmTable::merge(const AlarmTable& other) {
+    if (!other.control.empty()) control = other.control;
+    for (const ControlAlarm& a : other.entries) {
+        const auto same = std::find_if(entries.begin(), entries.end(), [&](const ControlAlarm& e) { return e.kerf == a.kerf; });
+        if (same != entries.end()) *same = a;
+        else entries.push_back(a);
+    }
 }
 
 std::vector<const CodeInfo*> Dialect::codes_with_function(FunctionId function) const {

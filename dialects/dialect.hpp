@@ -143,6 +143,43 @@ struct VariableRange {
     std::string en, ru, reference;
 };
 
+// `[alarms]` (dialects/SCHEMA.md): the number and text a control shows for one of kerf's alarms.
+// kerf's number (dialects/alarms.hpp, FANUC's numbering) stays the alarm's identity: the
+// analyzer's rules, `--verify` and the trace's `code` use it; the control's number is what the
+// user reads (the trace's `control_alarm`, the messages of kerf run and kerf check).
+struct ControlAlarm {
+    int kerf = 0;             // the constant's number (alarms::program_not_found = 78)
+    std::string name;         // the constant's name, as the file writes it ("program_not_found")
+    int number = 0;           // the control's number; for user_alarm_first, the number #3000 = 0 shows
+    std::string text;         // the control's text; empty for the #3000 range (the program's own message)
+    std::string reference;    // the public document the number and text come from
+};
+
+struct AlarmTable {
+    std::string control;                 // who numbers them ("Haas NGC"), said with the number
+    std::vector<ControlAlarm> entries;   // at most one per kerf number
+
+    struct Shown {
+        int number = 0;                      // what the control shows
+        const ControlAlarm* entry = nullptr;
+    };
+    // The control's number for kerf's alarm `kerf`, or nullopt: the control shows kerf's (FANUC's)
+    // number. #3000 = n (kerf's 3000 + n) maps through a user_alarm_first entry to its number + n,
+    // unless an entry names 3000 + n itself (SPINNER's 3011).
+    std::optional<Shown> shown(int kerf) const;
+    // How a message names the alarm: "Haas NGC alarm 314 SUBPROGRAM NOT FOUND" when the table maps
+    // it, else FANUC's "alarm 078" (three digits below 1000, as FANUC writes them).
+    std::string name_of(int kerf) const;
+    // The alarm's text as the user reads it: kerf's explanation as it is when the table does not map
+    // the alarm, else "Haas NGC alarm 314 SUBPROGRAM NOT FOUND: program O9810 not found (FANUC alarm
+    // 078)" — the control's number and text, then kerf's explanation with the FANUC number it quotes
+    // named as FANUC's.
+    std::string message(int kerf, std::string_view kerf_text) const;
+    // Entries of `other` replace this table's entry of the same alarm or are added (`base`
+    // inheritance and overlays); its control name, when it has one, replaces this one.
+    void merge(const AlarmTable& other);
+};
+
 struct DetectRules {
     std::vector<DetectClue> clues;
     bool needs_own = false;   // an overlay's combination: a candidate only when its own clues score
@@ -160,6 +197,7 @@ public:
     DetectRules detect;                  // [detect]: the evidence that proves this dialect
     LexicalRules lexical;
     std::vector<VariableRange> variables;   // [[variables]]: ranges beyond FANUC Macro B's
+    AlarmTable alarms;                      // [alarms]: the control's own alarm numbers, if not FANUC's
     // A profile of another control (`foreign = true`): only its [detect] evidence, no tables. When
     // it wins detection, kerf says so instead of reading the file as FANUC (issue 15).
     bool foreign = false;

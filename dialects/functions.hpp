@@ -367,6 +367,9 @@ std::ostream& operator<<(std::ostream& out, FunctionId f);   // its name (test m
 
 // The closest known ids to a misspelt one ("linaer" → "linear"), for load errors.
 std::optional<std::string_view> closest_function_id(std::string_view id);
+// The closest of `candidates` to a misspelt word, within a few typos (not another word), for load
+// errors ("program_not_fund" → "program_not_found").
+std::optional<std::string_view> closest_name(std::string_view word, std::span<const std::string_view> candidates);
 
 }  // namespace kerf::dialects
 

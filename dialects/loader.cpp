@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include "dialects/alarms.hpp"
 #include "dialects/dialect.hpp"
 #include "dialects/toml_errors.hpp"
 
@@ -543,6 +544,67 @@ void read_variables(Reader& r, const toml::table& root, DialectFile& file) {
     });
 }
 
+// The alarm names an [alarms] table may map: the control's alarms of dialects/alarms.hpp (kerf's
+// own are no control's; the #3000 range is mapped by its first number).
+std::vector<std::string_view> mappable_alarm_names() {
+    std::vector<std::string_view> names;
+    for (const alarms::AlarmDef& a : alarms::kAlarms)
+        if (!alarms::is_kerf_own(a.number) && a.number != alarms::user_alarm_last) names.push_back(a.name);
+    return names;
+}
+
+// One entry of [alarms]: `name = { number = 314, text = "...", reference = "..." }`.
+void read_alarm(Reader& r, std::string_view name, const toml::node& node, AlarmTable& table) {
+    const std::string where = fmt::format("alarms.{}", name);
+    const int kerf = alarms::number_of(name);
+    if (kerf == 0 || alarms::is_kerf_own(kerf) || kerf == alarms::user_alarm_last) {
+        const std::vector<std::string_view> names = mappable_alarm_names();
+        const std::optional<std::string_view> near = closest_name(name, names);
+        const std::string why = kerf == 0 ? "is not the name of an alarm of dialects/alarms.hpp"
+                                : kerf == alarms::user_alarm_last ? "is the end of the #3000 range, which user_alarm_first maps whole"
+                                                                  : "is kerf's own alarm (a bound of the dry run), which no control shows";
+        r.error(&node, fmt::format("{}: '{}' {}{} (docs/diagnostics.md lists the names)", where, name, why,
+                                   near ? fmt::format("; did you mean '{}'?", *near) : std::string()));
+        return;
+    }
+    const toml::table* t = node.as_table();
+    if (!t) {
+        r.error(&node, fmt::format("{}: expected a table {{ number = ..., text = \"...\", reference = \"...\" }}", where));
+        return;
+    }
+    r.check_keys(*t, {"number", "text", "reference"}, where);
+    ControlAlarm a;
+    a.kerf = kerf;
+    a.name = std::string(name);
+    const toml::node* number = t->get("number");
+    const auto value = number ? number->value<std::int64_t>() : std::nullopt;
+    if (!value || *value < 1 || *value > 999999) {
+        r.error(number ? number : t, fmt::format("{}.number: expected the control's alarm number, an integer 1..999999", where));
+        return;
+    }
+    a.number = static_cast<int>(*value);
+    // The #3000 range shows the program's own message; every other alarm needs the control's text.
+    a.text = r.string(*t, "text", where, kerf != alarms::user_alarm_first);
+    a.reference = r.string(*t, "reference", where, true);
+    table.entries.push_back(std::move(a));
+}
+
+// [alarms]: `control = "Haas NGC"` and one entry per alarm the control numbers itself.
+void read_alarms(Reader& r, const toml::table& root, DialectFile& file) {
+    const toml::node* n = root.get("alarms");
+    if (!n) return;
+    const toml::table* t = n->as_table();
+    if (!t) {
+        r.error(n, "alarms: expected a table");
+        return;
+    }
+    AlarmTable& table = file.dialect.alarms;
+    for (const auto& [key, node] : *t) {
+        if (key.str() == "control") table.control = r.string(*t, "control", "alarms", true);
+        else read_alarm(r, key.str(), node, table);
+    }
+}
+
 }  // namespace
 
 LoadResult load_dialect_text(std::string_view toml_text, std::string_view source_name) {
@@ -554,7 +616,7 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     DialectFile file;
     Dialect& d = file.dialect;
     r.check_keys(root, {"id", "name", "machine", "reference", "overlay", "applies_to", "combined_ids", "base", "remove",
-                        "lexical", "g", "m", "patch", "detect", "variables", "foreign"},
+                        "lexical", "g", "m", "patch", "detect", "variables", "foreign", "alarms"},
                  "top level");
     d.id = r.string(root, "id", "top level", true);
     d.name = r.string(root, "name", "top level", true);
@@ -563,7 +625,7 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     d.foreign = r.boolean(root, "foreign", "top level", false);
     if (d.foreign) {
         // A profile of another control: its name and the evidence, nothing to read a program with.
-        for (const char* key : {"machine", "overlay", "base", "lexical", "g", "m", "patch", "variables"})
+        for (const char* key : {"machine", "overlay", "base", "lexical", "g", "m", "patch", "variables", "alarms"})
             if (root.contains(key))
                 r.error(root.get(key), fmt::format("{}: a foreign control profile (`foreign = true`) has only id, name, "
                                                    "reference and [detect]", key));
@@ -610,6 +672,7 @@ LoadResult load_dialect_text(std::string_view toml_text, std::string_view source
     read_patches(r, root, file);
     read_detect(r, root, file);
     read_variables(r, root, file);
+    read_alarms(r, root, file);
     std::vector<CodeInfo> codes = read_codes(r, root, 'G');
     std::vector<CodeInfo> ms = read_codes(r, root, 'M');
     codes.insert(codes.end(), std::make_move_iterator(ms.begin()), std::make_move_iterator(ms.end()));
@@ -698,6 +761,7 @@ Dialect apply_overlay(const Dialect& base, const DialectFile& overlay, std::stri
                             overlay.dialect.detect.clues.end());
     out.detect.needs_own = true;
     out.detect.fallback = false;
+    out.alarms.merge(overlay.dialect.alarms);
     std::vector<CodeInfo> codes(base.codes().begin(), base.codes().end());
     merge_codes(codes, overlay.dialect);
     out.set_codes(std::move(codes));
@@ -723,6 +787,7 @@ Dialect derive_dialect(const Dialect& base, const DialectFile& file, std::string
         out.detect.fallback = false;   // one default dialect: the base stays it
     }
     out.variables.insert(out.variables.end(), d.variables.begin(), d.variables.end());
+    out.alarms.merge(d.alarms);
     std::vector<CodeInfo> codes(base.codes().begin(), base.codes().end());
     for (const auto& [spelling, at] : file.remove) {
         const auto parsed = parse_code_spelling(spelling);

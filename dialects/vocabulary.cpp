@@ -97,17 +97,23 @@ std::string codes_text(FunctionId f, const std::vector<std::pair<std::string, co
 
 }  // namespace
 
-std::optional<std::string_view> closest_function_id(std::string_view id) {
+std::optional<std::string_view> closest_name(std::string_view word, std::span<const std::string_view> candidates) {
     std::optional<std::string_view> best;
-    std::size_t best_distance = std::max<std::size_t>(3, id.size() / 4) + 1;   // a few typos, not another word
-    for (const FunctionDef& d : FunctionId::all()) {
-        const std::size_t distance = edit_distance(id, d.id);
+    std::size_t best_distance = std::max<std::size_t>(3, word.size() / 4) + 1;   // a few typos, not another word
+    for (const std::string_view candidate : candidates) {
+        const std::size_t distance = edit_distance(word, candidate);
         if (distance < best_distance) {
             best_distance = distance;
-            best = d.id;
+            best = candidate;
         }
     }
     return best;
+}
+
+std::optional<std::string_view> closest_function_id(std::string_view id) {
+    std::vector<std::string_view> ids;
+    for (const FunctionDef& d : FunctionId::all()) ids.push_back(d.id);
+    return closest_name(id, ids);
 }
 
 std::string function_tables_markdown(const Registry& registry) {

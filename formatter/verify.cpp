@@ -18,6 +18,8 @@ VerifyResult verify(const std::string& name, std::string input, std::string outp
     result.events = c.events;
     if (c.difference)
         result.difference = Difference{c.difference->event, c.difference->input_line, c.difference->output_line, c.difference->what};
+    if (const std::optional<interpreter::Event>& a = c.stopped_at)
+        result.stopped_at = AlarmStop{a->source.line, a->control_alarm ? a->control_alarm : a->code, a->text};
     return result;
 }
 

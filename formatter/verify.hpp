@@ -31,9 +31,17 @@ struct Difference {
     std::string what;               // "end X: 10 vs 10.5", "kind: linear vs rapid", "event count: 12 vs 11"
 };
 
+// The program's alarm both runs stopped at: the blocks after it were not run, so not verified.
+struct AlarmStop {
+    std::uint32_t line = 0;   // 1-based, in the input
+    int number = 0;           // as the control shows it (Event::control_alarm, else the code)
+    std::string text;
+};
+
 struct VerifyResult {
     std::size_t events = 0;                 // events of the input's run that were read
     std::optional<Difference> difference;   // nullopt: the traces are equal
+    std::optional<AlarmStop> stopped_at;    // equal traces that end at an alarm of the program
 };
 
 // Runs `input` and `output` (the same program before and after formatting) from their first

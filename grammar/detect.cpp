@@ -47,6 +47,13 @@ struct Facts {
     std::vector<std::pair<double, std::uint32_t>> variables;             // #n with a plain number n
     std::vector<std::uint32_t> prose_after_semicolon;                    // offsets
     std::vector<std::pair<std::string_view, std::uint32_t>> lines;       // source lines without leading blanks, offset
+    // The G and M words with a code key, by key, then text order (index into words[letter]): every
+    // dialect's code clues look their code up here (a scan of the words per clue and dialect was a
+    // fifth of a small file's check).
+    std::array<std::vector<std::pair<dialects::CodeKey, std::uint32_t>>, 2> codes;   // G, M
+    const std::vector<std::pair<dialects::CodeKey, std::uint32_t>>* codes_of(char letter) const {
+        return letter == 'G' ? &codes[0] : letter == 'M' ? &codes[1] : nullptr;
+    }
 };
 
 bool letter_ok(char L) { return L >= 'A' && L <= 'Z'; }
@@ -94,6 +101,13 @@ Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
         if (n.kind == ast::ExprKind::number) f.variables.emplace_back(tree.number_value(n), e.begin);
     }
     f.word_start.push_back(static_cast<std::uint32_t>(f.block_words.size()));
+    for (const char letter : {'G', 'M'}) {
+        auto& keyed = f.codes[letter == 'G' ? 0 : 1];
+        const std::vector<Word>& words = f.words[static_cast<std::size_t>(letter - 'A')];
+        for (std::uint32_t i = 0; i < words.size(); ++i)
+            if (words[i].number && words[i].key) keyed.emplace_back(*words[i].key, i);
+        std::sort(keyed.begin(), keyed.end());
+    }
     return f;
 }
 
@@ -129,16 +143,24 @@ std::string upper(std::string_view s) {
 std::vector<std::uint32_t> occurrences(const DetectClue& c, const Facts& f, const std::vector<bool>& macro_calls) {
     std::vector<std::uint32_t> at;
     switch (c.kind) {
-        case DetectClue::Kind::code:
-            for (const Word& w : f.words[static_cast<std::size_t>(c.letter - 'A')]) {
-                if (!w.number || w.key != std::optional<dialects::CodeKey>(c.key)) continue;
+        case DetectClue::Kind::code: {
+            const std::vector<Word>& words = f.words[static_cast<std::size_t>(c.letter - 'A')];
+            const auto holds = [&](const Word& w) {
                 bool ok = true;
                 for (const auto& [L, v] : c.with) ok &= block_has(f, w.block, L, v);
                 if (!c.with_any.empty()) ok &= block_has_any(f, w.block, c.with_any);
                 if (!c.without.empty()) ok &= !block_has_any(f, w.block, c.without);
                 if (ok) at.push_back(f.block_begin[w.block]);
+            };
+            if (const auto* keyed = f.codes_of(c.letter)) {
+                const auto lo = std::lower_bound(keyed->begin(), keyed->end(), std::make_pair(c.key, std::uint32_t{0}));
+                for (auto it = lo; it != keyed->end() && it->first == c.key; ++it) holds(words[it->second]);
+                break;
             }
+            for (const Word& w : words)
+                if (w.number && w.key == std::optional<dialects::CodeKey>(c.key)) holds(w);
             break;
+        }
         case DetectClue::Kind::word:
             for (const Word& w : f.words[static_cast<std::size_t>(c.letter - 'A')])
                 if (!macro_calls[w.block]) at.push_back(w.offset);

@@ -25,6 +25,7 @@ bool dwell(const Event& e) { return e.kind == EventKind::dwell; }
 bool spindle(const Event& e) { return e.kind == EventKind::spindle; }
 bool has_code(const Event& e) { return e.code != 0; }
 bool has_text(const Event& e) { return !e.text.empty(); }
+bool control_numbered(const Event& e) { return e.control_alarm != 0; }
 // Alarm and call texts quote sequence numbers ("GOTO 10: no N10", "M98 Q20"), which renumbering
 // changes on purpose; their codes and the events around them carry the meaning.
 bool compared_text(const Event& e) { return has_text(e) && e.kind != EventKind::alarm && e.kind != EventKind::call; }
@@ -55,6 +56,7 @@ constexpr std::array kFields{
     EventField{"spindle_rpm", M::spindle_rpm, T::number, state, state},
     EventField{"tool", M::tool, T::integer, always, always},
     EventField{"code", M::code, T::integer, has_code, has_code},
+    EventField{"control_alarm", M::control_alarm, T::integer, control_numbered, control_numbered},
     EventField{"text", M::text, T::text, has_text, compared_text},
 };
 
@@ -86,6 +88,7 @@ long long integer_of(const Event& e, EventMember member) {
     switch (member) {
         case M::line: return e.source.line;
         case M::tool: return e.tool;
+        case M::control_alarm: return e.control_alarm;
         default: return e.code;
     }
 }

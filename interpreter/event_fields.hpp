@@ -17,7 +17,7 @@ namespace kerf::interpreter {
 // kinds of events: `time_s` of a motion after its length, of a dwell after the centre).
 enum class EventMember : std::uint8_t {
     kind, file, line, end, units, machine, start, length_mm, time_s, feed, lead_end, feed_per_rev,
-    spindle_rpm, spindle_running, center, radius, tool, code, text,
+    spindle_rpm, spindle_running, center, radius, tool, code, control_alarm, text,
 };
 
 // How a field's value is written: a position is an object of the machine's axis letters.
@@ -41,7 +41,7 @@ bool is_motion(EventKind kind);
 // A field's value (the member's type must match: positions for position fields, and so on).
 const Position& position_of(const Event& e, EventMember member);   // a center field only when written
 double number_of(const Event& e, EventMember member);
-long long integer_of(const Event& e, EventMember member);           // line, tool, code
+long long integer_of(const Event& e, EventMember member);           // line, tool, code, control_alarm
 bool flag_of(const Event& e, EventMember member);                   // units (inch), feed_per_rev, spindle_running
 
 }  // namespace kerf::interpreter

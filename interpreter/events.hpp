@@ -85,6 +85,10 @@ struct Event {
     bool spindle_running = true;         // feed moves: false when the spindle is stopped (M05); spindle: M03/M04 vs M05
     int tool = 0;                        // tool_change: the tool number; otherwise the active tool
     int code = 0;                        // alarm number, M code, call target ...
+    // alarm: the number the control shows when its dialect numbers the alarm itself ([alarms],
+    // dialects/SCHEMA.md: Haas NGC); 0 when it shows `code` (FANUC's numbering). `code` stays kerf's
+    // number, the alarm's identity for the analyzer's rules and --verify.
+    int control_alarm = 0;
     std::string text;                    // alarm/message text, DPRNT output
 };
 

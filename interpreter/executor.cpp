@@ -191,11 +191,14 @@ void Executor::alarm(const SourceRef& where, int number, std::string text) {
     raise(Alarm{where, state_.position, number, std::move(text)});
 }
 
+// The number stays kerf's (the alarm's identity); a dialect that numbers the alarm itself
+// ([alarms], Haas NGC) gives the number and text the user reads (dialects/dialect.hpp AlarmTable).
 void Executor::raise(Alarm alarm) {
     Event e = event_at(EventKind::alarm, alarm.where);
     e.start = e.end = alarm.at;
     e.code = alarm.number;
-    e.text = std::move(alarm.text);
+    if (const std::optional<dialects::AlarmTable::Shown> shown = dialect_.alarms.shown(alarm.number)) e.control_alarm = shown->number;
+    e.text = dialect_.alarms.message(alarm.number, alarm.text);
     emit(std::move(e));
     stopped_ = true;
 }

@@ -173,6 +173,8 @@ public:
         }
         if (auto what = compare_events(*expected, e, options_))
             difference_ = TraceDifference{i, expected->source.line, e.source.line, *what, {}, {}, expected->source.file, e.source.file};
+        else if (e.kind == EventKind::alarm)
+            stopped_at_ = *expected;   // an alarm ends the run: both stop here
     }
     // After the output's run: the input's events it did not match.
     void finish() {
@@ -185,6 +187,7 @@ public:
     }
     std::size_t expected_count() const { return taken_; }
     std::optional<TraceDifference>& difference() { return difference_; }
+    std::optional<Event>& stopped_at() { return stopped_at_; }
 
 private:
     Channel& channel_;
@@ -196,6 +199,7 @@ private:
     bool drained_ = false;
     bool stopped_ = false;   // a run bound was reached: the rest is not compared
     std::optional<TraceDifference> difference_;
+    std::optional<Event> stopped_at_;
 
     const Event* next() {
         if (at_ == batch_.size() && !drained_) {
@@ -265,6 +269,7 @@ TraceComparison compare_runs(TraceSide input, TraceSide output, const CompareOpt
     input_run.join();
     result.events = actual.expected_count();
     result.difference = std::move(actual.difference());
+    if (!result.difference) result.stopped_at = std::move(actual.stopped_at());
     // Both runs are over: the file tables no longer grow.
     if (result.difference) {
         TraceDifference& d = *result.difference;

@@ -56,6 +56,10 @@ struct TraceDifference {
 struct TraceComparison {
     std::size_t events = 0;                     // compared events of the input's run
     std::optional<TraceDifference> difference;  // nullopt: the traces agree
+    // The program's alarm both runs stopped at, equal in both (the input's event): what follows it
+    // in the program was not run, so not compared. nullopt when the runs ended otherwise (M30, the
+    // end of the program, a run bound) or differ.
+    std::optional<Event> stopped_at;
 };
 
 // Runs both sides from their first program and compares the traces.

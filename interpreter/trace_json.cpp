@@ -176,7 +176,11 @@ json::object summary_to_json(const RunResult& r, std::string_view axes) {
     json::object per_tool;
     for (const auto& [tool, seconds] : r.time_per_tool_s) per_tool[std::to_string(tool)] = snap(seconds);
     json::array alarms;
-    for (const Event& a : r.alarms) alarms.push_back(json::object{{"line", a.source.line}, {"code", a.code}, {"text", a.text}});
+    for (const Event& a : r.alarms) {
+        json::object alarm{{"line", a.source.line}, {"code", a.code}, {"text", a.text}};
+        if (a.control_alarm != 0) alarm["control_alarm"] = a.control_alarm;   // the control numbers it itself ([alarms])
+        alarms.push_back(std::move(alarm));
+    }
     return json::object{{"final_position", position_json(r.final_position, axes)},
                         {"total_time_s", snap(r.total_time_s)},
                         {"feed_distance_mm", snap(r.feed_distance_mm)},

@@ -118,11 +118,14 @@ private:
     std::map<std::string, std::shared_ptr<const Analysis>> results_;
     // The static check of each document, kept between its versions (analyzer/incremental.hpp).
     struct Incremental {
-        analyzer::IncrementalStatic check;
+        analyzer::IncrementalStatic check;    // share 0 of the static rules (and the program checks)
+        analyzer::IncrementalStatic second;   // share 1, walked on a second thread
         std::uint64_t serial = 0;                       // Document::serial() of the version it knows
         std::shared_ptr<const FileSettings> settings;   // the settings it checked under (kept alive)
     };
     std::map<std::string, std::shared_ptr<Incremental>> incremental_;
+    static std::optional<std::vector<analyzer::Finding>> check_static_shares(Incremental& incremental,
+                                                                             const analyzer::IncrementalStatic::Input& input);
     std::string running_;                                              // the uri being analysed
     std::atomic<bool> cancel_{false};
     bool stop_ = false;

@@ -149,6 +149,7 @@ std::shared_ptr<const FileSettings> ProjectSeam::resolve(const fs::path& file, s
     for (const project::Problem& p : r.problems) s->problems.push_back(project::to_string(p));
     const project::Config& config = r.project->config();
     s->config_file = config.file;
+    s->resolved = r;
     s->style = config.format;
     s->check = config.check;
     s->time_limit = r.project->limits().time_limit;

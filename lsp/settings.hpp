@@ -15,6 +15,7 @@
 #include "formatter/format.hpp"
 #include "formatter/style.hpp"
 #include "interpreter/setup.hpp"
+#include "project/workspace.hpp"
 
 namespace kerf::lsp {
 
@@ -42,6 +43,9 @@ struct FileSettings {
     // The accepted findings of the client's kerf.baseline file that name this file (analyzer/baseline.hpp).
     std::vector<analyzer::BaselineEntry> baseline;
     std::filesystem::path config_file;      // the .kerf.toml, empty when none
+    // The project as the workspace resolved it for this file (its [run], [programs], a foreign
+    // control): the check options are project::project_check_options of it, as for kerf check.
+    project::Resolved resolved;
     std::vector<std::string> problems;      // what could not be read, said to the user
     std::string language = "en";
 };

@@ -6,6 +6,9 @@
 #include <cmath>
 #include <iterator>
 #include <numbers>
+#include <optional>
+#include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "plot/toolpath.hpp"
@@ -122,11 +125,17 @@ void widen(double& lo, double& hi, double want) {
     hi = mid + want / 2;
 }
 
-Layout make_layout(Box2 bounds, bool lathe, double legend_w) {
+// The box the plot area frames (SvgOptions::frame): the part when there is one, else everything.
+bool frames_part(const Toolpath& t, const SvgOptions& o) { return o.frame == Frame::part && !t.part_bounds.empty; }
+
+// `margin`: the part of the framed extent added on every side (more around a part, so the approach
+// and retract rapids near it show).
+// The picture's width is set once the legend is known (render_svg).
+Layout make_layout(Box2 bounds, bool lathe, double margin_fraction) {
     if (lathe) bounds.extend({bounds.h_min, 0});   // the part axis belongs to a lathe picture
     const double extent = std::max(bounds.h_max - bounds.h_min, bounds.v_max - bounds.v_min);
     // A path that is one point on the picture (Z moves seen from above) gets 10 units around it.
-    const double margin = extent > 1e-9 ? 0.05 * extent : 5.0;
+    const double margin = extent > 1e-9 ? margin_fraction * extent : 5.0;
     Layout l;
     l.world = {bounds.h_min - margin, bounds.h_max + margin, bounds.v_min - margin, bounds.v_max + margin, false};
     l.scale = std::min(kMaxPlotW / (l.world.h_max - l.world.h_min), kMaxPlotH / (l.world.v_max - l.world.v_min));
@@ -134,7 +143,6 @@ Layout make_layout(Box2 bounds, bool lathe, double legend_w) {
     widen(l.world.v_min, l.world.v_max, kMinPlotH / l.scale);
     l.plot_w = (l.world.h_max - l.world.h_min) * l.scale;
     l.plot_h = (l.world.v_max - l.world.v_min) * l.scale;
-    l.width = std::ceil(kLeft + std::max(l.plot_w, legend_w) + kRight);
     l.height = std::ceil(kTop + l.plot_h + kTickArea + 2 * kRowH + 6);
     return l;
 }
@@ -151,7 +159,7 @@ void write_header(Out out, double width, double height, const std::string& title
                    num(width), num(height), xml_escape(title), xml_escape(subtitle));
 }
 
-std::string subtitle_of(const Toolpath& t, const SvgOptions& o) {
+std::string subtitle_of(const Toolpath& t, const SvgOptions& o, bool clipped) {
     const bool lathe = o.kind == dialects::MachineKind::lathe;
     std::string s = lathe ? (o.diameter_x ? "lathe, Z-X view, X drawn at the radius" : "lathe, Z-X view") : "mill, X-Y view";
     if (t.inch) s += ", inches (G20)";
@@ -160,6 +168,7 @@ std::string subtitle_of(const Toolpath& t, const SvgOptions& o) {
     s += fmt::format(" | feed {} | rapid {}", length(t.feed_mm), length(t.rapid_mm));
     if (t.thread_mm > 0) s += fmt::format(" | thread {}", length(t.thread_mm));
     if (t.not_drawn > 0) s += fmt::format(" | the last {} moves are not drawn (the picture is full)", t.not_drawn);
+    if (clipped) s += " | framed on the cuts (--frame all)";
     return s;
 }
 
@@ -189,8 +198,17 @@ void write_grid(Out out, const Layout& l, double label_factor) {
                               num(l.y(v) + 4), label(v * label_factor, step));
     }
     fmt::format_to(out, "</g>\n<g class=\"ticks\" fill=\"#666\" font-size=\"11\">\n{}</g>\n", labels);
-    fmt::format_to(out, "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#999\"/>\n", num(kLeft),
-                   num(kTop), num(l.plot_w), num(l.plot_h));
+    fmt::format_to(out,
+                   "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"#999\" class=\"frame\" "
+                   "data-view=\"{} {} {} {}\"/>\n",
+                   num(kLeft), num(kTop), num(l.plot_w), num(l.plot_h), num(l.world.h_min), num(l.world.v_min),
+                   num(l.world.h_max), num(l.world.v_max));
+}
+
+// What is cut off at the frame's edge is hidden by this clip path (SvgOptions::frame).
+void write_clip(Out out, const Layout& l) {
+    fmt::format_to(out, "<clipPath id=\"plot-area\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
+                   num(kLeft), num(kTop), num(l.plot_w), num(l.plot_h));
 }
 
 // Lathes: the part axis (X0) as a centre line across the plot.
@@ -244,6 +262,95 @@ void write_path(Out out, Stroke stroke, const std::string& d) {
 
 bool same_point(Point a, Point b) { return std::fabs(a.h - b.h) <= 1e-6 && std::fabs(a.v - b.v) <= 1e-6; }
 
+// The segment from `a` to `b` clipped to the box (Liang–Barsky): the parameters [t0, t1] of the part
+// inside it, or nullopt when none is.
+std::optional<std::pair<double, double>> clip(Point a, Point b, const Box2& box) {
+    double t0 = 0, t1 = 1;
+    const double d[2] = {b.h - a.h, b.v - a.v};
+    const double lo[2] = {box.h_min - a.h, box.v_min - a.v};
+    const double hi[2] = {box.h_max - a.h, box.v_max - a.v};
+    for (int i = 0; i < 2; ++i) {
+        if (d[i] == 0) {
+            if (lo[i] > 0 || hi[i] < 0) return std::nullopt;
+            continue;
+        }
+        double enter = lo[i] / d[i], leave = hi[i] / d[i];
+        if (enter > leave) std::swap(enter, leave);
+        t0 = std::max(t0, enter);
+        t1 = std::min(t1, leave);
+        if (t0 > t1) return std::nullopt;
+    }
+    return std::pair{t0, t1};
+}
+
+bool inside(const Box2& box, Point p) {
+    return p.h >= box.h_min && p.h <= box.h_max && p.v >= box.v_min && p.v <= box.v_max;
+}
+
+// A rapid that leaves the framed part: where it crosses the frame and where it goes.
+struct Exit {
+    Point at;
+    Point to;
+};
+
+// What the picture shows inside its frame; the legend lists these and nothing else.
+struct Shown {
+    bool rapid = false;
+    bool feed = false;
+    bool arc = false;
+    bool thread = false;
+    bool start = false;
+    bool end = false;
+    bool alarm = false;
+    bool clipped = false;      // some of the path or a marker lies outside the frame
+    std::vector<Exit> exits;   // one per place and direction (at most kMaxExits)
+};
+
+constexpr std::size_t kMaxExits = 100;
+
+// The rapid piece's exit from the frame, if it leaves it (an arc never is a rapid).
+void add_exit(Shown& shown, const Piece& p, const std::pair<double, double>& in, const Layout& l,
+              std::vector<std::tuple<long, long, long>>& seen) {
+    if (in.second >= 1 - 1e-9 || shown.exits.size() >= kMaxExits) return;
+    const Point at{p.from.h + in.second * (p.to.h - p.from.h), p.from.v + in.second * (p.to.v - p.from.v)};
+    // Arrows that would sit on one another (every tool's G28 home return from one corner) are one.
+    const double angle = std::atan2(p.to.v - p.from.v, p.to.h - p.from.h);
+    const std::tuple<long, long, long> key{std::lround(l.x(at.h) / 6), std::lround(l.y(at.v) / 6),
+                                           std::lround(angle / (std::numbers::pi / 12))};
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) return;
+    seen.push_back(key);
+    shown.exits.push_back({at, p.to});
+}
+
+Shown what_is_shown(const Toolpath& t, const Layout& l) {
+    Shown shown;
+    std::vector<std::tuple<long, long, long>> seen;
+    for (const Piece& p : t.pieces) {
+        // Arcs lie inside the frame or not as their box does: only the part's moves are arcs, and
+        // the frame holds the part.
+        const std::optional<std::pair<double, double>> in =
+            p.arc ? std::optional{std::pair{0.0, 1.0}} : clip(p.from, p.to, l.world);
+        if (!in) continue;
+        switch (p.stroke) {
+        case Stroke::rapid:
+            shown.rapid = true;
+            add_exit(shown, p, *in, l, seen);
+            break;
+        case Stroke::feed:
+            shown.feed = true;
+            shown.arc = shown.arc || p.arc;
+            break;
+        case Stroke::thread: shown.thread = true; break;
+        }
+    }
+    shown.start = t.moves > 0 && inside(l.world, t.start);
+    shown.end = t.moves > 0 && inside(l.world, t.end);
+    shown.alarm = std::any_of(t.alarms.begin(), t.alarms.end(), [&](Point a) { return inside(l.world, a); });
+    // The box of the whole path holds every piece and marker: inside the frame, nothing is cut off.
+    shown.clipped = !(inside(l.world, {t.bounds.h_min, t.bounds.v_min}) && inside(l.world, {t.bounds.h_max, t.bounds.v_max}));
+    return shown;
+}
+
 // One <path> per run of moves with the same stroke, in execution order.
 void write_paths(Out out, const Toolpath& t, const Layout& l) {
     std::string d;
@@ -282,13 +389,35 @@ void alarm_marker(Out out, double x, double y) {
                    num(x - 5), num(y - 5), kAlarmColour);
 }
 
+// An arrowhead in the rapid colour whose tip is (x, y), pointing along (dx, dy) in pixels; `title`
+// (the tooltip) says where the rapid goes.
+void exit_arrow(Out out, double x, double y, double dx, double dy, const std::string& title) {
+    const double len = std::hypot(dx, dy);
+    const double ux = len > 0 ? dx / len : 1, uy = len > 0 ? dy / len : 0;
+    const auto corner = [&](double side) {
+        return fmt::format("{} {}", num(x - 11 * ux + side * 5 * uy), num(y - 11 * uy - side * 5 * ux));
+    };
+    fmt::format_to(out, "<path class=\"leaves\" d=\"M{} {} L{} L{} Z\" fill=\"{}\" stroke=\"none\">{}</path>\n", num(x),
+                   num(y), corner(1), corner(-1), kRapid.colour,
+                   title.empty() ? std::string() : "<title>" + xml_escape(title) + "</title>");
+}
+
+// Where a rapid that leaves the frame goes, as programmed (lathe X as a diameter).
+std::string destination(Point to, const SvgOptions& o) {
+    const bool lathe = o.kind == dialects::MachineKind::lathe;
+    if (lathe) return fmt::format("rapid to Z{} X{}", num(to.h), num(o.diameter_x ? 2 * to.v : to.v));
+    return fmt::format("rapid to X{} Y{}", num(to.h), num(to.v));
+}
+
 // Alarms last: a run stopped by an alarm ends where the alarm is, and the cross must stay visible.
-void write_markers(Out out, const Toolpath& t, const Layout& l) {
-    if (t.moves > 0) {
-        start_marker(out, l.x(t.start.h), l.y(t.start.v));
-        end_marker(out, l.x(t.end.h), l.y(t.end.v));
-    }
-    for (const Point& a : t.alarms) alarm_marker(out, l.x(a.h), l.y(a.v));
+// Markers outside the frame are not drawn.
+void write_markers(Out out, const Toolpath& t, const Layout& l, const Shown& shown, const SvgOptions& o) {
+    for (const Exit& e : shown.exits)
+        exit_arrow(out, l.x(e.at.h), l.y(e.at.v), l.x(e.to.h) - l.x(e.at.h), l.y(e.to.v) - l.y(e.at.v), destination(e.to, o));
+    if (shown.start) start_marker(out, l.x(t.start.h), l.y(t.start.v));
+    if (shown.end) end_marker(out, l.x(t.end.h), l.y(t.end.v));
+    for (const Point& a : t.alarms)
+        if (inside(l.world, a)) alarm_marker(out, l.x(a.h), l.y(a.v));
 }
 
 // A bar of a round length (1-2-5 series) with end ticks, under the plot on the left.
@@ -313,34 +442,44 @@ void line_sample(Out out, const Style& s, double x, double y) {
                    num(x), num(x + 30), num(y), s.colour, num(s.width), dash);
 }
 
-constexpr LegendItem kLegend[] = {
-    {"rapid", [](Out o, double x, double y) { line_sample(o, kRapid, x, y); }},
-    {"feed (lines, arcs)", [](Out o, double x, double y) { line_sample(o, kFeed, x, y); }},
-    {"thread", [](Out o, double x, double y) { line_sample(o, kThread, x, y); }},
-    {"start", [](Out o, double x, double y) { start_marker(o, x + 15, y); }},
-    {"end", [](Out o, double x, double y) { end_marker(o, x + 15, y); }},
-    {"alarm", [](Out o, double x, double y) { alarm_marker(o, x + 15, y); }},
-};
+void rapid_sample(Out o, double x, double y) { line_sample(o, kRapid, x, y); }
+void feed_sample(Out o, double x, double y) { line_sample(o, kFeed, x, y); }
 
-double item_width(const LegendItem& item) { return 30 + 8 + kCharPx * std::char_traits<char>::length(item.label) + 18; }
+// The entries of what the drawing contains, in this order.
+std::vector<LegendItem> legend_of(const Shown& shown) {
+    std::vector<LegendItem> items;
+    if (shown.rapid) items.push_back({"rapid", rapid_sample});
+    if (!shown.exits.empty())
+        items.push_back({"rapid leaving the frame", [](Out o, double x, double y) { exit_arrow(o, x + 22, y, 1, 0, ""); }});
+    if (shown.feed) items.push_back({shown.arc ? "feed (lines, arcs)" : "feed", feed_sample});
+    if (shown.thread) items.push_back({"thread", [](Out o, double x, double y) { line_sample(o, kThread, x, y); }});
+    if (shown.start) items.push_back({"start", [](Out o, double x, double y) { start_marker(o, x + 15, y); }});
+    if (shown.end) items.push_back({"end", [](Out o, double x, double y) { end_marker(o, x + 15, y); }});
+    if (shown.alarm) items.push_back({"alarm", [](Out o, double x, double y) { alarm_marker(o, x + 15, y); }});
+    return items;
+}
 
-// The alarm entry only when the picture has an alarm marker.
-std::size_t legend_count(const Toolpath& t) { return t.alarms.empty() ? std::size(kLegend) - 1 : std::size(kLegend); }
+// The width of a line of 12 px text: kCharPx per character (UTF-8 continuation bytes are no character).
+double text_width(std::string_view text) {
+    return kCharPx * static_cast<double>(std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
 
-double legend_width(const Toolpath& t) {
+double item_width(const LegendItem& item) { return 30 + 8 + text_width(item.label) + 18; }
+
+double legend_width(const std::vector<LegendItem>& items) {
     double w = 0;
-    for (std::size_t i = 0; i < legend_count(t); ++i) w += item_width(kLegend[i]);
+    for (const LegendItem& item : items) w += item_width(item);
     return w;
 }
 
-void write_legend(Out out, const Toolpath& t, const Layout& l) {
+void write_legend(Out out, const std::vector<LegendItem>& items, const Layout& l) {
     const double y = l.bottom() + kTickArea + kRowH + 10;
     double x = kLeft;
     fmt::format_to(out, "<g class=\"legend\">\n");
-    for (std::size_t i = 0; i < legend_count(t); ++i) {
-        kLegend[i].sample(out, x, y);
-        fmt::format_to(out, "<text x=\"{}\" y=\"{}\">{}</text>\n", num(x + 38), num(y + 4), kLegend[i].label);
-        x += item_width(kLegend[i]);
+    for (const LegendItem& item : items) {
+        item.sample(out, x, y);
+        fmt::format_to(out, "<text x=\"{}\" y=\"{}\">{}</text>\n", num(x + 38), num(y + 4), item.label);
+        x += item_width(item);
     }
     fmt::format_to(out, "</g>\n");
 }
@@ -355,24 +494,33 @@ std::string no_motion_svg(const SvgOptions& o) {
 }  // namespace
 
 std::string render_svg(const std::vector<interpreter::Event>& events, const SvgOptions& options) {
-    return render_svg(build_toolpath(events, {options.kind, options.diameter_x}), options);
+    return render_svg(build_toolpath(events, {options.kind, options.diameter_x, options.frame}), options);
 }
 
 std::string render_svg(const Toolpath& t, const SvgOptions& options) {
     if (t.bounds.empty) return no_motion_svg(options);
     const bool lathe = options.kind == dialects::MachineKind::lathe;
-    const Layout l = make_layout(t.bounds, lathe, legend_width(t));
+    const bool part = frames_part(t, options);
+    Layout l = make_layout(part ? t.part_bounds : t.bounds, lathe, part ? 0.1 : 0.05);
+    const Shown shown = what_is_shown(t, l);
+    const std::vector<LegendItem> legend = legend_of(shown);
+    const std::string subtitle = subtitle_of(t, options, shown.clipped);
+    // As wide as the plot, the legend and the subtitle (a narrow part with a long subtitle).
+    l.width = std::ceil(std::max(kLeft + std::max(l.plot_w, legend_width(legend)) + kRight, text_width(subtitle) + 32));
     std::string svg;
     svg.reserve(4096 + 64 * t.pieces.size());
     const Out out = std::back_inserter(svg);
-    write_header(out, l.width, l.height, options.title, subtitle_of(t, options));
+    write_header(out, l.width, l.height, options.title, subtitle);
     write_grid(out, l, lathe && options.diameter_x ? 2.0 : 1.0);   // lathe X ticks read as programmed: diameters
+    if (shown.clipped) write_clip(out, l);
     if (lathe) write_part_axis(out, l);
     write_axis_labels(out, l, options);
+    if (shown.clipped) svg += "<g clip-path=\"url(#plot-area)\">\n";
     write_paths(out, t, l);
-    write_markers(out, t, l);
+    if (shown.clipped) svg += "</g>\n";
+    write_markers(out, t, l, shown, options);
     write_scale_bar(out, l, t.inch);
-    write_legend(out, t, l);
+    write_legend(out, legend, l);
     svg += "</svg>\n";
     return svg;
 }

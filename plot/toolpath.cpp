@@ -127,6 +127,8 @@ void arc_pieces(const motion::Arc& arc, Stroke stroke, const ViewOptions& o, Box
     }
 }
 
+bool cuts(Stroke s) { return s != Stroke::rapid; }
+
 // The pieces of one move into `out` (cleared first; reused from move to move).
 void pieces_of(const Event& e, Stroke stroke, const ViewOptions& o, Box2& bounds, std::vector<Piece>& out) {
     out.clear();
@@ -162,7 +164,9 @@ void scale_to(Toolpath& t, double k) {
     for (Point& a : t.alarms) a = scaled(a);
     t.start = scaled(t.start);
     t.end = scaled(t.end);
-    t.bounds = {t.bounds.h_min * k, t.bounds.h_max * k, t.bounds.v_min * k, t.bounds.v_max * k, t.bounds.empty};
+    const auto scaled_box = [k](const Box2& b) { return Box2{b.h_min * k, b.h_max * k, b.v_min * k, b.v_max * k, b.empty}; };
+    t.bounds = scaled_box(t.bounds);
+    t.part_bounds = scaled_box(t.part_bounds);
     t.resolution *= k;
 }
 
@@ -210,6 +214,7 @@ void ToolpathBuilder::add(const interpreter::Event& e) {
         if (!finite(e.end) || t_.alarms.size() >= kMaxAlarms) return;
         t_.alarms.push_back(project(geometric(e.end, options_, e.inch), options_));
         t_.bounds.extend(t_.alarms.back());
+        t_.part_bounds.extend(t_.alarms.back());   // where the run stopped belongs to the picture
         return;
     }
     const std::optional<Stroke> stroke = stroke_of(e.kind);
@@ -219,7 +224,12 @@ void ToolpathBuilder::add(const interpreter::Event& e) {
     metric_votes_ += vote < 0;
     add_length(t_, *stroke, e.length_mm);
     ++t_.moves;
-    pieces_of(e, *stroke, options_, t_.bounds, move_pieces_);
+    Box2 box;   // the move's own
+    pieces_of(e, *stroke, options_, box, move_pieces_);
+    for (const Point corner : {Point{box.h_min, box.v_min}, Point{box.h_max, box.v_max}}) {
+        t_.bounds.extend(corner);
+        if (cuts(*stroke)) t_.part_bounds.extend(corner);
+    }
     if (t_.moves == 1) t_.start = move_pieces_.front().from;
     t_.end = move_pieces_.back().to;
     fit_grid();
@@ -228,17 +238,23 @@ void ToolpathBuilder::add(const interpreter::Event& e) {
     if (!drawn) ++t_.not_drawn;
 }
 
-// The grid is the power of two at least 1/kGridCells of the drawing's extent, so it changes only
-// when the drawing doubles.
+// The grid is the power of two at least 1/kGridCells of the framed extent, so it changes only when
+// that doubles. Framing the part, the grid follows the whole drawing until the first cutting move
+// and then the part (once finer, for the rapids from home that came first): a part far from home
+// is drawn as finely as one alone.
 void ToolpathBuilder::fit_grid() {
-    const double extent = std::max(t_.bounds.h_max - t_.bounds.h_min, t_.bounds.v_max - t_.bounds.v_min);
+    const bool on_part = options_.frame == Frame::part && !t_.part_bounds.empty;
+    const Box2& framed = on_part ? t_.part_bounds : t_.bounds;
+    const double extent = std::max(framed.h_max - framed.h_min, framed.v_max - framed.v_min);
     if (!(extent > 0) || !std::isfinite(extent)) {
         if (grid_ == 0) grid_ = 1e-9;   // one point so far: exact
         return;
     }
-    if (extent <= grid_ * kGridCells) return;   // the common case: the grid still fits
+    const bool to_part = on_part && !grid_on_part_;
+    grid_on_part_ = on_part;
+    if (extent <= grid_ * kGridCells && !to_part) return;   // the common case: the grid still fits
     const double wanted = std::exp2(std::ceil(std::log2(extent / kGridCells)));
-    if (wanted > grid_) resimplify(wanted);
+    if (wanted > grid_ || (to_part && wanted < grid_)) resimplify(wanted);
 }
 
 void ToolpathBuilder::resimplify(double grid) {

@@ -22,9 +22,15 @@
 
 namespace kerf::plot {
 
+// What the picture frames: the part (the cutting moves: feeds, arcs, threads, and where alarms
+// stopped the run), so that the home returns of a lathe program (G28/G53 far from the part) do not
+// shrink it to a corner of the picture; or the whole path (`kerf plot --frame all`).
+enum class Frame { part, all };
+
 struct ViewOptions {
     dialects::MachineKind kind = dialects::MachineKind::mill;
     bool diameter_x = false;   // lathe: event X is a diameter; it is drawn at the radius
+    Frame frame = Frame::part;
 };
 
 // A point of the drawing in its unit (mm, or inches when most moves were in G20: Toolpath::inch),
@@ -59,6 +65,7 @@ struct Toolpath {
     std::vector<Piece> pieces;     // in execution order, simplified (below)
     std::vector<Point> alarms;     // where alarms stopped the run (at most kMaxAlarms)
     Box2 bounds;                   // every point the path reaches, arc extremes included
+    Box2 part_bounds;              // the cutting moves (arc extremes included) and the alarms; empty without them
     Point start, end;              // where the first move starts and the last one ends
     bool inch = false;             // the points are in inches (most moves ran under G20)
     double rapid_mm = 0;           // path lengths from the events (the interpreter's, in mm)
@@ -71,7 +78,8 @@ struct Toolpath {
 
 // The toolpath of a run, built one event at a time with memory bounded whatever the run
 // (ARCHITECTURE.md "Bounded resources"; issue 17): the pieces are simplified on a grid of at least
-// kGridCells cells across the drawing (a fraction of a pixel of the SVG):
+// kGridCells cells across what the picture frames (Frame: the part once a cutting move came, else
+// the whole drawing; a fraction of a pixel of the SVG):
 // * consecutive lines of one stroke that continue along one line (within half a cell) become one,
 //   and a line shorter than a cell takes the next one in (points closer than the resolution go);
 // * a piece that repeats one already drawn (same stroke, same cells: an endless loop's second
@@ -107,7 +115,7 @@ private:
     void set_direction(const Piece& line);
     void close_open();
     void finalize_last();
-    void fit_grid();               // the grid for the current bounds; re-simplifies when it grows
+    void fit_grid();               // the grid for the framed extent; re-simplifies when it changes
     void resimplify(double grid);
     Key key_of(const Piece& p) const;
     std::int64_t cell(double v) const;
@@ -122,6 +130,7 @@ private:
     bool has_direction_ = false;
     bool full_ = false;            // kMaxPieces at the coarsest grid: moves are counted, not drawn
     bool resimplifying_ = false;
+    bool grid_on_part_ = false;    // the grid follows the part's extent (Frame::part, after the first cut)
     std::unordered_set<Key, KeyHash> drawn_;
 };
 

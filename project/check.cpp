@@ -12,6 +12,26 @@ namespace kerf::project {
 namespace fs = std::filesystem;
 namespace an = analyzer;
 
+an::CheckOptions project_check_options(const Resolved& r, interpreter::ProgramSet& programs, std::uint32_t file,
+                                       const std::string& name) {
+    an::CheckOptions options;
+    // The dry run starts as [run] says (a caller's block for a macro library, preset variables,
+    // passes); its problems were reported when the project was read.
+    RunStart start = run_start(r.project->run_settings(), programs, file, *r.dialect, name);
+    options.run = std::move(start.options);
+    options.main = start.main;
+    options.config = r.project->config().check;
+    options.time_limit = r.project->limits().time_limit;
+    options.resident = resident_programs(r.project->config().programs);
+    if (r.choice.foreign) {
+        // Detection found another control's program: the check says so once (K2009).
+        const grammar::Detection::Foreign& f = *r.choice.foreign;
+        options.foreign = an::ForeignControl{f.id, f.name, static_cast<std::uint32_t>(f.first.line),
+                                             static_cast<std::uint32_t>(f.first.column), f.first.what, f.first.proves};
+    }
+    return options;
+}
+
 namespace {
 
 struct Analysis {
@@ -24,22 +44,8 @@ Analysis analyze(Workspace& workspace, const fs::path& path, std::string text, c
     Analysis a;
     a.file = a.programs->add(path.string(), std::move(text), *r.dialect);
     a.programs->set_loader(workspace.loader_for(path), r.dialect);
-    an::CheckOptions options;
-    // The dry run starts as [run] says (a caller's block for a macro library, preset variables,
-    // passes); its problems were reported when the project was read.
-    RunStart start = run_start(r.project->run_settings(), *a.programs, a.file, *r.dialect, path.string());
-    options.run = std::move(start.options);
-    options.main = start.main;
-    options.config = r.project->config().check;
+    an::CheckOptions options = project_check_options(r, *a.programs, a.file, path.string());
     options.max_findings_per_rule = max_per_rule;
-    options.time_limit = r.project->limits().time_limit;
-    options.resident = resident_programs(r.project->config().programs);
-    if (r.choice.foreign) {
-        // Detection found another control's program: the check says so once (K2009).
-        const grammar::Detection::Foreign& f = *r.choice.foreign;
-        options.foreign = an::ForeignControl{f.id, f.name, static_cast<std::uint32_t>(f.first.line),
-                                             static_cast<std::uint32_t>(f.first.column), f.first.what, f.first.proves};
-    }
     options.program_files = [&workspace, path](std::int64_t number) {
         std::vector<std::string> names;
         for (const IndexedProgram& p : workspace.find_programs(number, path))

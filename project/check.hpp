@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "analyzer/baseline.hpp"
+#include "analyzer/analyze.hpp"
 #include "analyzer/output.hpp"
+#include "interpreter/program_set.hpp"
 #include "project/workspace.hpp"
 
 namespace kerf::project {
@@ -31,6 +33,14 @@ struct CheckSettings {
     // Findings shown per rule and file before one "and N more" (analyzer::CheckOptions; 0 = all).
     std::size_t max_findings_per_rule = 100;
 };
+
+// The check options the project gives file `file` of `programs` (named `name`, resolved as `r`):
+// the dry run's start ([run]: passes, preset variables, a caller's block, which may add a file to
+// `programs`), the rule settings ([check]), the time limit ([limits]), the resident programs
+// ([programs]) and a foreign control detection found. kerf check and the language server take the
+// same; the caller adds what is its own (the cap per rule, the other files of a program).
+analyzer::CheckOptions project_check_options(const Resolved& r, interpreter::ProgramSet& programs, std::uint32_t file,
+                                             const std::string& name);
 
 // Reads `file` through the workspace (decoded under its project's limits) and checks it; with
 // `fix`, the fixed text is written back in the file's encoding.

@@ -46,6 +46,12 @@ void verify_result(Workspace& workspace, const fs::path& file, std::string text,
     v.run.resident = resident_programs(resolved.project->config().programs);
     const std::string name = file.string();
     const formatter::VerifyResult result = formatter::verify(name, std::move(text), *r.formatted, v);
+    // Equal runs that stop at the program's alarm (a call to a program that is nowhere: .kerf.toml
+    // [programs] library and resident say where such programs are) prove nothing after it.
+    if (const std::optional<formatter::AlarmStop>& a = result.stopped_at)
+        r.messages.push_back(fmt::format("{}:{}: note: --verify compared the runs up to alarm {} ({}); the blocks after it "
+                                         "are not verified",
+                                         name, a->line, a->number, ast::printable(a->text)));
     if (!result.difference) return;
     const formatter::Difference& d = *result.difference;
     r.messages.push_back(fmt::format(

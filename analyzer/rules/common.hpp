@@ -90,6 +90,13 @@ Rule static_rule(Rule r) {
     return r;
 }
 
+// A program rule: the stateless check C sees each program whole (rule.hpp ProgramCheck).
+template <class C>
+Rule program_rule(Rule r) {
+    r.program_check = std::make_shared<const C>();
+    return r;
+}
+
 template <class C>
 Rule dynamic_rule(Rule r) {
     r.make_dynamic = [] { return std::make_unique<C>(); };

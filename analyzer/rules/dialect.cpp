@@ -4,6 +4,7 @@
 #include <set>
 
 #include "analyzer/rules/common.hpp"
+#include "dialects/alarms.hpp"
 
 namespace kerf::analyzer::rules {
 
@@ -26,7 +27,8 @@ public:
         for (const ast::CodeRef& c : b.g) {
             if (c.info || !c.key) continue;
             const ast::Token& t = b.token(c.token);
-            out.report(t.range(), fmt::format("{} is not a code of {} (alarm 010)", b.tree().spelling(t), b.file.dialect.id),
+            out.report(t.range(), fmt::format("{} is not a code of {} ({})", b.tree().spelling(t), b.file.dialect.id,
+                                              b.file.dialect.alarms.name_of(alarms::improper_command)),
                        "check the code number, or choose the dialect of the machine (--dialect)");
         }
     }

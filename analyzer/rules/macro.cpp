@@ -66,7 +66,8 @@ public:
                 if (e.kind != ast::ExprKind::binary) return;
                 if (e.binary_op() != ast::BinaryOp::div && e.binary_op() != ast::BinaryOp::mod) return;
                 if (const auto v = constant_of(tree, e.b); v && *v == 0)
-                    out.report(e.range(), "division by zero (alarm 112)", "check the divisor");
+                    out.report(e.range(), fmt::format("division by zero ({})", b.file.dialect.alarms.name_of(alarms::macro_division_by_zero)),
+                               "check the divisor");
             });
         };
         block_expressions(b.tree(), b.view, read, [](std::int32_t) {});
@@ -80,7 +81,10 @@ public:
         block_expressions(b.tree(), b.view, [](std::int32_t) {}, [&](std::int32_t target) {
             const ast::Expr& e = tree.exprs[static_cast<std::size_t>(target)];
             if (const auto n = constant_of(tree, e.a); n && *n == 0)
-                out.report(e.range(), "#0 is always vacant and cannot be written (alarm 116)", "assign another variable");
+                out.report(e.range(),
+                               fmt::format("#0 is always vacant and cannot be written ({})",
+                                           b.file.dialect.alarms.name_of(alarms::macro_write_protected)),
+                               "assign another variable");
         });
     }
 };

@@ -1,6 +1,8 @@
 // Reference rules: labels, programs and loops a block points at must exist, once (dialects.md
 // §3.6, §3.7; cycles.md; semantics.md §1.2).
 #include <algorithm>
+#include <limits>
+#include <span>
 #include <unordered_set>
 #include <cmath>
 #include <map>
@@ -113,7 +115,8 @@ public:
             if (b.file.resident && b.file.resident(call.number)) continue;
             reported_.insert(call.number);
             out.report(b.token(call.token).range(),
-                       fmt::format("program O{:04} is not in this file, the files of its folder or the library folders (alarm 078)", call.number),
+                       fmt::format("program O{:04} is not in this file, the files of its folder or the library folders ({})", call.number,
+                                   b.file.dialect.alarms.name_of(alarms::program_not_found)),
                        fmt::format("put O{:04} into a file of its folder, name the folder that holds it in .kerf.toml "
                                    "[programs] library, or, if the machine keeps it in memory (a probe macro), list it in "
                                    "[programs] resident", call.number));
@@ -174,18 +177,18 @@ public:
     void end_program(const FileContext& file, std::size_t, Reporter& out) override {
         if (depth_) return;
         for (const auto& [token, label] : open_)
-            out.report(file.tree().tokens[token].range(), fmt::format("DO {} has no END {} (alarm 124)", label, label),
+            out.report(file.tree().tokens[token].range(), fmt::format("DO {} has no END {} ({})", label, label, file.dialect.alarms.name_of(alarms::loop_nesting)),
                        fmt::format("close the loop with END {}", label));
     }
 
 private:
     void open(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
         if (!depth_ && (label < 1 || label > 3))
-            out.report(b.token(s).range(), fmt::format("DO {}: the loop number must be 1, 2 or 3 (alarm 126)", label),
+            out.report(b.token(s).range(), fmt::format("DO {}: the loop number must be 1, 2 or 3 ({})", label, b.file.dialect.alarms.name_of(alarms::loop_number)),
                        "number loops 1 to 3");
         open_.push_back({s, label});
         if (depth_ && open_.size() == 4)
-            out.report(b.token(s).range(), "WHILE/DO nested deeper than 3 (alarm 124)",
+            out.report(b.token(s).range(), fmt::format("WHILE/DO nested deeper than 3 ({})", b.file.dialect.alarms.name_of(alarms::loop_nesting)),
                        "move the inner loop into a macro (G65) or a subprogram");
     }
     void close(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
@@ -198,7 +201,7 @@ private:
                 return;
             }
         if (!depth_)
-            out.report(b.token(s).range(), fmt::format("END {} without its DO (alarm 124)", label),
+            out.report(b.token(s).range(), fmt::format("END {} without its DO ({})", label, b.file.dialect.alarms.name_of(alarms::loop_nesting)),
                        fmt::format("add WHILE [...] DO {} before it, or remove it", label));
     }
     bool depth_;
@@ -270,15 +273,15 @@ public:
     void begin_program(const FileContext& file, std::size_t, Reporter&) override {
         // The same for every program of the file; shared by the copies of incremental checking
         // (an edit that changes a target is checked whole: static_facts digests them).
-        if (!targets_) targets_ = std::make_shared<const std::vector<std::int64_t>>(jump_targets(file.tree(), computed_));
+        if (!targets_) targets_ = file.shared_jump_targets();
         dead_ = false;
         reported_ = false;
     }
-    void state(StateKey& key) const override { key.add(computed_ * 4 + dead_ * 2 + reported_); }
+    void state(StateKey& key) const override { key.add((targets_ && targets_->computed) * 4 + dead_ * 2 + reported_); }
     void block(const BlockContext& b, Reporter& out) override {
-        if (computed_) return;   // GOTO #1 may reach any label
+        if (targets_->computed) return;   // GOTO #1 may reach any label
         const auto n = b.view.sequence_number();
-        if (n && std::binary_search(targets_->begin(), targets_->end(), static_cast<std::int64_t>(*n))) dead_ = false;
+        if (n && targets_->has(static_cast<std::int64_t>(*n))) dead_ = false;
         if (dead_ && !reported_ && b.view.block().kind == ast::BlockKind::code && !b.view.block().has(ast::block_flags::deleted) &&
             !heading(b)) {
             out.report(block_text_range(b), "no path reaches this block: it follows the end of the program or a GOTO",
@@ -303,73 +306,69 @@ private:
             if (b.tree().statements[static_cast<std::size_t>(b.token(s).payload)].kind == ast::StatementKind::goto_) return true;
         return false;
     }
-    std::shared_ptr<const std::vector<std::int64_t>> targets_;   // sorted
-    bool computed_ = false, dead_ = false, reported_ = false;
+    std::shared_ptr<const JumpTargets> targets_;
+    bool dead_ = false, reported_ = false;
 };
 
 // The same N on several blocks of one program (the MANIFEST's student programs: O0001 N130–N150,
 // O0005 N30/N70): searching for the block, restarting the program at it or renumbering it finds
 // the first one. Labels that jumps land on are K3002's; in a dialect whose label search goes forward
 // from the jump (Haas), repeated labels are local labels on purpose and not reported (issue 15).
-class DuplicateSequenceNumber : public StaticCheck {
+class DuplicateSequenceNumber : public ProgramCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t, Reporter&) override {
-        // The same for every program of the file (as K3007's): an edit that changes a target or a
-        // label is checked whole (static_facts digests them).
-        if (!targets_) targets_ = std::make_shared<const std::vector<std::int64_t>>(jump_targets(file.tree(), computed_));
-        reported_ = false;
-    }
     // One finding per program, at the first block that repeats a number: it names every repeated
-    // number of the program with its blocks.
-    void block(const BlockContext& b, Reporter& out) override {
+    // number of the program with its blocks. Computed from the label table, not by a walk: a CAM
+    // program whose N numbers wrap repeats on nearly every block, and the language server checks it
+    // again after every edit that touches a label (incremental.hpp).
+    void program(const FileContext& file, std::size_t program, Reporter& out) const override {
         // Where labels are searched forward from the jump (Haas), N numbers are local labels: the
         // Renishaw macros repeat N76 (INCH) / N77 (METRIC) in each section on purpose (issue 15).
-        if (reported_ || b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
-        const auto n = repeated(b.file, b.program, b.view);
-        if (!n) return;
-        // The label table (no walk of the program: a CAM program whose N numbers wrap repeats on
-        // nearly every block, and a walk per block made the check quadratic).
-        const LabelTable& labels = b.file.labels(b.program);
-        if (labels.blocks(*n).front() == b.view.index()) return;   // the first one
-        reported_ = true;
-        // The repeated numbers in the order they first repeat; a set for the test (CAM output whose
-        // N numbers wrap repeats tens of thousands of them: a linear search per block was quadratic).
-        std::vector<std::int64_t> numbers;
-        std::unordered_set<std::int64_t> seen;
-        const ast::Program& p = b.file.typed.programs()[b.program];
-        for (std::uint32_t i = p.first_block; i < p.end_block; ++i)
-            if (const auto m = repeated(b.file, b.program, b.file.typed.block(i)); m && seen.insert(*m).second)
-                numbers.push_back(*m);
-        // The message and the related locations name the first kListed numbers and count the others.
+        if (file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
+        const LabelTable& labels = file.labels(program);
+        const JumpTargets& targets = file.jump_targets();
+        struct Repeat {
+            std::uint32_t first;   // the first block whose N is exactly the number
+            std::int64_t number;
+        };
+        std::vector<Repeat> repeats;
+        std::uint32_t at = std::numeric_limits<std::uint32_t>::max();   // the first block that repeats one
+        const std::span<const LabelTable::Entry> entries = labels.entries();
+        for (std::size_t lo = 0, hi = 0; lo < entries.size(); lo = hi) {
+            const std::int64_t n = entries[lo].number;
+            while (hi < entries.size() && entries[hi].number == n) ++hi;
+            // A number on one block, or one a jump lands on (K3002's), is no finding. N10.5 counts
+            // as a block of label 10 but is not N10 itself.
+            if (hi - lo < 2 || targets.has(n)) continue;
+            std::optional<std::uint32_t> first, second;
+            for (std::size_t i = lo; i < hi && !second; ++i) {
+                if (entries[i].value != static_cast<double>(n)) continue;
+                (first ? second : first) = entries[i].block;
+            }
+            if (!first) continue;
+            repeats.push_back({*first, n});
+            if (second) at = std::min(at, *second);
+        }
+        if (at == std::numeric_limits<std::uint32_t>::max()) return;
+        // The message and the related locations name the first kListed numbers (in the order they
+        // first appear) and count the others.
         constexpr std::size_t kListed = 10;
+        const std::size_t listed = std::min(repeats.size(), kListed);
+        std::partial_sort(repeats.begin(), repeats.begin() + static_cast<std::ptrdiff_t>(listed), repeats.end(),
+                          [](const Repeat& a, const Repeat& b) { return a.first < b.first; });
         std::string list;
-        for (std::size_t k = 0; k < std::min(numbers.size(), kListed); ++k)
-            list += fmt::format("{}N{}", list.empty() ? "" : ", ", numbers[k]);
-        if (numbers.size() > kListed) list += fmt::format(" and {} more numbers", numbers.size() - kListed);
-        Finding& f = out.report(block_text_range(b),
+        for (std::size_t k = 0; k < listed; ++k) list += fmt::format("{}N{}", list.empty() ? "" : ", ", repeats[k].number);
+        if (repeats.size() > kListed) list += fmt::format(" and {} more numbers", repeats.size() - kListed);
+        Finding& f = out.report(block_range(file, at),
                                 fmt::format("{} {} on several blocks of this program: a search or a restart finds the first",
-                                            list, numbers.size() == 1 ? "is" : "are"),
+                                            list, repeats.size() == 1 ? "is" : "are"),
                                 "give each block a number of its own (kerf fmt --block-numbers renumber)");
-        for (std::size_t k = 0; k < std::min(numbers.size(), kListed); ++k) {
-            const std::int64_t m = numbers[k];
-            const std::vector<std::uint32_t> at = labels.blocks(m);
-            for (std::size_t j = 0; j < at.size(); ++j)
-                f.related.push_back({block_range(b.file, at[j]), j == 0 ? fmt::format("N{}: the first", m) : fmt::format("N{} again", m)});
+        for (std::size_t k = 0; k < listed; ++k) {
+            const std::int64_t m = repeats[k].number;
+            const std::vector<std::uint32_t> blocks = labels.blocks(m);
+            for (std::size_t j = 0; j < blocks.size(); ++j)
+                f.related.push_back({block_range(file, blocks[j]), j == 0 ? fmt::format("N{}: the first", m) : fmt::format("N{} again", m)});
         }
     }
-    void state(StateKey& key) const override { key.add(reported_); }
-
-private:
-    // The block's N when another block of the program has it too and no jump lands on it (K3002's).
-    std::optional<std::int64_t> repeated(const FileContext& file, std::size_t program, const ast::BlockView& view) const {
-        const auto n = view.sequence_number();
-        if (!n || *n != std::floor(*n)) return std::nullopt;
-        const auto label = static_cast<std::int64_t>(*n);
-        if (file.labels(program).count(label) < 2 || std::binary_search(targets_->begin(), targets_->end(), label)) return std::nullopt;
-        return label;
-    }
-    std::shared_ptr<const std::vector<std::int64_t>> targets_;   // sorted
-    bool computed_ = false, reported_ = false;
 };
 
 class ProgramNumbers : public StaticCheck {
@@ -469,7 +468,7 @@ void add_references(Registry& r) {
         {"An O number in O8000–O9999, the ranges FANUC parameter 3202 can protect.",
          "A protected program cannot be edited or loaded over; macro makers use these numbers on purpose.",
          "O9001", "O1001", "[FANUC] parameter 3202 NE8/NE9"})));
-    r.add(static_rule<DuplicateSequenceNumber>(rule("K3011", "duplicate-sequence-number", S::warning,
+    r.add(program_rule<DuplicateSequenceNumber>(rule("K3011", "duplicate-sequence-number", S::warning,
         {"The same sequence number on several blocks of one program (not a jump target: that is K3002).",
          "A search for the block, a restart at it or a renumbering finds the first: the operator restarts at the wrong place.",
          "N130 M06 T02\nN140 G43 H02\nN130 G00 X0 Y0", "N130 M06 T02\nN140 G43 H02\nN250 G00 X0 Y0",

@@ -163,6 +163,7 @@ public:
     }
     void block(const BlockContext& b, Reporter&) override {
         unit_set_ = unit_set_ || b.has_function(fn::inch_input) || b.has_function(fn::metric_input);
+        if (unit_set_) return;   // nothing else matters to the program's finding (end_program)
         main_ = main_ || b.has_function(fn::program_end) || b.has_function(fn::program_end_rewind);
         const auto axes = b.view.axis_words();
         if (!first_move_ && !axes.empty()) first_move_ = block_text_range(b);

@@ -1,6 +1,7 @@
 // `kerf plot` (and `kerf run --machine`): output to a file or stdout, exit codes as `kerf run`,
 // alarms on stderr with the picture still written, machine files from --machine and .kerf.toml.
 #include "tests/cli/cli_runner.hpp"
+#include "tests/plot/svg_reader.hpp"
 
 #include <filesystem>
 #include <string>
@@ -135,4 +136,89 @@ TEST_CASE("kerf plot: .kerf.toml names the machine file, relative to itself; --m
     const Run flag = run("plot --machine " + shell_quote(diameter) + " " + shell_quote(nc));
     CHECK(flag.code == 0);
     CHECK(flag.out.find("X drawn at the radius") != std::string::npos);
+}
+
+// A lathe program that starts and ends at home (fanuc-lathe-a's machine: home is machine X0 Z0, G54
+// at machine X-300 Z-550, so home is X300 Z550 in work coordinates, drawn at the radius: Z550 X150).
+// Cutting: G1 Z-30 at X40 (radius 20) from Z2, then X50 (radius 25) at Z-30.
+//
+// --frame part (the default), derived by hand: the cuts span Z-30..2 and radius 20..25; a lathe
+// picture holds the part axis, so radius 0..25; the extent max(32, 25) = 32 gives a margin of
+// 10 % = 3.2 on every side: Z-33.2..5.2, radius -3.2..28.2. The scale is min(900 / 38.4, 640 / 31.4)
+// = 20.382 px/mm (the height decides: the plot is 640 px high and 38.4 x 20.382 = 782.675 px wide,
+// over the minimum 420 x 220), so the picture is 76 + 782.675 + 28 -> 887 px wide (the legend,
+// 91 + 217 + 84 = 392 px, and the subtitle are narrower: "lathe, Z-X view, X drawn at the radius |
+// feed 37.0 mm | rapid 1156.9 mm | framed on the cuts (--frame all)", 106 characters x 7 + 32 =
+// 774 px, with the rapids 563.2 + 83.8 + 509.9 mm: home to Z2 X40, Z-30 X50 to Z50 X100, back home)
+// and 70 + 640 + 40 + 2 x 30 + 6 = 816 px high.
+// The rapid G0 X100 Z50 from Z-30 X50 (radius 25) to Z50 radius 50 leaves the frame at its top edge
+// (radius 28.2) at t = 3.2 / 25 = 0.128 along it: Z = -30 + 0.128 x 80 = -19.76, i.e. at
+// x = 76 + (-19.76 + 33.2) x 20.382 = 349.936 px, y = 70 px (the top of the plot).
+//
+// --frame all: everything from home (Z550, radius 150) to the part (Z-30, radius 20), with the axis
+// radius 0..150: the extent 580 gives 5 % = 29: Z-59..579, radius -29..179.
+TEST_CASE("kerf plot frames a lathe part, not its home returns; --frame all frames everything") {
+    const fs::path nc = write_temp("home.nc", "O1000\nG28 U0. W0.\nT0101\nG0 X40. Z2.\nG1 Z-30. F.2 S1000 M3\nX50.\n"
+                                              "G0 X100. Z50.\nG28 U0. W0.\nM30\n");
+    const Run part = run("plot --dialect fanuc-lathe-a " + shell_quote(nc));
+    REQUIRE(part.code == 0);
+    const auto frame = kerf::test::elements_with(part.out, "class=\"frame\"");
+    REQUIRE(frame.size() == 1);
+    CHECK(kerf::test::attribute(frame[0], "data-view") == "-33.2 -3.2 5.2 28.2");
+    CHECK(kerf::test::attribute(frame[0], "width") == "782.675");
+    CHECK(kerf::test::attribute(frame[0], "height") == "640");
+    const auto root = kerf::test::elements_with(part.out, "<svg ");
+    REQUIRE(root.size() == 1);
+    CHECK(kerf::test::attribute(root[0], "viewBox") == "0 0 887 816");
+    // The paths are clipped to the plot area; the rapid that leaves it has an arrow saying where it goes.
+    CHECK(part.out.find("<clipPath id=\"plot-area\">") != std::string::npos);
+    CHECK(part.out.find("<g clip-path=\"url(#plot-area)\">") != std::string::npos);
+    const auto arrows = kerf::test::elements_with(part.out, "<path class=\"leaves\"");
+    REQUIRE(arrows.size() == 2);   // the rapid's and the legend's
+    CHECK(kerf::test::attribute(arrows[0], "d").rfind("M349.936 70 L", 0) == 0);
+    CHECK(part.out.find("<title>rapid to Z50 X100</title>") != std::string::npos);
+    CHECK(part.out.find("feed 37.0 mm | rapid 1156.9 mm | framed on the cuts (--frame all)") != std::string::npos);
+    // Home is outside: no start or end marker, and the legend does not list them.
+    CHECK(part.out.find("class=\"start\"") == std::string::npos);
+    CHECK(part.out.find("class=\"end\"") == std::string::npos);
+    CHECK(part.out.find(">rapid leaving the frame<") != std::string::npos);
+
+    const Run all = run("plot --frame all --dialect fanuc-lathe-a " + shell_quote(nc));
+    REQUIRE(all.code == 0);
+    const auto all_frame = kerf::test::elements_with(all.out, "class=\"frame\"");
+    REQUIRE(all_frame.size() == 1);
+    CHECK(kerf::test::attribute(all_frame[0], "data-view") == "-59 -29 579 179");
+    CHECK(all.out.find("clip-path") == std::string::npos);
+    CHECK(all.out.find("class=\"leaves\"") == std::string::npos);
+    CHECK(all.out.find(">start<") != std::string::npos);
+    CHECK(all.out.find(">end<") != std::string::npos);
+
+    const Run bad = run("plot --frame some --dialect fanuc-lathe-a " + shell_quote(nc));
+    CHECK(bad.code == 2);
+}
+
+// The legend lists the kinds of move the picture has (issue: it always listed "thread").
+TEST_CASE("kerf plot: the legend lists thread only for a program that threads") {
+    const fs::path plain = write_temp("plain.nc", kLathe);
+    const Run p = run("plot --dialect fanuc-lathe-a " + shell_quote(plain));
+    REQUIRE(p.code == 0);
+    const std::size_t legend = p.out.find("<g class=\"legend\">");
+    REQUIRE(legend != std::string::npos);
+    CHECK(p.out.find(">thread<", legend) == std::string::npos);
+    CHECK(p.out.find(">feed (lines, arcs)<", legend) != std::string::npos);   // the G02
+    CHECK(p.out.find(">rapid<", legend) != std::string::npos);
+
+    // G32 (system A) from Z2 to Z-20 at X19 with a 1.5 mm lead; then a G76 of the reference form.
+    for (const std::string& thread : {std::string("O2\nG0 X19. Z2. S500 M3\nG32 Z-20. F1.5\nG0 X30.\nZ5.\nM30\n"),
+                                      std::string("O3\nG0 X25. Z5. S500 M3\nG76 P010060 Q50 R0.03\n"
+                                                  "G76 X18.16 Z-20. P920 Q300 F1.5\nG0 X50. Z50.\nM30\n")}) {
+        INFO(thread);
+        const fs::path nc = write_temp("thread.nc", thread);
+        const Run t = run("plot --dialect fanuc-lathe-a " + shell_quote(nc));
+        REQUIRE(t.code == 0);
+        const std::size_t at = t.out.find("<g class=\"legend\">");
+        REQUIRE(at != std::string::npos);
+        CHECK(t.out.find(">thread<", at) != std::string::npos);
+        CHECK(t.out.find("<path class=\"thread\"") != std::string::npos);
+    }
 }

@@ -112,6 +112,46 @@ TEST_CASE("[programs] resident: kerf run and kerf plot go on past a call to a re
     fs::remove_all(dir);
 }
 
+// [programs] resident in the three commands (issue 15): a call to O9810, which is in no file of the
+// folder, is a resident program's for kerf check (no finding), kerf run (skipped with a message, the
+// run goes on to M30) and kerf fmt --verify (both runs go on past it and are compared to M30);
+// without the key all three stop at it: K3003, alarm 078, and a --verify that says it compared the
+// runs only up to that alarm.
+TEST_CASE("[programs] resident: kerf fmt --block-numbers renumber --verify treats the call as kerf check and kerf run do") {
+    const fs::path dir = kWork / "resident-fmt";
+    const std::string program = "O0001\nN5 G90 G00 X0. Y0.\nN7 M98 P9810\nN9 G00 X10. Y5.\nN11 G01 X20. F100.\nN13 M30\n";
+    const fs::path main = write_text(dir / "main.nc", program);
+    const std::string renumbered = "O0001\nN10 G90 G00 X0. Y0.\nN20 M98 P9810\nN30 G00 X10. Y5.\nN40 G01 X20. F100.\nN50 M30\n";
+    const std::string fmt = "fmt --block-numbers renumber --verify " + shell_quote(main);
+
+    write_text(dir / ".kerf.toml", "dialect = \"haas-mill\"\n[programs]\nresident = [\"O9800-O9899\"]\n");
+    const CliRun check = run("check --format json " + shell_quote(main));
+    INFO(check.out);
+    CHECK(check.out.find("9810") == std::string::npos);   // no K3003, no K4009
+    const CliRun ran = run("run " + shell_quote(main));
+    CHECK(ran.code == 0);
+    CHECK(ran.out.find("ended normally") != std::string::npos);
+    CHECK(ran.out.find("final position X20.000 Y5.000") != std::string::npos);
+    const CliRun formatted = run(fmt);
+    INFO(formatted.err);
+    CHECK(formatted.code == 0);
+    CHECK(formatted.out == renumbered);   // P9810 is a program number, not a label: it stays
+    CHECK(formatted.err.empty());         // compared to M30: nothing to say
+
+    write_text(dir / ".kerf.toml", "dialect = \"haas-mill\"\n");
+    const CliRun check_without = run("check " + shell_quote(main));
+    CHECK(check_without.out.find("K3003") != std::string::npos);
+    const CliRun ran_without = run("run " + shell_quote(main));
+    CHECK(ran_without.code == 1);
+    CHECK(ran_without.err.find(main.string() + ":3: error: alarm 78") != std::string::npos);
+    const CliRun formatted_without = run(fmt);
+    CHECK(formatted_without.code == 0);   // the runs agree, up to the alarm
+    CHECK(formatted_without.out == renumbered);
+    CHECK(formatted_without.err == main.string() + ":3: note: --verify compared the runs up to alarm 78 (program O9810 "
+                                                   "not found (alarm 078)); the blocks after it are not verified\n");
+    fs::remove_all(dir);
+}
+
 TEST_CASE("kerf check --fix and kerf fmt --write replace files through the one atomic writer") {
     const fs::path dir = kWork / "writer";
     const fs::path check_file = write_text(dir / "fix.nc", "O1\nT2 MO6\nM30\n");

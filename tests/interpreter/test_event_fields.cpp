@@ -143,6 +143,50 @@ TEST_CASE("a G34 thread and an inch program write lead_end and units, and the sc
     CHECK(units >= 2);
 }
 
+// A dialect that numbers an alarm itself ([alarms]; the made-up "Test NGC" table of
+// tests/dialects/test_alarms.cpp): the trace keeps kerf's number as the code and writes the
+// control's as control_alarm, which the schema takes; --verify compares it.
+TEST_CASE("an alarm the dialect numbers itself writes control_alarm, and the schema takes it") {
+    dialects::Registry registry = dialects::builtin_registry();
+    REQUIRE(registry.add_text("id = \"test-ngc\"\nname = \"Test NGC\"\nbase = \"haas-mill\"\n[alarms]\ncontrol = \"Test NGC\"\n"
+                              "program_not_found = { number = 7078, text = \"TEST PROGRAM NOT FOUND\", reference = \"test data\" }\n",
+                              "test.toml")
+                .empty());
+    const test::JsonSchema schema = test::load_schema(kSchema.string());
+    for (const char* id : {"test-ngc", "haas-mill"}) {
+        INFO(id);
+        const dialects::Dialect& d = *registry.find(id);
+        interpreter::ProgramSet programs;
+        const auto main = programs.first_program(programs.add("t.nc", "O1\nG00 X1. Y1.\nM98 P1234\nM30\n", d));
+        REQUIRE(main);
+        interpreter::VectorSink sink;
+        interpreter::run(programs, *main, d, test::plain_setup(d), sink);
+        REQUIRE(!sink.events.empty());
+        const test::Event& alarm = sink.events.back();
+        REQUIRE(alarm.kind == test::EventKind::alarm);
+        const json::object line = interpreter::event_to_json(alarm, programs, "XYZ");
+        INFO(json::serialize(line));
+        CHECK(schema.validate(line).empty());
+        CHECK(line.at("code").as_int64() == 78);
+        if (std::string(id) == "test-ngc") {
+            CHECK(line.at("control_alarm").as_int64() == 7078);
+            CHECK(std::string(line.at("text").as_string()) ==
+                  "Test NGC alarm 7078 TEST PROGRAM NOT FOUND: program O1234 not found (FANUC alarm 078)");
+        } else {
+            CHECK_FALSE(line.contains("control_alarm"));
+            CHECK(std::string(line.at("text").as_string()) == "program O1234 not found (alarm 078)");
+        }
+    }
+    test::Event a;
+    a.kind = test::EventKind::alarm;
+    a.code = 78;
+    a.control_alarm = 7078;
+    test::Event b = a;
+    b.control_alarm = 0;
+    const interpreter::CompareOptions everything{interpreter::CompareProfile::everything, 1e-9};
+    CHECK(interpreter::compare_events(a, b, everything).value_or("").find("control_alarm") == 0);
+}
+
 TEST_CASE("--verify compares every field the trace shows: a G34 thread's end lead too") {
     test::Event a;
     a.kind = test::EventKind::thread;

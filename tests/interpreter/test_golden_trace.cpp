@@ -233,6 +233,7 @@ const std::map<std::string_view, std::string_view> kRenderedFields = {
     {"spindle_running", "left out: a stopped spindle shows in the spindle event before (M05)"},
     {"center", "shown as C(...)"}, {"radius", "shown as R"}, {"tool", "shown on tool changes"},
     {"code", "shown per kind"}, {"text", "shown per kind"},
+    {"control_alarm", "left out: no reference example runs in a dialect that numbers its alarms itself ([alarms])"},
 };
 
 // --- golden files --------------------------------------------------------------------------------

@@ -395,3 +395,20 @@ TEST_CASE("the dry run stops at .kerf.toml [limits] time_limit, as kerf check's 
     REQUIRE(found.count("K4004") == 1);
     CHECK(str(found.at("K4004")->at("message")).starts_with("time limit of 0.2 s reached"));
 }
+
+TEST_CASE("diagnostics take [programs] resident and a foreign control as kerf check does (project_check_options)") {
+    // The server built its own check options and left these out: K3003 on every call of a probe
+    // macro the machine keeps in memory, and 3D-printer files read as FANUC.
+    test::TempFolder folder;
+    folder.write(".kerf.toml", "[programs]\nresident = [\"O9000-O9999\"]\n");
+    LspClient c;
+    c.initialize({}, folder.path());
+    c.open(folder.uri("main.nc"), "O0001\nM98 P9810\nM98 P7777\nG00 X0. Y0.\nM30\n");
+    const json::array calls = c.diagnostics(folder.uri("main.nc"), 1);
+    REQUIRE(codes(calls) == std::vector<std::string>{"K3003"});   // O7777 only: O9810 is resident
+    CHECK(span(by_code(calls).at("K3003")->at("range")) == "2:4-2:9");
+    c.open(folder.uri("print.gcode"), ";FLAVOR:Marlin\nM104 S200\nM140 S60\nG1 X10 Y10 F500\nM2\n");
+    const json::array printer = c.diagnostics(folder.uri("print.gcode"), 1);
+    REQUIRE(codes(printer) == std::vector<std::string>{"K2009"});   // one finding, nothing read as FANUC
+    CHECK(str(printer[0].at("message")).find("3D printer") != std::string::npos);
+}

@@ -51,6 +51,9 @@ struct Checked {
     std::shared_ptr<const lsp::Document> doc;
     analyzer::IncrementalStatic check{64};   // a checkpoint every 64 blocks: the examples are short
     std::uint64_t serial = 0;
+    const analyzer::CheckOptions* options = nullptr;   // none: the defaults
+    bool shares = false;                               // the static rules in two shares, as the server walks them
+    analyzer::IncrementalStatic second{64};
 
     // The incremental findings, and check_static's on the same version.
     std::pair<std::vector<std::string>, std::vector<std::string>> both(const std::atomic<bool>* cancel = nullptr) {
@@ -61,12 +64,21 @@ struct Checked {
         interpreter::ProgramSet programs;
         const std::uint32_t file = programs.add_parsed(doc->path().string(), doc, doc->typed(), doc->lines());
         const lsp::FileSettings& s = doc->settings();
-        const analyzer::CheckOptions options;
-        const analyzer::IncrementalStatic::Input in{programs, file, *s.dialect, s.setup, options, {}, 0, doc->edits_since(serial), cancel};
+        const analyzer::CheckOptions defaults;
+        const analyzer::CheckOptions& o = options ? *options : defaults;
+        analyzer::IncrementalStatic::Input in{programs, file, *s.dialect, s.setup, o, {}, 0, doc->edits_since(serial), cancel};
+        if (shares) in.shards = 2;
         std::optional<std::vector<analyzer::Finding>> got = check.check(in);
+        if (shares) {
+            analyzer::IncrementalStatic::Input other = in;
+            other.shard = 1;
+            std::optional<std::vector<analyzer::Finding>> more = second.check(other);
+            if (got && more) got->insert(got->end(), more->begin(), more->end());
+            if (!more) got.reset();
+        }
         serial = doc->serial();
         if (!got) return {};
-        return {shown(std::move(*got), *doc), shown(analyzer::check_static(programs, file, *s.dialect, s.setup, options), *doc)};
+        return {shown(std::move(*got), *doc), shown(analyzer::check_static(programs, file, *s.dialect, s.setup, o), *doc)};
     }
     void edit(std::uint32_t begin, std::uint32_t end, const std::string& text) {
         std::vector<std::string> problems;
@@ -106,12 +118,15 @@ std::string numbered_program(int lines, const std::string& before_end = {}) {
 }  // namespace
 
 TEST_CASE("incremental static check equals check_static after every edit, on every example and corpus file") {
+    // Both ways the server may walk: all static rules in one walk, or in two shares (two threads).
+    const bool shares = GENERATE(false, true);
     std::size_t files = 0, edits = 0, partial = 0;
     for (const auto& path : test::shared_files_or_warn("no incremental check sweep")) {
         const std::string text = test::read_text(path);
         if (text.find('\0') != std::string::npos) continue;   // the server does not parse binary files
-        INFO(path.filename().string());
+        INFO(path.filename().string() << (shares ? " (two shares)" : ""));
         Checked c;
+        c.shares = shares;
         c.doc = lsp::Document::open("file:///t.nc", "/t.nc", 1, text, settings_for(grammar::detect_dialect(text).dialect));
         auto [got, expected] = c.both();
         REQUIRE(got == expected);
@@ -164,17 +179,20 @@ TEST_CASE("incremental static check: a keystroke walks a few blocks; a changed f
     std::tie(got, expected) = c.both();
     CHECK(got == expected);
     CHECK_FALSE(c.check.walked_whole());
-    // The number of the next block (N3001): K3011 reads every label of the program, so the file is
-    // walked whole and says N3001 is on two blocks; numbering it back takes the finding away.
+    // The number of the next block (N3001): K3011 sums up every label of the program from the kept
+    // label table (a program check), so the walk stays short and the finding says N3001 is on two
+    // blocks; numbering it back takes the finding away.
     const auto k3011 = [&] { return std::count_if(got.begin(), got.end(), [](const std::string& f) { return f.starts_with("K3011"); }); };
     c.edit(line(2995), line(2995) + 5, "N3001");
     std::tie(got, expected) = c.both();
     CHECK(got == expected);
-    CHECK(c.check.walked_whole());
+    CHECK_FALSE(c.check.walked_whole());
+    CHECK(c.check.walked_blocks() <= 2 * 64 + 1);
     CHECK(k3011() == 1);
     c.edit(line(2995), line(2995) + 5, "N3000");
     std::tie(got, expected) = c.both();
     CHECK(got == expected);
+    CHECK_FALSE(c.check.walked_whole());
     CHECK(k3011() == 0);
     // Line 1995 holds N2000, the GOTO's target: renumbering it changes what the label rules say
     // (K3001 now fires at the GOTO), so the file is walked whole.
@@ -191,6 +209,66 @@ TEST_CASE("incremental static check: a keystroke walks a few blocks; a changed f
     std::tie(got, expected) = c.both();
     CHECK(got == expected);
     CHECK_FALSE(c.check.walked_whole());
+}
+
+TEST_CASE("incremental static check: CAM output whose N numbers wrap keeps short walks when labels change") {
+    // Every N number is on 50 blocks (N10..N1000 over and over): K3011's one finding names the first
+    // ten numbers and counts the rest. Edits that add, remove, renumber and duplicate labels change
+    // that finding without a whole walk (the label table is kept and mended: LabelTable::replace).
+    std::string text = "%\nO2000 (WRAP)\nG21 G17 G90\nT1 M06\nG43 H1 Z50.\n";
+    for (int i = 0; i < 5000; ++i) text += fmt::format("N{} G01 X{}.5 Y2. F100.\n", 10 + 10 * (i % 100), i % 90);
+    text += "M30\n%\n";
+    Checked c;
+    c.doc = lsp::Document::open("file:///t.nc", "/t.nc", 1, text, settings_for("fanuc-mill"));
+    auto [got, expected] = c.both();
+    REQUIRE(got == expected);
+    const auto line = [&](int n) { return static_cast<std::uint32_t>(c.doc->lines().line_start(static_cast<std::uint32_t>(n))); };
+    const auto k3011 = [&] {
+        const auto it = std::find_if(got.begin(), got.end(), [](const std::string& f) { return f.starts_with("K3011"); });
+        return it == got.end() ? std::string() : *it;
+    };
+    REQUIRE(k3011().find("and 90 more numbers") != std::string::npos);
+    // N10 → N7 on the first block: N7 is on one block; the numbers now first repeat from N20.
+    c.edit(line(5), line(5) + 3, "N7");
+    std::tie(got, expected) = c.both();
+    CHECK(got == expected);
+    CHECK_FALSE(c.check.walked_whole());
+    CHECK(k3011().find("N20, N30") != std::string::npos);
+    // A new number on a late block (N5 on line 4000), then the same number on an early one: N5 repeats.
+    c.edit(line(4000), line(4000) + 4, "N5");
+    std::tie(got, expected) = c.both();
+    CHECK(got == expected);
+    CHECK_FALSE(c.check.walked_whole());
+    c.edit(line(100), line(100) + 4, "N5");
+    std::tie(got, expected) = c.both();
+    CHECK(got == expected);
+    CHECK_FALSE(c.check.walked_whole());
+    // Several label edits between two checks, one of them a line deleted.
+    c.edit(line(2000), line(2000) + 4, "N9");
+    c.edit(line(3000), line(3001), "");
+    c.edit(line(10), line(10) + 4, "N9");
+    std::tie(got, expected) = c.both();
+    CHECK(got == expected);
+    CHECK_FALSE(c.check.walked_whole());
+}
+
+TEST_CASE("incremental static check honours resident programs and callers' arguments as check_static does") {
+    // The server passes .kerf.toml [programs] resident and the index's caller arguments: the
+    // incremental walk must see them too (it did not: K3003 on resident calls, K4001 on arguments).
+    analyzer::CheckOptions options;
+    options.resident = [](std::int64_t n) { return n >= 9000 && n <= 9999; };
+    options.caller_arguments = [](std::int64_t n) { return n == 1 ? std::vector<int>{1, 2} : std::vector<int>{}; };
+    const std::string text = "%\nO0001\n#100=#1+#2\nM98 P9810\nM98 P8000\nM99\n%\n";
+    Checked c;
+    c.options = &options;
+    c.doc = lsp::Document::open("file:///t.nc", "/t.nc", 1, text, settings_for("fanuc-mill"));
+    auto [got, expected] = c.both();
+    CHECK(got == expected);
+    const auto count = [&](std::string_view rule) {
+        return std::count_if(got.begin(), got.end(), [&](const std::string& f) { return f.starts_with(rule); });
+    };
+    CHECK(count("K3003") == 1);   // P8000 is not resident, P9810 is
+    CHECK(count("K4001") == 0);   // #1 and #2 are arguments of O0001's callers
 }
 
 TEST_CASE("incremental static check: states that differ go on to the program's end, findings pointing into an edit start over") {

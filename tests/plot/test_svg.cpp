@@ -36,8 +36,9 @@ Event arc(EventKind kind, Position start, Position end, Position center) {
     return e;
 }
 
-const plot::SvgOptions kLathe{dialects::MachineKind::lathe, true, "lathe"};
-const plot::SvgOptions kMill{dialects::MachineKind::mill, false, "mill"};
+const plot::SvgOptions kLathe{dialects::MachineKind::lathe, true, "lathe", plot::Frame::part};
+const plot::SvgOptions kMill{dialects::MachineKind::mill, false, "mill", plot::Frame::part};
+const plot::SvgOptions kMillAll{dialects::MachineKind::mill, false, "mill", plot::Frame::all};   // --frame all
 
 // The commands of the one path with this class.
 std::vector<PathCommand> path_of(const std::string& svg, const std::string& cls) {
@@ -218,11 +219,14 @@ TEST_CASE("plot: lathe X is drawn at the radius, Z to the right, with the part a
 }
 
 // A G03 semicircle from (10, 0) to (−10, 0) about the origin reaches (0, 10), above both ends; the
-// plot area must hold it, and every point of every path and marker lies inside the picture.
+// plot area must hold it, and with --frame all every point of every path and marker lies inside the
+// picture (framing the part, the rapid's start is outside: the next test case).
 TEST_CASE("plot: the view holds every point, arc extremes included") {
     const std::vector<Event> events{move(EventKind::rapid, xyz(-50, -20, 5), xyz(10, 0, 0)),
                                     arc(EventKind::arc_ccw, xyz(10, 0, 0), xyz(-10, 0, 0), xyz(0, 0, 0))};
-    const std::string svg = plot::render_svg(events, kMill);
+    // Framing the part: the arc alone, its apex Y10 included: -10..10 x 0..10 with 2 (10 %) around.
+    CHECK(attribute(elements_with(plot::render_svg(events, kMill), "class=\"frame\"")[0], "data-view") == "-12 -2 12 12");
+    const std::string svg = plot::render_svg(events, kMillAll);
     const auto root = elements_with(svg, "<svg ");
     REQUIRE(root.size() == 1);
     CHECK(attribute(root[0], "viewBox") == "0 0 " + attribute(root[0], "width") + " " + attribute(root[0], "height"));
@@ -252,7 +256,7 @@ TEST_CASE("plot: the view holds every point, arc extremes included") {
 
 // A 100 mm feed along X gives the pixels per mm; the scale bar's length is its label times that,
 // and the label is a 1-2-5 number.
-TEST_CASE("plot: scale bar of a round length, legend with every stroke and marker") {
+TEST_CASE("plot: scale bar of a round length, legend of what the picture shows") {
     const std::vector<Event> events{move(EventKind::linear, xyz(0, 0, 0), xyz(100, 0, 0))};
     const std::string svg = plot::render_svg(events, kMill);
     const auto f = path_of(svg, "feed");
@@ -271,9 +275,10 @@ TEST_CASE("plot: scale bar of a round length, legend with every stroke and marke
     CHECK((mantissa == Approx(1) || mantissa == Approx(2) || mantissa == Approx(5)));
     const std::size_t legend = svg.find("<g class=\"legend\">");
     REQUIRE(legend != std::string::npos);
-    for (const char* text : {">rapid<", ">feed (lines, arcs)<", ">thread<", ">start<", ">end<"})
-        CHECK(svg.find(text, legend) != std::string::npos);
-    CHECK(svg.find(">alarm<") == std::string::npos);   // only when there is one
+    // One feed line: the legend says feed, start and end, nothing it does not show.
+    for (const char* text : {">feed<", ">start<", ">end<"}) CHECK(svg.find(text, legend) != std::string::npos);
+    for (const char* text : {">rapid<", ">feed (lines, arcs)<", ">thread<", ">alarm<", ">rapid leaving the frame<"})
+        CHECK(svg.find(text) == std::string::npos);
     CHECK(svg.find(">mill</text>") != std::string::npos);   // the title
     CHECK(svg.find("X \u2192") != std::string::npos);
     CHECK(svg.find("\u2191 Y") != std::string::npos);
@@ -285,7 +290,7 @@ TEST_CASE("plot: start and end markers sit on the first and last points; alarms 
     alarm.end = xyz(5, 5, 0);
     const std::vector<Event> events{move(EventKind::rapid, xyz(0, 0, 0), xyz(10, 0, 0)),
                                     move(EventKind::linear, xyz(10, 0, 0), xyz(10, 10, 0)), alarm};
-    const std::string svg = plot::render_svg(events, kMill);
+    const std::string svg = plot::render_svg(events, kMillAll);   // the start X0 Y0 is outside the part's frame
     const auto r = path_of(svg, "rapid");
     const auto f = path_of(svg, "feed");
     const auto start = elements_with(svg, "<circle class=\"start\"");
@@ -340,4 +345,73 @@ TEST_CASE("plot: an inch program gets an inch scale bar") {
     const std::string mm = plot::render_svg({e}, kMill);
     CHECK(mm.find(" mm</text>") != std::string::npos);
     CHECK(mm.find("feed 1.0 mm") != std::string::npos);
+}
+
+// The legend's entries follow the strokes drawn (the issue: "thread" was listed for every program).
+TEST_CASE("plot: the legend lists rapid, feed, arcs and thread only when the picture has them") {
+    const auto legend_of = [](const std::vector<Event>& events) {
+        const std::string svg = plot::render_svg(events, kMill);
+        const std::size_t at = svg.find("<g class=\"legend\">");
+        REQUIRE(at != std::string::npos);
+        return svg.substr(at);
+    };
+    const std::string lines = legend_of({move(EventKind::rapid, xyz(0, 0, 0), xyz(10, 0, 0)),
+                                         move(EventKind::linear, xyz(10, 0, 0), xyz(10, 10, 0))});
+    CHECK(lines.find(">rapid<") != std::string::npos);
+    CHECK(lines.find(">feed<") != std::string::npos);
+    CHECK(lines.find(">thread<") == std::string::npos);
+    const std::string arcs = legend_of({arc(EventKind::arc_ccw, xyz(10, 0, 0), xyz(0, 10, 0), xyz(0, 0, 0))});
+    CHECK(arcs.find(">feed (lines, arcs)<") != std::string::npos);
+    CHECK(arcs.find(">rapid<") == std::string::npos);
+    const std::string thread = legend_of({move(EventKind::linear, xyz(0, 0, 0), xyz(10, 0, 0)),
+                                          move(EventKind::thread, xyz(10, 0, 0), xyz(10, 10, 0))});
+    CHECK(thread.find(">thread<") != std::string::npos);
+}
+
+// A mill path: a rapid from X200 Y150 (far from the part) to X0 Y0, a 10 x 10 square of feed moves,
+// a rapid back to X200 Y150. Framing the part (default) by hand: the cuts span 0..10 on both axes,
+// 10 % margin = 1 on every side: -1..11; the scale min(900 / 12, 640 / 12) = 53.333 px/mm makes the
+// plot 640 x 640 px. The rapid back leaves the frame at X11: t = 1 / 190 along it from X10 Y10
+// (direction (190, 140)), Y = 10 + 140 / 190 = 10.737, i.e. x = 76 + 12 x 53.333 = 716 px,
+// y = 70 + (11 - 10.737) x 53.333 = 84.035 px. Framing all: X0..200, Y0..150, 5 % of 200 = 10:
+// -10..210, -10..160.
+TEST_CASE("plot: the picture frames the cutting moves; rapids leaving it are clipped with an arrow") {
+    const std::vector<Event> events{move(EventKind::rapid, xyz(200, 150, 0), xyz(0, 0, 0)),
+                                    move(EventKind::linear, xyz(0, 0, 0), xyz(10, 0, 0)),
+                                    move(EventKind::linear, xyz(10, 0, 0), xyz(10, 10, 0)),
+                                    move(EventKind::linear, xyz(10, 10, 0), xyz(0, 10, 0)),
+                                    move(EventKind::linear, xyz(0, 10, 0), xyz(0, 0, 0)),
+                                    move(EventKind::rapid, xyz(0, 0, 0), xyz(10, 10, 0)),
+                                    move(EventKind::rapid, xyz(10, 10, 0), xyz(200, 150, 0))};
+    const std::string svg = plot::render_svg(events, kMill);
+    const auto frame = elements_with(svg, "class=\"frame\"");
+    REQUIRE(frame.size() == 1);
+    CHECK(attribute(frame[0], "data-view") == "-1 -1 11 11");
+    CHECK(attribute(frame[0], "width") == "640");
+    CHECK(attribute(frame[0], "height") == "640");
+    const auto arrows = elements_with(svg, "<path class=\"leaves\"");
+    REQUIRE(arrows.size() == 2);   // the rapid back, and the legend's sample
+    const auto tip = path_commands(attribute(arrows[0], "d"));
+    REQUIRE(!tip.empty());
+    CHECK(tip[0].args[0] == Approx(716));
+    CHECK(tip[0].args[1] == Approx(84.035).margin(1e-3));
+    CHECK(svg.find("<title>rapid to X200 Y150</title>") != std::string::npos);
+    CHECK(svg.find("<g clip-path=\"url(#plot-area)\">") != std::string::npos);
+    // The start (X200 Y150) and the end (the same) are outside: neither marker nor legend entry.
+    CHECK(svg.find("class=\"start\"") == std::string::npos);
+    CHECK(svg.find("class=\"end\"") == std::string::npos);
+
+    plot::SvgOptions all = kMill;
+    all.frame = plot::Frame::all;
+    const std::string whole = plot::render_svg(events, all);
+    const auto whole_frame = elements_with(whole, "class=\"frame\"");
+    REQUIRE(whole_frame.size() == 1);
+    CHECK(attribute(whole_frame[0], "data-view") == "-10 -10 210 160");
+    CHECK(whole.find("clip-path") == std::string::npos);
+    CHECK(whole.find("class=\"leaves\"") == std::string::npos);
+    CHECK(elements_with(whole, "<circle class=\"start\"").size() == 2);   // the marker and its legend sample
+
+    // Without a cutting move the picture frames the whole path.
+    const std::string rapids = plot::render_svg({events.front()}, kMill);
+    CHECK(attribute(elements_with(rapids, "class=\"frame\"")[0], "data-view") == "-10 -10 210 160");
 }

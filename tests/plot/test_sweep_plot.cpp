@@ -42,7 +42,7 @@ TEST_CASE("kerf plot draws every reference example and corpus file as a well-for
         if (!run) continue;
         const auto& [d, programs, setup, r, events] = *run;
         // A neutral title: file names could contain "inf".
-        const std::string svg = plot::render_svg(events, {d->machine, setup.diameter_x, "sweep"});
+        const std::string svg = plot::render_svg(events, {d->machine, setup.diameter_x, "sweep", plot::Frame::part});
         INFO(path.string());
         CHECK(svg.rfind("<svg", 0) == 0);
         CHECK(svg.substr(svg.find_last_not_of(" \n") - 5, 6) == "</svg>");

@@ -28,7 +28,7 @@ Event move(EventKind kind, Position start, Position end) {
     return e;
 }
 
-const plot::ViewOptions kMill{dialects::MachineKind::mill, false};
+const plot::ViewOptions kMill{dialects::MachineKind::mill, false, plot::Frame::part};
 
 // The distance of point p from the segment a-b.
 double distance_to_segment(plot::Point p, plot::Point a, plot::Point b) {
