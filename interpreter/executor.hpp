@@ -204,11 +204,11 @@ enum class Outcome : std::uint8_t {
 // a path that answer false once the run stopped (cycle_arc, run_comp_moves, the cycles::Context
 // moves). Macro B conditions are a value or an error (std::optional<bool>, macro/evaluate.hpp).
 
-// An alarm as a value: where, with the tool where, what. Reading blocks ahead (const functions over a
-// copy of the machine state) returns it; the live block that asked raises it (Executor::raise).
+// An alarm as a value: where, with the tool where, what. Reading a block (const functions over a
+// MachineState) returns it; the live block that asked raises it (Executor::raise).
 struct Alarm {
     SourceRef where;
-    Position at{};   // the position of the state it was found in (the event's start and end)
+    Position at{};   // where the reading stood (the event's start and end)
     int number = 0;
     std::string text;
 };
