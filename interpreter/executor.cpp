@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <algorithm>
 #include <cmath>
 
 #include "dialects/functions.hpp"
@@ -46,17 +45,9 @@ const char* to_string(EventKind k) {
 Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const Setup& setup, EventSink& sink,
                    const RunOptions& options)
     : programs_(programs), dialect_(dialect), setup_(setup), sink_(sink), options_(options),
-      guard_(setup.step_limit, setup.move_limit, options.time_limit), work_offsets_(setup.work_offsets),
-      additional_offsets_(setup.additional_work_offsets), external_offset_(setup.external_offset), work_shift_(setup.work_shift),
-      tools_(setup.tools) {
-    // Power-on state: the codes marked as defaults in the dialect table (semantics.md §1.3).
-    modal_.assign(dialect_.groups().size(), nullptr);
-    for (const dialects::CodeInfo& c : dialect_.codes())
-        if (c.letter == 'G' && c.power_on_default && c.group != "00") modal_[c.group_index] = &c;
-    // The machine's power-on switches over the table (machine/SCHEMA.md "Power-on state").
-    for (const dialects::FunctionId function : setup_.power_on)
-        for (const dialects::CodeInfo* c : dialect_.codes_with_function(function))
-            if (c->letter == 'G' && !c->group.empty() && c->group != "00") modal_[c->group_index] = c;
+      guard_(setup.step_limit, setup.move_limit, options.time_limit) {
+    memory_.additional_offsets = setup.additional_work_offsets;
+    memory_.tools = setup.tools;
     update_flags();
     for (const SoftLimit& limit : setup_.soft_limits) any_soft_limit_ |= limit.min.has_value() || limit.max.has_value();
     for (char letter = 'A'; letter <= 'Z'; ++letter) {
@@ -69,10 +60,10 @@ Executor::Executor(ProgramSet& programs, const dialects::Dialect& dialect, const
 }
 
 void Executor::update_flags() {
-    const bool was_inch = flags_.inch;
+    const bool was_inch = state_.flags.inch;
     ModalFlags f;
     f.plane = dialect_.machine == dialects::MachineKind::lathe ? motion::Plane::zx : motion::Plane::xy;
-    for (const dialects::CodeInfo* code : modal_) {
+    for (const dialects::CodeInfo* code : state_.modal) {
         if (!code) continue;
         const std::uint32_t c = code_class_of(*code);
         const bool motion_group = code->has(dialects::traits::motion_group);
@@ -92,19 +83,19 @@ void Executor::update_flags() {
             default: break;
         }
     }
-    flags_ = f;
-    if (was_inch != flags_.inch) {
+    state_.flags = f;
+    if (was_inch != state_.flags.inch) {
         // G20/G21 switch: the same place in the other unit (positions are kept as programmed).
-        const double factor = flags_.inch ? 1.0 / 25.4 : 25.4;
+        const double factor = state_.flags.inch ? 1.0 / 25.4 : 25.4;
         for (std::size_t a = 0; a < 3; ++a) {
-            position_[a] *= factor;
-            if (intermediate_[a]) *intermediate_[a] *= factor;
+            state_.position[a] *= factor;
+            if (state_.intermediate[a]) *state_.intermediate[a] *= factor;
         }
     }
 }
 
 bool Executor::modal_active(dialects::FunctionId function) const {
-    for (const dialects::CodeInfo* code : modal_)
+    for (const dialects::CodeInfo* code : state_.modal)
         if (code && code->function == function) return true;
     return false;
 }
@@ -123,7 +114,6 @@ std::string Executor::block_comment(const ast::BlockView& view) const {
 ast::Program Executor::program_of(const Frame& f) const { return file_of(f).program(f.program.program); }
 
 SourceRef Executor::source(const Frame& f, const ast::BlockView& view) const {
-    if (&view == view_) return scan_.source;   // the block being executed: computed once
     const LoadedFile& file = file_of(f);
     const ast::Range r = file.file_range(view);
     const bool same_file = line_hint_file_ == f.program.file;
@@ -133,19 +123,19 @@ SourceRef Executor::source(const Frame& f, const ast::BlockView& view) const {
     return {f.program.file, r, line + 1};
 }
 
-bool Executor::has_function(const ast::BlockView& view, dialects::FunctionId function) const {
-    for (const ast::CodeRef& c : scan_.g)
+bool Executor::has_function(const BlockContext& ctx, dialects::FunctionId function) const {
+    for (const ast::CodeRef& c : ctx.scan.g)
         if (c.info && c.info->function == function) return true;
-    for (const ast::CodeRef& c : scan_.m)
+    for (const ast::CodeRef& c : ctx.scan.m)
         if (c.info && c.info->function == function) return true;
     return false;
 }
 
-Event Executor::event_at(EventKind kind, const Frame& f, const ast::BlockView& view) const {
+Event Executor::event_at(EventKind kind, const SourceRef& where) const {
     Event e;
     e.kind = kind;
-    e.source = source(f, view);
-    e.start = e.end = position_;
+    e.source = where;
+    e.start = e.end = state_.position;
     return e;
 }
 
@@ -156,28 +146,28 @@ void Executor::emit(Event&& e, const Position& machine_end) {
         // The move over the limit is not made: the alarm stands where the tool is.
         if (auto limit = guard_.move()) return limit_alarm(e.source, e.start, std::move(*limit));
     }
-    e.tool = e.kind == EventKind::tool_change ? e.tool : tool_;
-    e.inch = flags_.inch;
+    e.tool = e.kind == EventKind::tool_change ? e.tool : state_.tool;
+    e.inch = state_.flags.inch;
     e.machine_end = machine_end;
-    if (motion) machine_at_ = e.machine_end;
+    if (motion) state_.machine_at = e.machine_end;
     if (e.kind == EventKind::alarm) result_.alarms.push_back(e);
     result_.total_time_s += e.time_s;
     if (e.time_s > 0) {
-        if (timed_tool_ != tool_ || !tool_time_) {
-            tool_time_ = &result_.time_per_tool_s[tool_];
-            timed_tool_ = tool_;
+        if (timed_tool_ != state_.tool || !tool_time_) {
+            tool_time_ = &result_.time_per_tool_s[state_.tool];
+            timed_tool_ = state_.tool;
         }
         *tool_time_ += e.time_s;
     }
     sink_.on_event(e);
     if (stopped_ || e.kind == EventKind::alarm) return;
-    if (auto limit = guard_.tick()) limit_alarm(e.source, position_, std::move(*limit));
+    if (auto limit = guard_.tick()) limit_alarm(e.source, state_.position, std::move(*limit));
 }
 
 Position Executor::machine_position_of(const Position& work) const {
-    const Position offset = machine_offset();
+    const Position offset = machine_offset(state_);
     Position m{};
-    for (std::size_t a = 0; a < kAxisCount; ++a) m[a] = work[a] * axis_scale(a) + offset[a];
+    for (std::size_t a = 0; a < kAxisCount; ++a) m[a] = work[a] * state_.axis_scale(a) + offset[a];
     return m;
 }
 
@@ -192,18 +182,23 @@ void Executor::limit_alarm(const SourceRef& where, const Position& at, LimitAlar
     stopped_ = true;
 }
 
-bool Executor::count_idle_move(const Frame& f, const ast::BlockView& view) {
-    if (auto limit = guard_.move()) limit_alarm(source(f, view), position_, std::move(*limit));
+bool Executor::count_idle_move(const BlockContext& ctx) {
+    if (auto limit = guard_.move()) limit_alarm(ctx.source(), state_.position, std::move(*limit));
     return !stopped_;
+}
+
+void Executor::alarm(const SourceRef& where, int number, std::string text) {
+    raise(Alarm{where, state_.position, number, std::move(text)});
 }
 
 // The number stays kerf's (the alarm's identity); a dialect that numbers the alarm itself
 // ([alarms], Haas NGC) gives the number and text the user reads (dialects/dialect.hpp AlarmTable).
-void Executor::alarm(const Frame& f, const ast::BlockView& view, int number, std::string text) {
-    Event e = event_at(EventKind::alarm, f, view);
-    e.code = number;
-    if (const std::optional<dialects::AlarmTable::Shown> shown = dialect_.alarms.shown(number)) e.control_alarm = shown->number;
-    e.text = dialect_.alarms.message(number, text);
+void Executor::raise(Alarm alarm) {
+    Event e = event_at(EventKind::alarm, alarm.where);
+    e.start = e.end = alarm.at;
+    e.code = alarm.number;
+    if (const std::optional<dialects::AlarmTable::Shown> shown = dialect_.alarms.shown(alarm.number)) e.control_alarm = shown->number;
+    e.text = dialect_.alarms.message(alarm.number, alarm.text);
     emit(std::move(e));
     stopped_ = true;
 }
@@ -215,10 +210,10 @@ void Executor::pop_frame() {
 
 void Executor::change_offsets(const std::function<void()>& change) {
     // The tool does not move when an offset changes: its work coordinates do (semantics.md §2.7).
-    const Position before = machine_offset();
+    const Position before = machine_offset(state_);
     change();
-    const Position after = machine_offset();
-    for (std::size_t a = 0; a < kAxisCount; ++a) position_[a] += (before[a] - after[a]) / axis_scale(a);
+    const Position after = machine_offset(state_);
+    for (std::size_t a = 0; a < kAxisCount; ++a) state_.position[a] += (before[a] - after[a]) / state_.axis_scale(a);
 }
 
 // --- the loop ------------------------------------------------------------------------------------
@@ -230,10 +225,10 @@ RunResult Executor::run(ProgramRef main) {
     frames_.push_back(first);
     for (const auto& [number, value] : options_.preset) variables_.write(number, macro::Value::of(value));
     // The machine has been homed: the program starts at reference point 1 (semantics.md §2.8).
-    const Position offset = machine_offset();
+    const Position offset = machine_offset(state_);
     for (std::size_t a = 0; a < kAxisCount; ++a)
-        position_[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / axis_scale(a) : 0.0;
-    machine_at_ = machine_position_of(position_);
+        state_.position[a] = setup_.start_at_reference ? (setup_.reference_points[0][a] - offset[a]) / state_.axis_scale(a) : 0.0;
+    state_.machine_at = machine_position_of(state_.position);
     while (!frames_.empty() && !stopped_) {
         Frame& f = frames_.back();
         if (!file_of(f).in_program(f.program.program, f.block)) {
@@ -251,9 +246,8 @@ RunResult Executor::run(ProgramRef main) {
         }
         if (auto limit = guard_.block(++result_.blocks)) {
             const ast::BlockView view = file_of(f).block(f.block);
-            view_ = nullptr;
             // check3: kerf's own numbers, so K4004 sees only these (events.hpp kerf_alarm)
-            alarm(f, view, limit->number, std::move(limit->text));
+            alarm(source(f, view), limit->number, std::move(limit->text));
             break;
         }
         const std::uint32_t file = f.program.file, block = f.block;
@@ -263,8 +257,8 @@ RunResult Executor::run(ProgramRef main) {
             break;
         }
     }
-    result_.final_position = position_;
-    result_.inch = flags_.inch;
+    result_.final_position = state_.position;
+    result_.inch = state_.flags.inch;
     return result_;
 }
 
@@ -282,81 +276,81 @@ void Executor::execute_block(Frame& frame) {
     const ast::Block& block = view.block();
     if (block.kind != ast::BlockKind::code) return;
     if (block.has(ast::block_flags::deleted) && options_.block_delete) return;
-    view_ = nullptr;   // scan_block computes the source of this block, not the last one's
-    scan_.block = index;
-    scan_block(frame, view);
-    view_ = &view;
+    BlockScan& scan = scan_buffer_;
+    scan_block(frame, view, scan);
+    scan.block = index;
+    BlockWords& words = words_buffer_;
+    words.clear();
+    const BlockContext ctx{frame, view, scan, words};
     if (block.has(ast::block_flags::has_error)) {
         if (!options_.lenient) {
-            alarm(frame, view, kerf_alarm::syntax_error, "the block has syntax errors (see the diagnostics of kerf parse)");
+            alarm(ctx, kerf_alarm::syntax_error, "the block has syntax errors (see the diagnostics of kerf parse)");
             return;
         }
-        Event e = event_at(EventKind::message, frame, view);
+        Event e = event_at(EventKind::message, ctx);
         e.text = "block with syntax errors run without its defective words (lenient)";
         emit(e);
     }
-    view_ = &view;
-    frame_ = &frame;
     const std::size_t depth = frames_.size();
-    if (!execute_statements(frame, view)) return;
+    if (execute_statements(frame, ctx) != Outcome::not_mine) return;   // a jump, a loop, a call, an alarm
     if (frames_.size() != depth || stopped_) return;   // a call or an alarm
-    if (const auto call = scan_.macro_call ? view.macro_call() : std::nullopt; call && call->modal) {
+    if (const auto call = scan.macro_call ? view.macro_call() : std::nullopt; call && call->modal) {
         // G66 P L args: remembers the call; its words are arguments, not moves (dialects.md §3.7).
-        if (const auto arguments = macro_arguments(frame, view, *call)) {
-            if (!call->program) alarm(frame, view, 76, "G66 without a program number P (alarm 076)");
-            else modal_call_ = ModalCall{*call->program, call->repeats, *arguments};
+        if (const auto arguments = macro_arguments(ctx, *call)) {
+            if (!call->program) alarm(ctx, 76, "G66 without a program number P (alarm 076)");
+            else state_.modal_call = ModalCall{*call->program, call->repeats, *arguments};
         }
         return;
     }
-    BlockWords& words = block_words_;
-    words.clear();
-    if (!evaluate_words(view, words)) return;
-    const SourceRef where = source(frame, view);
-    const bool moved = apply_block_words(frame, view, words);
+    if (!evaluate_words(ctx, words)) return;
+    const SourceRef where = ctx.source();
+    const bool moved = apply_block_words(frame, ctx) == Outcome::moved;
     if (options_.emit_state && !stopped_) emit_state(where);
-    if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(true));
+    if (options_.after_block && !stopped_) options_.after_block(where, variables_, macro_options(state_, true));
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
-    if (moved && modal_call_ && !stopped_ && frames_.size() == depth && !frame.modal_macro)
-        push_macro_frame(frame, view, modal_call_->program, modal_call_->repeats, modal_call_->arguments, true);
+    if (moved && state_.modal_call && !stopped_ && frames_.size() == depth && !frame.modal_macro)
+        push_macro_frame(ctx, state_.modal_call->program, state_.modal_call->repeats, state_.modal_call->arguments, true);
 }
 
-// Steps 2-9 of semantics.md §1.2 for the evaluated words; true when the tool moved.
-bool Executor::apply_block_words(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
-    remember_words(view, words);
-    apply_feed_speed_tool(view, words);
-    if (scan_.classes & dialects::traits::not_modelled) note_not_modelled(view, words);
-    apply_modal_codes(view);
+// Steps 2-9 of semantics.md §1.2 for the evaluated words.
+Outcome Executor::apply_block_words(Frame& frame, const BlockContext& ctx) {
+    remember_words(ctx);
+    apply_feed_speed_tool(ctx);
+    if (ctx.scan.classes & dialects::traits::not_modelled) note_not_modelled(ctx);
+    apply_modal_codes(ctx);
     // M codes that act before motion (M03, M08, clamps ...) start the spindle for the block's own
     // cut: `G99 G01 Z-5. F0.2 S800 M03` cuts with the spindle turning (semantics.md §1.2 step 3).
     // They run after the block's modal codes (step 4) so that `G96 S200 M03` starts at the surface
     // speed: nothing an M code of step 3 does depends on the other modes.
-    apply_m_codes(frame, view, words, MPhase::before_motion);
-    if (stopped_) return false;
-    if ((scan_.classes & kLengthCompCode) || length_sign_ != 0) apply_length_offset(view, words);   // [length offsets]
-    if (pending_length_event_ || length_applied_mm_ != length_mm_) take_up_length_offset(view, words);
-    if (scan_.classes & kCornerSlowdownCode) apply_corner_slowdown(view, words);   // [seed 004 G28/G29]
+    apply_m_codes(frame, ctx, MPhase::before_motion);
+    if (stopped_) return Outcome::stopped;
+    const std::uint32_t classes = ctx.scan.classes;
+    if ((classes & kLengthCompCode) || state_.length_sign != 0) apply_length_offset(ctx);   // [length offsets]
+    if (state_.pending_length_event || state_.length_applied_mm != state_.length_mm) take_up_length_offset_with_z(ctx);
+    if (classes & kCornerSlowdownCode) apply_corner_slowdown(ctx);   // [seed 004 G28/G29]
     // [transforms] G15/G16, G50/G51, G50.1/G51.1 (executor_transforms.cpp): G51/G51.1 words are centres, no motion.
     // A block that sets a frame (G10, G50/G92 X Z, G52, G68, G51, G51.1) does not move; its M
     // codes still run (G68 X0 Y0 R45 M08 turns the coolant on).
-    const bool frame_only = ((scan_.classes & kProgramTransformCode) && !apply_program_transforms(view, words)) ||
-                            !apply_coordinate_operations(view, words);
-    if (stopped_) return false;
-    const bool moved = !frame_only && apply_motion(view, words);
-    if (stopped_) return moved;
-    apply_dwell(view, words);
-    apply_m_codes(frame, view, words, MPhase::after_motion);   // may end the program: `frame` is gone after M30
-    return moved;
+    const bool frame_only = ((classes & kProgramTransformCode) && apply_program_transforms(ctx) != Outcome::not_mine) ||
+                            apply_coordinate_operations(ctx) != Outcome::not_mine;
+    if (stopped_) return Outcome::stopped;
+    const Outcome motion = frame_only ? Outcome::done : apply_motion(ctx);
+    if (stopped_) return Outcome::stopped;
+    if (classes & kOneShotCode) apply_dwell(ctx);   // G04 is group 00
+    apply_m_codes(frame, ctx, MPhase::after_motion);   // may end the program: `frame` is gone after M30
+    return unless_stopped(motion);
 }
 
 // A code whose motion the dry run does not reproduce (traits::not_modelled: G31 skip, G36/G37
 // automatic tool measurement, G39 corner arcs, G68/G69 double-turret mirror, G30.1, G50.2/G51.2
 // polygon turning, G60, ADV400 G74 homing) is said, never quietly run as something else: a
 // warning event the analyzer reports as K5009, saying what the trace does instead.
-void Executor::note_not_modelled(const ast::BlockView& view, const BlockWords& words) {
+void Executor::note_not_modelled(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const bool axis_words = (words.words.mask() & axis_letters_) != 0 || words.incremental.mask() != 0;
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || !c.info->has(dialects::traits::not_modelled)) continue;
-        Event e = event_at(EventKind::message, *frame_, view);
+        Event e = event_at(EventKind::message, ctx);
         e.code = kerf_warning::not_modelled;
         const std::string what = c.info->function == fn::skip_function
                                      ? "the move runs to its end point (a dry run has no skip signal)"
@@ -367,45 +361,45 @@ void Executor::note_not_modelled(const ast::BlockView& view, const BlockWords& w
     }
 }
 
-void Executor::scan_block(const Frame& frame, const ast::BlockView& view) {
-    view.collect_codes(scan_.g, scan_.m);
-    scan_.data_letters = 0;
-    scan_.macro_call = false;
-    scan_.classes = 0;
-    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+void Executor::scan_block(const Frame& frame, const ast::BlockView& view, BlockScan& scan) const {
+    view.collect_codes(scan.g, scan.m);
+    scan.data_letters = 0;
+    scan.macro_call = false;
+    scan.classes = 0;
+    for (const std::vector<ast::CodeRef>* codes : {&scan.g, &scan.m})
         for (const ast::CodeRef& c : *codes) {
             if (!c.info) continue;
-            scan_.classes |= code_class_of(*c.info);
-            scan_.data_letters |= c.info->parameter_mask;
-            scan_.macro_call |= c.info->has(dialects::traits::takes_arguments);
+            scan.classes |= code_class_of(*c.info);
+            scan.data_letters |= c.info->parameter_mask;
+            scan.macro_call |= c.info->has(dialects::traits::takes_arguments);
         }
-    scan_.statements = scan_.comma_words = scan_.direct_drawing = false;
-    scan_.sequence.reset();
+    scan.statements = scan.comma_words = scan.direct_drawing = false;
+    scan.sequence.reset();
     const ast::SyntaxTree& tree = view.tree();
     for (const ast::Token& t : view.tokens()) {
-        if (t.kind == ast::TokenKind::word && t.letter == 'N' && t.is_number() && !scan_.sequence)
-            scan_.sequence = tree.number_value(t);
-        scan_.statements |= t.kind == ast::TokenKind::statement;
-        scan_.comma_words |= t.kind == ast::TokenKind::comma_word;
-        scan_.direct_drawing |= t.kind == ast::TokenKind::word && t.role() == ast::Role::direct_drawing;
+        if (t.kind == ast::TokenKind::word && t.letter == 'N' && t.is_number() && !scan.sequence)
+            scan.sequence = tree.number_value(t);
+        scan.statements |= t.kind == ast::TokenKind::statement;
+        scan.comma_words |= t.kind == ast::TokenKind::comma_word;
+        scan.direct_drawing |= t.kind == ast::TokenKind::word && t.role() == ast::Role::direct_drawing;
     }
-    scan_.source = source(frame, view);
+    scan.source = source(frame, view);
 }
 
 void Executor::emit_state(const SourceRef& where) {
     Event e;
     e.kind = EventKind::state;
     e.source = where;
-    e.start = e.end = position_;
+    e.start = e.end = state_.position;
     // Structured (issue 13): the modal codes in `text`, one per group; F, S and T in fields of their own.
     std::string text;
-    for (const dialects::CodeInfo* code : modal_)
+    for (const dialects::CodeInfo* code : state_.modal)
         if (code) text += (text.empty() ? "" : " ") + code->spelling;
     e.text = std::move(text);
-    e.feed = feed_;
-    e.spindle_rpm = flags_.css ? css_ : spindle_rpm_;   // the S in force: rpm, or the surface speed under G96
-    e.tool = tool_;
-    e.code = tool_offset_;
+    e.feed = state_.feed;
+    e.spindle_rpm = state_.flags.css ? state_.css : state_.spindle_rpm;   // the S in force: rpm, or the surface speed under G96
+    e.tool = state_.tool;
+    e.code = state_.tool_offset;
     emit(std::move(e));
 }
 

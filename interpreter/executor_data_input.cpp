@@ -35,35 +35,36 @@ void write_axes(Position& reg, const BlockWords& words, const dialects::LexicalR
 
 }  // namespace
 
-void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& words) {
+void Executor::apply_data_input(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const auto* p = words.get('P');
     const auto* l = words.get('L');
     // Registers are kept in mm (degrees on rotary axes): a G20 program writes inches.
     const auto value_of = [this](const BlockWords::Word& w, char letter, std::size_t axis) {
-        return axis_value(w, kAxisLetters[axis]) * axis_scale(axis);
+        return axis_value(state_, w, kAxisLetters[axis]) * state_.axis_scale(axis);
     };
     const dialects::LexicalRules& rules = dialect_.lexical;
-    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+    Event e = event_at(EventKind::coordinate_change, ctx);
     if (!p) {
-        alarm(*frame_, view, 10, "G10 without P: which register? (alarm 010)");
+        alarm(ctx, 10, "G10 without P: which register? (alarm 010)");
         return;
     }
     const int n = static_cast<int>(std::lround(p->value));
     if (l && std::lround(l->value) == 2) {
         if (n < 0 || n > 6) {
-            alarm(*frame_, view, 10, fmt::format("G10 L2 P{}: P must be 0 (external) to 6 (G59)", n));
+            alarm(ctx, 10, fmt::format("G10 L2 P{}: P must be 0 (external) to 6 (G59)", n));
             return;
         }
         change_offsets([&] {
-            Position& reg = n == 0 ? external_offset_ : work_offsets_[static_cast<std::size_t>(n - 1)];
-            write_axes(reg, words, rules, flags_.incremental, value_of);
+            Position& reg = n == 0 ? state_.external_offset : state_.work_offsets[static_cast<std::size_t>(n - 1)];
+            write_axes(reg, words, rules, state_.flags.incremental, value_of);
         });
         e.text = n == 0 ? "external work offset" : fmt::format("work offset G{}", 53 + n);
     } else if (l && std::lround(l->value) == 20) {
         // G10 L20 Pn: the additional work offset of G54.1 Pn ([FANUC]); G91 adds.
-        const auto number = additional_number(view, p ? std::optional<double>(p->value) : std::nullopt);
+        const auto number = additional_number(ctx, p ? std::optional<double>(p->value) : std::nullopt);
         if (!number) return;
-        change_offsets([&] { write_axes(additional_offsets_[*number], words, rules, flags_.incremental, value_of); });
+        change_offsets([&] { write_axes(memory_.additional_offsets[*number], words, rules, state_.flags.incremental, value_of); });
         e.text = fmt::format("work offset G54.1 P{}", *number);
     } else if (l || dialect_.machine != dialects::MachineKind::lathe) {
         const int kind = l ? static_cast<int>(std::lround(l->value)) : 0;   // 0 = memory A
@@ -71,37 +72,37 @@ void Executor::apply_data_input(const ast::BlockView& view, const BlockWords& wo
         if (!r) return;   // nothing to write
         if (n < 1 || n > setup_.tool_offset_count) {
             // Checked where it is written: #11299 would be alarm 115 later on a 64-offset machine.
-            alarm(*frame_, view, alarms::offset_number,
+            alarm(ctx, alarms::offset_number,
                   fmt::format("G10 P{}: no tool offset {} on this machine (1..{}, tool_offset_count; alarm 030)", n, n,
                               setup_.tool_offset_count));
             return;
         }
-        ToolOffset& t = tools_[n];
-        const double v = axis_value(*r, 'R') * unit_scale();
-        auto set = [&](double& reg) { reg = flags_.incremental ? reg + v : v; };
+        ToolOffset& t = memory_.tools[n];
+        const double v = axis_value(state_, *r, 'R') * state_.unit_scale();
+        auto set = [&](double& reg) { reg = state_.flags.incremental ? reg + v : v; };
         if (kind == 0 || kind == 1 || kind == 10) set(t.length);
         if (kind == 0 || kind == 12) set(t.radius);
         if (kind == 11) set(t.length_wear);
         if (kind == 13) set(t.radius_wear);
         e.text = fmt::format("tool offset {}", n);
     } else if (n == 0) {
-        change_offsets([&] { write_axes(work_shift_, words, rules, false, value_of); });
+        change_offsets([&] { write_axes(state_.work_shift, words, rules, false, value_of); });
         e.text = "work shift";
     } else {
         const bool geometry = n > kGeometryBase;
         const int number = geometry ? n - kGeometryBase : n;
         if (number < 1 || number > setup_.tool_offset_count) {
-            alarm(*frame_, view, 10, fmt::format("G10 P{}: no tool offset {} (1..{})", n, number, setup_.tool_offset_count));
+            alarm(ctx, 10, fmt::format("G10 P{}: no tool offset {} (1..{})", n, number, setup_.tool_offset_count));
             return;
         }
         // The active offset changes the machine position, as a T word does (no change_offsets).
-        ToolOffset& t = tools_[number];
+        ToolOffset& t = memory_.tools[number];
         write_axes(geometry ? t.geometry : t.wear, words, rules, false, value_of);
-        if (const auto* r = words.get('R')) (geometry ? t.nose_radius : t.nose_radius_wear) = axis_value(*r, 'R') * unit_scale();
+        if (const auto* r = words.get('R')) (geometry ? t.nose_radius : t.nose_radius_wear) = axis_value(state_, *r, 'R') * state_.unit_scale();
         if (const auto* q = words.get('Q')) t.tip = static_cast<int>(std::lround(q->value));
         e.text = fmt::format("tool offset {} {}", number, geometry ? "geometry" : "wear");
     }
-    e.end = position_;
+    e.end = state_.position;
     emit(e);
 }
 

@@ -34,18 +34,22 @@ std::optional<Axis> slot_axis(const dialects::VariableRange& range, const Offset
 
 }  // namespace
 
-std::optional<macro::Value> Executor::read_dialect_variable(const dialects::VariableRange& range, int number) {
+std::optional<macro::Value> Executor::read_dialect_variable(const MachineState& s, const Position& at,
+                                                           const dialects::VariableRange& range, int number) const {
     using macro::Value;
     switch (range.kind) {
         case dialects::VariableKind::alias:
-            return variables_.read(static_cast<int>(range.alias_of + (number - range.from)));
+        {
+            ExecutorSystemVariables system(*this, s, at);   // an alias of a system variable reads the same state
+            return variables_.read(static_cast<int>(range.alias_of + (number - range.from)), system);
+        }
         case dialects::VariableKind::common:
         case dialects::VariableKind::setting:
         case dialects::VariableKind::parameter: {
             // Settings and parameters are the machine's: a dry run knows none (vacant) unless the
             // program wrote them first.
-            const auto it = dialect_variables_.find(number);
-            return it == dialect_variables_.end() ? Value::vacant_value() : it->second;
+            const auto it = memory_.dialect_variables.find(number);
+            return it == memory_.dialect_variables.end() ? Value::vacant_value() : it->second;
         }
         case dialects::VariableKind::work_offsets: {
             const OffsetSlot slot = offset_slot(range, number);
@@ -53,27 +57,28 @@ std::optional<macro::Value> Executor::read_dialect_variable(const dialects::Vari
             if (!axis) return Value::vacant_value();
             // Registers hold mm (degrees); the program reads them in its own unit (G20: inches).
             const auto a = static_cast<std::size_t>(*axis);
-            const auto it = additional_offsets_.find(slot.number);
-            return Value::of(it == additional_offsets_.end() ? 0.0 : it->second[a] / axis_scale(a));
+            const auto it = memory_.additional_offsets.find(slot.number);
+            return Value::of(it == memory_.additional_offsets.end() ? 0.0 : it->second[a] / s.axis_scale(a));
         }
         case dialects::VariableKind::tool_in_spindle:
-            return Value::of(static_cast<double>(tool_));
+            return Value::of(static_cast<double>(s.tool));
         case dialects::VariableKind::spindle_rpm:
-            return Value::of(spindle_on_ ? current_rpm(position_[0]) : 0.0);
+            return Value::of(s.spindle_on ? current_rpm(s, at[0]) : 0.0);
     }
     return std::nullopt;
 }
 
-macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value) {
+macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRange& range, int number, macro::Value value,
+                                                    macro::SystemVariables& system) {
     using macro::WriteResult;
     if (range.read_only) return WriteResult::read_only;
     switch (range.kind) {
         case dialects::VariableKind::alias:
-            return variables_.write(static_cast<int>(range.alias_of + (number - range.from)), value);
+            return variables_.write(static_cast<int>(range.alias_of + (number - range.from)), value, system);
         case dialects::VariableKind::common:
         case dialects::VariableKind::setting:
         case dialects::VariableKind::parameter:
-            dialect_variables_[number] = value;
+            memory_.dialect_variables[number] = value;
             return WriteResult::ok;
         case dialects::VariableKind::work_offsets: {
             const OffsetSlot slot = offset_slot(range, number);
@@ -81,7 +86,7 @@ macro::WriteResult Executor::write_dialect_variable(const dialects::VariableRang
             if (!axis) return WriteResult::undefined;
             // The tool stays where it is; its work coordinates follow the new offset.
             const auto a = static_cast<std::size_t>(*axis);
-            change_offsets([&] { additional_offsets_[slot.number][a] = value.or_zero() * axis_scale(a); });
+            change_offsets([&] { memory_.additional_offsets[slot.number][a] = value.or_zero() * state_.axis_scale(a); });
             return WriteResult::ok;
         }
         case dialects::VariableKind::tool_in_spindle:

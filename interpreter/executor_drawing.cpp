@@ -15,14 +15,14 @@ namespace kerf::interpreter {
 namespace fn = dialects::functions;
 using drawing::Coordinate;
 
-motion::P2 Executor::plane_point(const Position& p) const {
-    const motion::PlanePoint q = motion::to_plane(geometric_mm(p, setup_.diameter_x, unit_scale()), plane());
+motion::P2 Executor::plane_point(const MachineState& s, const Position& p) const {
+    const motion::PlanePoint q = motion::to_plane(geometric_mm(p, setup_.diameter_x, s.unit_scale()), s.plane());
     return {q.first, q.second};
 }
 
-Position Executor::plane_position(motion::P2 p, const Position& like) const {
-    const double normal = motion::to_plane(geometric_mm(like, setup_.diameter_x, unit_scale()), plane()).normal;
-    return from_geometric(motion::from_plane({p.a, p.b, normal}, plane()), like, setup_.diameter_x, unit_scale());
+Position Executor::plane_position(const MachineState& s, motion::P2 p, const Position& like) const {
+    const double normal = motion::to_plane(geometric_mm(like, setup_.diameter_x, s.unit_scale()), s.plane()).normal;
+    return from_geometric(motion::from_plane({p.a, p.b, normal}, s.plane()), like, setup_.diameter_x, s.unit_scale());
 }
 
 namespace {
@@ -38,23 +38,25 @@ Coordinate coordinate_of(const BlockWords& words, char letter, bool incremental_
 
 }  // namespace
 
-drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWords& words, bool linear,
-                                       const Position& start, const Position& to) {
+drawing::Block Executor::drawing_block(const MachineState& s, const Position& at, const BlockContext& ctx, bool linear,
+                                       const Position& start, const Position& to) const {
+    const BlockWords& words = ctx.words;
     drawing::Block b;
     b.linear = linear;
-    const motion::PlaneAxes axes = motion::plane_axes(plane());
-    const motion::P2 s = plane_point(start), t = plane_point(to);
-    b.first = coordinate_of(words, motion::axis_letter(axes.first), flags_.incremental, s.a, t.a);
-    b.second = coordinate_of(words, motion::axis_letter(axes.second), flags_.incremental, s.b, t.b);
+    const motion::PlaneAxes axes = motion::plane_axes(s.plane());
+    const motion::P2 a = plane_point(s, start), t = plane_point(s, to);
+    b.first = coordinate_of(words, motion::axis_letter(axes.first), s.flags.incremental, a.a, t.a);
+    b.second = coordinate_of(words, motion::axis_letter(axes.second), s.flags.incremental, a.b, t.b);
     // Angle and corner words: ,A ,C ,R (comma words) and plain A / R marked direct_drawing.
-    const ast::SyntaxTree& tree = view.tree();
-    for (const ast::Token& token : view.tokens()) {
+    const ast::SyntaxTree& tree = ctx.view.tree();
+    for (const ast::Token& token : ctx.view.tokens()) {
         const bool plain = token.kind == ast::TokenKind::word && token.role() == ast::Role::direct_drawing;
         if (token.kind != ast::TokenKind::comma_word && !plain) continue;
         if (token.has(ast::token_flags::value_none)) continue;
         double value = 0;
         if (token.has(ast::token_flags::value_expr)) {
-            const macro::Result r = macro::evaluate(tree, token.payload, variables_, macro_options(true));
+            ExecutorSystemVariables system(*this, s, at);
+            const macro::Result r = macro::evaluate(tree, token.payload, variables_, system, macro_options(s, true));
             if (r.error || r.value.vacant) continue;   // a vacant value omits the word (macro B)
             value = r.value.number;
         } else {
@@ -66,87 +68,77 @@ drawing::Block Executor::drawing_block(const ast::BlockView& view, const BlockWo
         // A corner size is a distance: without a decimal point it counts least input increments
         // like an axis word (dialects.md §2); the angle is in degrees.
         const bool point = token.has(ast::token_flags::has_point) || token.has(ast::token_flags::value_expr);
-        const double size = point || setup_.calculator_decimal ? value : value * setup_.increment(flags_.inch);
-        if (token.letter == 'C' || token.letter == 'R') b.corner_size = size * unit_scale();
+        const double size = point || setup_.calculator_decimal ? value : value * setup_.increment(s.flags.inch);
+        if (token.letter == 'C' || token.letter == 'R') b.corner_size = size * s.unit_scale();
     }
     b.moves = b.named() || b.angle.has_value();
     return b;
 }
 
-std::optional<drawing::Block> Executor::look_ahead(std::uint32_t after, std::optional<std::uint32_t> last, const Position& from) {
-    const Frame& f = *frame_;
+OrAlarm<std::optional<drawing::Block>> Executor::look_ahead(const MachineState& s, const BlockContext& ctx,
+                                                            std::optional<std::uint32_t> last, const Position& from) const {
+    const Frame& f = ctx.frame;
     const LoadedFile& file = file_of(f);
-    for (std::uint32_t b = after + 1; file.in_program(f.program.program, b) && (!last || b <= *last); ++b) {
-        const ast::BlockView next = file.block(b);
-        if (next.block().kind != ast::BlockKind::code) continue;
-        if (next.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
-        // Read with the executor's own word evaluation; the running block's scan comes back after.
-        const LookAheadScope guard(*this, f, next, scan_.block);
+    for (std::uint32_t b = ctx.index() + 1; file.in_program(f.program.program, b) && (!last || b <= *last); ++b) {
+        BlockAhead next{file.block(b), {}, {}};
+        if (next.view.block().kind != ast::BlockKind::code) continue;
+        if (next.view.block().has(ast::block_flags::deleted) && options_.block_delete) continue;
+        // Read with the executor's own word evaluation, the tool at `from`.
+        scan_block(f, next.view, next.scan);
+        next.scan.block = ctx.index();
+        const BlockContext ahead{f, next.view, next.scan, next.words};
         // The chain is G01 (only G01 blocks are drawn): the next block is G01 unless it says otherwise.
         dialects::FunctionId motion = fn::linear;
-        for (const ast::CodeRef& c : scan_.g)
+        for (const ast::CodeRef& c : next.scan.g)
             if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
-        BlockWords words;
-        std::optional<drawing::Block> out;
-        position_ = from;
-        if (evaluate_words(next, words)) {
-            bool moves = false;
-            const Position to = target_position(words, moves);
-            out = drawing_block(next, words, motion == fn::linear, from, to);
-        }
-        return out;
+        if (auto failed = read_words(s, from, ahead, next.words)) return {{}, std::move(failed)};
+        bool moves = false;
+        const Position to = target_position(s, from, next.words, moves);
+        return {drawing_block(s, from, ahead, motion == fn::linear, from, to), std::nullopt};
     }
-    return std::nullopt;
+    return {};
 }
 
-std::optional<drawing::Result> Executor::resolve_drawing(const ast::BlockView& view, const BlockWords& words,
-                                                         const Position& start, const Position& tool, const Position& to,
-                                                         std::optional<std::uint32_t> last) {
-    const std::uint32_t index = scan_.block;
-    const drawing::Block cur = drawing_block(view, words, true, start, to);
-    std::optional<drawing::Block> next;
+OrAlarm<drawing::Result> Executor::resolve_drawing(const MachineState& s, const Position& at, const BlockContext& ctx,
+                                                   const Position& start, const Position& tool, const Position& to,
+                                                   std::optional<std::uint32_t> last) const {
+    const drawing::Block cur = drawing_block(s, at, ctx, true, start, to);
+    OrAlarm<std::optional<drawing::Block>> next;
     // Only an angle-only block and a corner need the next block (semantics.md §10.1 (c)).
     if (!cur.named() || cur.corner != drawing::CornerKind::none) {
         const Position from = cur.named() ? to : start;
-        next = look_ahead(index, last, from);
+        next = look_ahead(s, ctx, last, from);
+        if (!next.ok()) return {{}, std::move(next.alarm)};   // the block read ahead cannot be read
     }
-    if (stopped_) return std::nullopt;   // the block read ahead raised an alarm
-    drawing::Result r = drawing::resolve(plane_point(start), plane_point(tool), cur, next ? &*next : nullptr);
-    if (r.alarm) {
-        alarm(*frame_, view, r.alarm->number, r.alarm->text);
-        return std::nullopt;
-    }
-    return r;
+    drawing::Result r = drawing::resolve(plane_point(s, start), plane_point(s, tool), cur, next.value ? &*next.value : nullptr);
+    if (r.alarm) return {{}, Alarm{ctx.source(), at, r.alarm->number, r.alarm->text}};
+    return {std::move(r), std::nullopt};
 }
 
-Position Executor::programmed_target(const BlockWords& words, bool& moves) {
-    const Position tool = position_;
-    position_ = *programmed_;
-    const Position to = target_position(words, moves);
-    position_ = tool;
-    return to;
-}
-
-bool Executor::draw_block(const ast::BlockView& view, const BlockWords& words, const Position& start, const Position& to) {
-    const auto r = resolve_drawing(view, words, start, position_, to, std::nullopt);
-    if (!r) return false;
+Outcome Executor::draw_block(const BlockContext& ctx, const Position& start, const Position& to) {
+    auto drawn = resolve_drawing(state_, state_.position, ctx, start, state_.position, to, std::nullopt);
+    if (!drawn.ok()) {
+        raise(std::move(*drawn.alarm));
+        return Outcome::stopped;
+    }
+    const drawing::Result* r = &drawn.value;
     for (const drawing::Move& m : r->moves) {
-        const Position end = plane_position(m.end, to);
-        if (m.arc) cycle_arc(m.sweep < 0, end, plane_position(m.center, to), view);
-        else move(EventKind::linear, end, *frame_, view);
-        if (stopped_) return true;
+        const Position end = plane_position(state_, m.end, to);
+        if (m.arc) cycle_arc(m.sweep < 0, end, plane_position(state_, m.center, to), ctx);
+        else move(EventKind::linear, end, ctx);
+        if (stopped_) return Outcome::stopped;
     }
-    const Position programmed = plane_position(r->end, to);
-    const bool off = motion::norm(plane_point(programmed) - plane_point(position_)) > 1e-9;
-    programmed_ = off ? std::optional<Position>(programmed) : std::nullopt;
-    if (!off) position_ = programmed;   // exactly on the programmed point again
-    return !r->moves.empty();
+    const Position programmed = plane_position(state_, r->end, to);
+    const bool off = motion::norm(plane_point(state_, programmed) - plane_point(state_, state_.position)) > 1e-9;
+    state_.programmed = off ? std::optional<Position>(programmed) : std::nullopt;
+    if (!off) state_.position = programmed;   // exactly on the programmed point again
+    return r->moves.empty() ? Outcome::done : Outcome::moved;
 }
 
-void Executor::note_drawing_outside_g01(const ast::BlockView& view) {
-    if (drawing_words(view)) {
+void Executor::note_drawing_outside_g01(const BlockContext& ctx) {
+    if (drawing_words(ctx)) {
         // Direct drawing is a G01 feature (semantics.md §10.1); G01 blocks never come here.
-        Event e = event_at(EventKind::message, *frame_, view);
+        Event e = event_at(EventKind::message, ctx);
         e.text = "direct drawing (,A ,C ,R) in a block that is not G01: the words are ignored (semantics.md §10.1)";
         emit(e);
     }

@@ -36,10 +36,11 @@ bool Executor::axial_offset_is_length(const dialects::CodeInfo& code, const Bloc
     return !setup_.iso_g43_approach || words.get('H') != nullptr;
 }
 
-void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords& words) {
-    int sign = length_sign_;
+void Executor::apply_length_offset(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
+    int sign = state_.length_sign;
     const dialects::CodeInfo* code = nullptr;
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || !(code_class_of(*c.info) & kLengthCompCode) || !axial_offset_is_length(*c.info, words)) continue;
         code = c.info;   // several in one block: the last one wins (semantics.md §1.1)
         sign = length_sign_of(c.info->function);
@@ -47,34 +48,34 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
     const auto* h_word = words.get('H');
     if (!code && !h_word) return;   // G43/G44 in force, nothing new in this block
     // The block's H, else the last H written (FANUC modal H; remember_words keeps it).
-    const auto& modal_h = last_words_[static_cast<std::size_t>('H' - 'A')];
+    const auto& modal_h = state_.last_words[static_cast<std::size_t>('H' - 'A')];
     const int h = sign == 0 ? 0 : h_word ? static_cast<int>(std::lround(h_word->value))
                                          : modal_h ? static_cast<int>(std::lround(*modal_h)) : 0;
     double length = 0;
     if (h != 0) {
-        const auto it = tools_.find(h);
-        if (it == tools_.end() && h > setup_.tool_offset_count) {
-            Event m = event_at(EventKind::message, *frame_, view);
+        const auto it = memory_.tools.find(h);
+        if (it == memory_.tools.end() && h > setup_.tool_offset_count) {
+            Event m = event_at(EventKind::message, ctx);
             m.text = fmt::format("H{}: the machine has offset numbers 1..{} only: length 0", h, setup_.tool_offset_count);
             emit(m);
         }
-        if (it != tools_.end()) length = it->second.length + it->second.length_wear;
+        if (it != memory_.tools.end()) length = it->second.length + it->second.length_wear;
     }
-    length_sign_ = sign;
-    length_h_ = h;
-    length_mm_ = sign * length;
-    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+    state_.length_sign = sign;
+    state_.length_h = h;
+    state_.length_mm = sign * length;
+    Event e = event_at(EventKind::coordinate_change, ctx);
     e.code = h;
     e.text = sign == 0 ? "tool length offset cancelled (G49): machine Z = programmed Z"
                        : fmt::format("tool length offset {} H{}: machine Z = programmed Z {} {:.3f} mm",
                                      code ? code->spelling : std::string(sign > 0 ? "G43" : "G44"), h,
                                      sign > 0 ? "+" : "-", length);
-    pending_length_event_ = std::move(e);
+    state_.pending_length_event = std::move(e);
     // With the axis-movement reading of the parameter a block without axis words moves Z by the
     // change at once; else (the default) the next block that moves Z takes it up, this one too.
     if (setup_.length_offset_at_once && !(words.words.mask() & axis_letters_) && !words.incremental.mask()) {
-        take_up_length_offset(view);
-        move(flags_.motion == fn::linear ? EventKind::linear : EventKind::rapid, position_, *frame_, view);
+        take_up_length_offset(ctx);
+        move(state_.flags.motion == fn::linear ? EventKind::linear : EventKind::rapid, state_.position, ctx);
     }
 }
 
@@ -85,21 +86,22 @@ void Executor::apply_length_offset(const ast::BlockView& view, const BlockWords&
 // The `coordinate_change` event says so where the machine position starts to follow the new offset
 // (the block that takes it up), so that machine minus the offset of the events is the tool tip
 // throughout the trace.
-void Executor::take_up_length_offset(const ast::BlockView& view, const BlockWords& words) {
+void Executor::take_up_length_offset_with_z(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const auto* z = words.get('Z');
-    if ((z && !z->data) || words.incremental.count('Z')) take_up_length_offset(view);
+    if ((z && !z->data) || words.incremental.count('Z')) take_up_length_offset(ctx);
 }
 
-void Executor::take_up_length_offset(const ast::BlockView& view) {
-    length_applied_mm_ = length_mm_;
-    if (!pending_length_event_) return;
-    Event e = std::move(*pending_length_event_);
-    pending_length_event_.reset();
-    if (e.source.line != scan_.source.line) {
+void Executor::take_up_length_offset(const BlockContext& ctx) {
+    state_.length_applied_mm = state_.length_mm;
+    if (!state_.pending_length_event) return;
+    Event e = std::move(*state_.pending_length_event);
+    state_.pending_length_event.reset();
+    if (e.source.line != ctx.source().line) {
         e.text += ", given before and taken up by this block's Z";   // no line number: formatting moves lines
-        e.source = source(*frame_, view);
+        e.source = ctx.source();
     }
-    e.start = e.end = position_;
+    e.start = e.end = state_.position;
     emit(std::move(e));
 }
 

@@ -12,19 +12,21 @@
 
 namespace kerf::interpreter {
 
-void Executor::call_local_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
+void Executor::call_local_subprogram(const BlockContext& ctx) {
+    const Frame& frame = ctx.frame;
+    const BlockWords& words = ctx.words;
     const auto* p = words.get('P');
     if (!p) {
-        alarm(frame, view, 76, "M97 without a sequence number P (alarm 076)");
+        alarm(ctx, 76, "M97 without a sequence number P (alarm 076)");
         return;
     }
     const auto label = find_label(frame, p->value);
     if (!label) {
-        alarm(frame, view, 78, fmt::format("M97 P{}: no block N{} in this program (alarm 078)", p->value, p->value));
+        alarm(ctx, 78, fmt::format("M97 P{}: no block N{} in this program (alarm 078)", p->value, p->value));
         return;
     }
     if (static_cast<int>(frames_.size()) > setup_.max_call_depth) {
-        alarm(frame, view, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
+        alarm(ctx, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
         return;
     }
     Frame sub;
@@ -33,16 +35,16 @@ void Executor::call_local_subprogram(Frame& frame, const ast::BlockView& view, c
     sub.start_block = *label;
     const auto* l = words.get('L');
     sub.repeats_left = l ? std::max<std::int64_t>(1, std::lround(l->value)) : 1;
-    Event e = event_at(EventKind::call, frame, view);
+    Event e = event_at(EventKind::call, ctx);
     e.code = 0;
     e.text = fmt::format("M97 P{}", p->value);
     emit(e);
     frames_.push_back(sub);
 }
 
-bool Executor::skip_resident_call(const Frame& frame, const ast::BlockView& view, std::int64_t program, std::string_view how) {
+bool Executor::skip_resident_call(const BlockContext& ctx, std::int64_t program, std::string_view how) {
     if (!options_.resident || !options_.resident(program)) return false;
-    Event e = event_at(EventKind::message, frame, view);
+    Event e = event_at(EventKind::message, ctx);
     e.text = fmt::format("{} O{:04}: a program resident in the machine (.kerf.toml [programs] resident), not available to "
                          "the dry run: skipped", how, program);
     emit(e);

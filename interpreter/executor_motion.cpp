@@ -48,9 +48,9 @@ Position from_geometric(motion::Vec3 g, const Position& like, bool diameter_x, d
     return p;
 }
 
-Position Executor::target_position(const BlockWords& words, bool& moves) const {
+Position Executor::target_position(const MachineState& s, const Position& from, const BlockWords& words, bool& moves) const {
     // Built in the program's frame (G68, G51, G51.1 undone), then taken back into work coordinates.
-    const Position start = to_program(position_);
+    const Position start = to_program(s, from);
     Position to = start;
     moves = false;
     // Only the letters that are axes of the dialect (a table built once: this runs every block).
@@ -60,8 +60,8 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         const Word& w = words.words.at(letter);
         if (w.data) continue;
         const std::size_t a = static_cast<std::size_t>(axis_of_[static_cast<std::size_t>(i)]);
-        const double v = axis_value(w, letter);
-        to[a] = flags_.incremental ? to[a] + v : v;
+        const double v = axis_value(s, w, letter);
+        to[a] = s.flags.incremental ? to[a] + v : v;
         moves = true;
     }
     // U W H: incremental in system A; "the later-specified word is used" with X/U together (§3.2).
@@ -72,28 +72,27 @@ Position Executor::target_position(const BlockWords& words, bool& moves) const {
         if (axis_of_[static_cast<std::size_t>(i)] < 0) continue;
         const std::size_t a = static_cast<std::size_t>(axis_of_[static_cast<std::size_t>(i)]);
         const Word* absolute = words.get(axis_letter);
-        if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(w, axis_letter);
+        if (!absolute || absolute->token < w.token) to[a] = start[a] + axis_value(s, w, axis_letter);
         moves = true;
     }
-    if (polar_command_ && moves) polar_target(words, start, to);   // [transforms] G16 (executor_transforms.cpp)
-    return from_program(to);
+    if (s.polar_command && moves) polar_target(s, words, start, to);   // [transforms] G16 (executor_transforms.cpp)
+    return from_program(s, to);
 }
 
 // Stored stroke check 1 (alarms OT500/OT501 [FANUC]): checked before the move, which does not
 // start when its end (or an arc's extreme) lies past a limit.
-bool Executor::within_soft_limits(const Position& low, const Position& high, const Frame& f,
-                                  const ast::BlockView& view) {
-    if (!soft_limits_on_ || !any_soft_limit_) return true;
-    const Position offset = machine_offset();
+bool Executor::within_soft_limits(const Position& low, const Position& high, const BlockContext& ctx) {
+    if (!state_.soft_limits_on || !any_soft_limit_) return true;
+    const Position offset = machine_offset(state_);
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         const SoftLimit& limit = setup_.soft_limits[a];
-        const double scale = axis_scale(a);
+        const double scale = state_.axis_scale(a);
         const double machine_low = low[a] * scale + offset[a], machine_high = high[a] * scale + offset[a];
         const bool over = limit.max && machine_high > *limit.max + 1e-9;
         const bool under = limit.min && machine_low < *limit.min - 1e-9;
         if (!over && !under) continue;
         const int number = over ? 500 : 501;
-        alarm(f, view, number,
+        alarm(ctx, number,
               fmt::format("OT{}: {} overtravel on {}: machine {:.3f} past the soft limit {:.3f} (stored stroke check)",
                           number, over ? "+" : "-", kAxisLetters[a], over ? machine_high : machine_low,
                           over ? *limit.max : *limit.min));
@@ -102,34 +101,35 @@ bool Executor::within_soft_limits(const Position& low, const Position& high, con
     return true;
 }
 
-void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc) const {
+void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_s2, const motion::Arc* arc,
+                              const FeedRate& feed) const {
     // F under G99/G95 and every thread lead are per revolution (semantics.md §4, cycles.md §9).
-    const bool per_rev = flags_.per_revolution || e.kind == EventKind::thread;
-    e.feed = e.kind == EventKind::thread ? thread_lead_ : feed_;
+    const bool per_rev = feed.per_revolution || e.kind == EventKind::thread;
+    e.feed = e.kind == EventKind::thread ? state_.thread_lead : feed.value;
     e.feed_per_rev = per_rev;
-    e.spindle_rpm = current_rpm(e.end[0]);
-    e.spindle_running = spindle_on_;
-    const double feed_mm = e.feed * unit_scale();
+    e.spindle_rpm = current_rpm(state_, e.end[0]);
+    e.spindle_running = state_.spindle_on;
+    const double feed_mm = e.feed * state_.unit_scale();
     double seconds = 0;
-    if (per_rev && flags_.css && e.kind != EventKind::thread) {
+    if (per_rev && state_.flags.css && e.kind != EventKind::thread) {
         // G96: the rpm follows the diameter along the move (motion/time.hpp css_feed_time).
         motion::SpindleClamp clamp;
-        if (max_rpm_ > 0) clamp.max_rpm = max_rpm_;
+        if (state_.max_rpm > 0) clamp.max_rpm = state_.max_rpm;
         if (setup_.max_rpm > 0) clamp.max_rpm = std::min(clamp.max_rpm, setup_.max_rpm);
-        const motion::Line line{geometric_mm(e.start, setup_.diameter_x, unit_scale()),
-                                geometric_mm(e.end, setup_.diameter_x, unit_scale())};
-        if (feed_mm > 0) seconds = arc ? motion::css_feed_time(*arc, css_, feed_mm, clamp) : motion::css_feed_time(line, css_, feed_mm, clamp);
-    } else if (e.kind == EventKind::thread && thread_lead_change_ != 0) {
+        const motion::Line line{geometric_mm(e.start, setup_.diameter_x, state_.unit_scale()),
+                                geometric_mm(e.end, setup_.diameter_x, state_.unit_scale())};
+        if (feed_mm > 0) seconds = arc ? motion::css_feed_time(*arc, state_.css, feed_mm, clamp) : motion::css_feed_time(line, state_.css, feed_mm, clamp);
+    } else if (e.kind == EventKind::thread && state_.thread_lead_change != 0) {
         // G34: revolutions from the integral of the lead (motion/time.hpp variable_lead).
-        const auto v = motion::variable_lead(timed_length_mm, feed_mm, thread_lead_change_ * unit_scale());
+        const auto v = motion::variable_lead(timed_length_mm, feed_mm, state_.thread_lead_change * state_.unit_scale());
         if (v && e.spindle_rpm > 0) seconds = v->revolutions / e.spindle_rpm * 60.0;
-        if (v) e.lead_end = v->lead_end / unit_scale();
+        if (v) e.lead_end = v->lead_end / state_.unit_scale();
     } else {
         const double mm_per_min = per_rev ? motion::feed_per_minute(feed_mm, e.spindle_rpm) : feed_mm;
         seconds = mm_per_min > 0 ? timed_length_mm / mm_per_min * 60.0 : 0;
     }
-    if (e.kind == EventKind::thread && thread_lead_change_ == 0) e.lead_end = e.feed;
-    seconds *= slowdown_time_factor_;   // [seed 004 G28 ramp] 1 except for a ramp piece
+    if (e.kind == EventKind::thread && state_.thread_lead_change == 0) e.lead_end = e.feed;
+    seconds *= feed.time_factor;   // [seed 004 G28 ramp] 1 except for a ramp piece
     if (seconds > 0 && std::isfinite(seconds) && accel_mm_s2 > 0) {
         // Exact-stop trapezoid at the move's mean speed (motion/time.hpp).
         const double v = timed_length_mm / seconds;
@@ -140,34 +140,40 @@ void Executor::time_feed_move(Event& e, double timed_length_mm, double accel_mm_
 
 // A feed move needs a feed rate: F0, or no F since power-on, stops the control with alarm 011
 // ([FANUC] PS011 "feedrate zero"; semantics.md §4). A move that goes nowhere feeds nothing.
-bool Executor::feed_commanded(bool moves, const Frame& f, const ast::BlockView& view) {
-    if (feed_ > 0 || !moves) return true;
-    alarm(f, view, alarms::feed_zero,
+bool Executor::feed_commanded(bool moves, const BlockContext& ctx, double feed) {
+    if (feed > 0 || !moves) return true;
+    alarm(ctx, alarms::feed_zero,
           fmt::format("feed move with no feed rate commanded (F{:g}): alarm 011; program F before the first "
-                      "G01/G02/G03", feed_));
+                      "G01/G02/G03", feed));
     return false;
 }
 
-void Executor::move(EventKind kind, const Position& to, const Frame& f, const ast::BlockView& view) {
+void Executor::move(EventKind kind, const Position& to, const BlockContext& ctx, const FeedRate& feed) {
     // [seed 004 G28 K F] the last K mm of a G01 move at the reduced feed (executor_iso_specials.cpp).
-    if (slowdown_ && kind == EventKind::linear && !in_slowdown_ && flags_.motion == fn::linear && slowed_move(to, f, view)) return;
-    if (kind == EventKind::linear && !feed_commanded(to != position_, f, view)) return;
+    if (state_.slowdown && kind == EventKind::linear && ctx.motion_in(state_) == fn::linear &&
+        slowed_move(to, ctx, feed) != Outcome::not_mine)
+        return;
+    run_move(kind, to, ctx, feed);
+}
+
+void Executor::run_move(EventKind kind, const Position& to, const BlockContext& ctx, const FeedRate& feed) {
+    if (kind == EventKind::linear && !feed_commanded(to != state_.position, ctx, feed.value)) return;
     Event e;
     e.kind = kind;
-    e.source = source(f, view);
-    e.start = position_;
+    e.source = ctx.source();
+    e.start = state_.position;
     e.end = to;
-    if (!within_soft_limits(to, to, f, view)) return;
+    if (!within_soft_limits(to, to, ctx)) return;
     // The axes travel from where they stand to the new machine position: an offset taken up by this
     // move (G43 H, a lathe T offset, G49) is part of it (differential A7: `G43 Z15. H1` at Z15 moves).
     const Position machine_to = machine_position_of(to);
-    const Travel travel_total = travel_of(machine_at_, machine_to, setup_);
+    const Travel travel_total = travel_of(state_.machine_at, machine_to, setup_);
     e.length_mm = travel_total.linear;
     std::array<motion::AxisLimits, kAxisCount> limits{};
     std::array<double, kAxisCount> travel{};
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         limits[a] = {setup_.rapid_mm_min[a], setup_.accel_mm_s2[a]};
-        travel[a] = std::fabs(machine_to[a] - machine_at_[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0);
+        travel[a] = std::fabs(machine_to[a] - state_.machine_at[a]) * (a == 0 && setup_.diameter_x ? 0.5 : 1.0);
     }
     if (kind == EventKind::rapid) {
         // Each axis at its own rapid rate (dog-leg) or all scaled to the slowest (straight line),
@@ -175,7 +181,7 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
         e.time_s = motion::rapid_time(travel, limits, setup_.rapid_dogleg ? motion::RapidMode::dog_leg
                                                                           : motion::RapidMode::straight);
         if (!std::isfinite(e.time_s)) e.time_s = 0;   // an axis without a rapid rate: not timed
-        e.feed = feed_;
+        e.feed = feed.value;
         result_.rapid_distance_mm += e.length_mm;
     } else {
         const motion::Vec3 delta{travel[0], travel[1], travel[2]};
@@ -184,16 +190,16 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
         // F applies to the composite of linear mm and rotary degrees ([FANUC] "feedrate of rotary
         // axes"): a C-only move at F100 turns 100°/min.
         const double timed = std::hypot(e.length_mm, travel_total.rotary);
-        time_feed_move(e, timed, std::isfinite(accel) ? accel : 0.0, nullptr);
+        time_feed_move(e, timed, std::isfinite(accel) ? accel : 0.0, nullptr, feed);
         result_.feed_distance_mm += e.length_mm;
     }
-    position_ = to;
+    state_.position = to;
     const bool thread = kind == EventKind::thread;
-    const double thread_speed = thread ? std::max(e.feed, e.lead_end) * unit_scale() * e.spindle_rpm : 0.0;
+    const double thread_speed = thread ? std::max(e.feed, e.lead_end) * state_.unit_scale() * e.spindle_rpm : 0.0;
     emit(std::move(e), machine_to);   // offsets unchanged since machine_to was computed from `to` (= e.end)
     if (thread && setup_.max_cutting_feed > 0 && thread_speed > setup_.max_cutting_feed) {
         // cycles.md §9: lead × rpm is the axis speed of a thread; the analyzer reads this event.
-        Event w = event_at(EventKind::message, f, view);
+        Event w = event_at(EventKind::message, ctx);
         w.code = kerf_warning::thread_speed_over_limit;
         w.text = fmt::format("thread at {:g} mm/min (lead × rpm) is over the machine's maximum cutting feed {:g} mm/min",
                              thread_speed, setup_.max_cutting_feed);
@@ -204,81 +210,80 @@ void Executor::move(EventKind kind, const Position& to, const Frame& f, const as
 // G32/G33 and G34 (cycles.md §9). The lead is F, or E where the block has one (seed 003 "E = lead
 // in mm", ADV400 "pitch E"); G34 adds K, the lead change per revolution ([FANUC]), and a lead
 // that would reach zero before the end is [FANUC] alarm 313 (lead level error).
-void Executor::thread_move(const ast::BlockView& view, const BlockWords& words, const Position& to) {
-    const Frame& f = *frame_;
+void Executor::thread_move(const BlockContext& ctx, const Position& to) {
+    const BlockWords& words = ctx.words;
     const auto* e = words.get('E');
-    thread_lead_ = e ? axis_value(*e, 'E') : feed_;
+    state_.thread_lead = e ? axis_value(state_, *e, 'E') : state_.feed;
     const auto* k = words.get('K');
-    thread_lead_change_ = flags_.motion == fn::variable_lead_thread_cutting && k ? axis_value(*k, 'K') : 0;
-    if (thread_lead_change_ != 0) {
-        const double length = travel_of(position_, to, setup_).linear;   // program units, like the lead
-        if (!motion::variable_lead(length, thread_lead_, thread_lead_change_)) {
-            alarm(f, view, 313,
+    state_.thread_lead_change = state_.flags.motion == fn::variable_lead_thread_cutting && k ? axis_value(state_, *k, 'K') : 0;
+    if (state_.thread_lead_change != 0) {
+        const double length = travel_of(state_.position, to, setup_).linear;   // program units, like the lead
+        if (!motion::variable_lead(length, state_.thread_lead, state_.thread_lead_change)) {
+            alarm(ctx, 313,
                   fmt::format("G34 lead F{:g} K{:g} over {:g}: the lead reaches zero before the end (FANUC alarm 313, "
-                              "lead level error)", thread_lead_, thread_lead_change_, length));
+                              "lead level error)", state_.thread_lead, state_.thread_lead_change, length));
             return;
         }
     }
-    move(EventKind::thread, to, f, view);
+    move(EventKind::thread, to, ctx);
 }
 
-bool Executor::apply_motion(const ast::BlockView& view, const BlockWords& words) {
+Outcome Executor::apply_motion(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     // [polar] G112/G107 modes: the block's path is in the Cartesian plane (polar.cpp).
-    if (transform_ || (scan_.classes & kTransformCode)) {
-        if (const auto moved = apply_plane_transform(view, words)) return *moved;
+    if (state_.transform || (ctx.scan.classes & kTransformCode)) {
+        if (const Outcome o = apply_plane_transform(ctx); o != Outcome::not_mine) return o;
     }
-    if (const auto reference = apply_reference_motion(view, words)) {
-        programmed_.reset();
-        return *reference;
+    if (ctx.scan.classes & kOneShotCode) {   // G27–G30, G53 are group 00: the common block has none
+        if (const Outcome o = apply_reference_motion(ctx); o != Outcome::not_mine) {
+            state_.programmed.reset();
+            return o;
+        }
     }
     bool moves = false;
     // G45–G48 act only in their block (semantics.md §9.3): a block without them measures from where
     // the tool stands (its G91 increments, the axes it does not name), not from the point the
     // offset blocks programmed.
-    if (programmed_by_offset_ && !(scan_.classes & kPositionOffsetCode)) programmed_.reset();
-    programmed_by_offset_ = false;
+    if (state_.programmed_by_offset && !(ctx.scan.classes & kPositionOffsetCode)) state_.programmed.reset();
+    state_.programmed_by_offset = false;
     // [path changers] After a corner of direct drawing the tool stands off the programmed point,
     // which the block's coordinates are measured from (executor_drawing.cpp).
-    const Position to = programmed_ ? programmed_target(words, moves) : target_position(words, moves);
-    if (apply_cycle(view, words, moves, to)) return false;
+    const Position& from = state_.programmed ? *state_.programmed : state_.position;   // no copy: every block passes here
+    const Position to = target_position(state_, from, words, moves);
+    // A cycle block is not a move block for G66 (done, not moved): the modal call does not follow it.
+    if (const Outcome o = apply_cycle(ctx, moves, to); o != Outcome::not_mine) return o;
     // [seed 004 G43/G44 without H] the approach of §9.4 (executor_iso_specials.cpp).
-    if (scan_.classes & kApproachOffsetCode)
-        if (const auto moved = axial_offset_motion(view, words, to, moves)) return *moved;
-    if ((scan_.classes & kArcApproachCode) && moves) return arc_approach_move(view, words, to);   // [seed 004 G12/G13]
+    if (ctx.scan.classes & kApproachOffsetCode)
+        if (const Outcome o = axial_offset_motion(ctx, to, moves); o != Outcome::not_mine) return o;
+    if ((ctx.scan.classes & kArcApproachCode) && moves) return arc_approach_move(ctx, to);   // [seed 004 G12/G13]
     // [compensation] G40–G42 (executor_compensation.cpp): one test per block while it is off.
-    if ((scan_.classes & kRadiusCompCode) || compensating()) return compensate_motion(view, words, to, moves);
-    if (drawing_words(view) && flags_.motion == fn::linear) return draw_block(view, words, programmed_.value_or(position_), to);
-    if (const auto factor = position_offset_factor(); factor && moves)
-        return position_offset_move(view, words, *factor, programmed_.value_or(position_), to);
-    if (moves) programmed_.reset();
-    note_drawing_outside_g01(view);
-    const dialects::FunctionId motion = flags_.motion;
+    if ((ctx.scan.classes & kRadiusCompCode) || compensating()) return compensate_motion(ctx, to, moves);
+    if (drawing_words(ctx) && state_.flags.motion == fn::linear) return draw_block(ctx, state_.programmed.value_or(state_.position), to);
+    if (const auto factor = position_offset_factor(ctx); factor && moves)
+        return position_offset_move(ctx, *factor, state_.programmed.value_or(state_.position), to);
+    if (moves) state_.programmed.reset();
+    note_drawing_outside_g01(ctx);
+    const dialects::FunctionId motion = state_.flags.motion;
     // G02/G03 with only I/J/K: a full circle from the current point ([FANUC]; semantics.md §3).
-    const auto centre_word = [&](char letter) {
-        const auto* w = words.get(letter);
-        return w && !w->data;
-    };
-    const bool full_circle = (motion == fn::circular_cw || motion == fn::circular_ccw) &&
-                             (centre_word('I') || centre_word('J') || centre_word('K'));
-    if (!moves && !full_circle) return false;
-    const Frame& f = *frame_;
-    if (motion == fn::rapid) move(EventKind::rapid, to, f, view);
-    else if (motion == fn::linear) move(EventKind::linear, to, f, view);
-    else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, words, view);
-    else if (motion == fn::thread_cutting || motion == fn::variable_lead_thread_cutting) thread_move(view, words, to);
+    if (!moves && !full_circle(motion, words)) return Outcome::done;
+    if (motion == fn::rapid) move(EventKind::rapid, to, ctx);
+    else if (motion == fn::linear) move(EventKind::linear, to, ctx);
+    else if (motion == fn::circular_cw || motion == fn::circular_ccw) arc_move(motion == fn::circular_cw, to, ctx);
+    else if (motion == fn::thread_cutting || motion == fn::variable_lead_thread_cutting) thread_move(ctx, to);
     else {
-        Event e = event_at(EventKind::message, f, view);
+        Event e = event_at(EventKind::message, ctx);
         if (!motion.empty()) e.code = kerf_warning::not_modelled;
         e.text = motion.empty() ? std::string("axis words without a motion code (no G00/G01/G02/G03 active): no motion")
                                 : fmt::format("motion '{}' is not expanded by kerf: no motion", motion);
         emit(e);
-        return false;
+        return Outcome::done;
     }
-    return true;
+    return unless_stopped(Outcome::moved);
 }
 
-void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) {
-    if (!(scan_.classes & kOneShotCode) || !has_function(view, fn::dwell)) return;
+void Executor::apply_dwell(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
+    if (!(ctx.scan.classes & kOneShotCode) || !has_function(ctx, fn::dwell)) return;
     // X and U in seconds, P in milliseconds (ADV400: P in seconds); `G4 F1` seconds with the
     // machine's dwell_f_word switch (semantics.md §8.2, §12.15).
     double seconds = 0;
@@ -288,11 +293,11 @@ void Executor::apply_dwell(const ast::BlockView& view, const BlockWords& words) 
     else if (const auto* p = words.get('P')) seconds = dwell_p_seconds(p->value);
     else if (const auto* f = words.get('F'); f && setup_.dwell_f_seconds) {
         seconds = f->value;
-        Event warn = event_at(EventKind::message, *frame_, view);
+        Event warn = event_at(EventKind::message, ctx);
         warn.text = "G04 F is not a FANUC dwell address: read as seconds (semantics.md §8.2; use X, U or P)";
         emit(warn);
     }
-    Event e = event_at(EventKind::dwell, *frame_, view);
+    Event e = event_at(EventKind::dwell, ctx);
     e.time_s = std::max(0.0, seconds);
     emit(e);
 }
@@ -318,22 +323,24 @@ std::optional<std::uint32_t> Executor::find_label(const Frame& f, double n) cons
 // M98 P (both forms, dialects.md §3.6) and [FANUC] M98 Q: Q is the sequence number where the
 // called program starts; without P it is a label of the program being run (a local subroutine
 // that ends with M99).
-void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const BlockWords& words) {
-    const auto call = view.subprogram_call();
+void Executor::call_subprogram(const BlockContext& ctx) {
+    const Frame& frame = ctx.frame;
+    const BlockWords& words = ctx.words;
+    const auto call = ctx.view.subprogram_call();
     const auto* q = words.get('Q');
     if (!call && !q) {
-        alarm(frame, view, 76, "M98 without a program number P or a sequence number Q (alarm 076)");
+        alarm(ctx, 76, "M98 without a program number P or a sequence number Q (alarm 076)");
         return;
     }
     std::optional<ProgramRef> target = frame.program;
     if (call) target = programs_.find_or_load(call->program, frame.program.file);
     if (!target) {
-        if (!skip_resident_call(frame, view, call->program, "M98"))
-            alarm(frame, view, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
+        if (!skip_resident_call(ctx, call->program, "M98"))
+            alarm(ctx, 78, fmt::format("program O{:04} not found (alarm 078)", call->program));
         return;
     }
     if (static_cast<int>(frames_.size()) > setup_.max_call_depth) {
-        alarm(frame, view, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
+        alarm(ctx, 77, fmt::format("subprogram nesting deeper than {} (alarm 077)", setup_.max_call_depth));
         return;
     }
     Frame sub;
@@ -343,7 +350,7 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
         // Without P the label is one of the running program: searched from the call (Haas forward search).
         const auto label = find_label(call ? sub : frame, q->value);
         if (!label) {
-            alarm(frame, view, 78, fmt::format("M98 Q{}: no sequence number N{} in the called program (alarm 078)", q->value, q->value));
+            alarm(ctx, 78, fmt::format("M98 Q{}: no sequence number N{} in the called program (alarm 078)", q->value, q->value));
             return;
         }
         sub.block = *label;
@@ -351,7 +358,7 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
     sub.start_block = sub.block;
     const auto* l = words.get('L');
     sub.repeats_left = call ? call->repeats : (l ? std::max<std::int64_t>(1, std::lround(l->value)) : 1);
-    Event e = event_at(EventKind::call, frame, view);
+    Event e = event_at(EventKind::call, ctx);
     e.code = call ? static_cast<int>(call->program) : 0;
     e.text = q ? fmt::format("M98 Q{}", q->value) : "M98";
     emit(e);
@@ -361,11 +368,11 @@ void Executor::call_subprogram(Frame& frame, const ast::BlockView& view, const B
 // M99 in a main program: back to its start, or to N p (dialects.md §3.6): the bar feeder's loop.
 // The control runs it until the operator stops it; a dry run runs RunOptions::passes passes and
 // ends with a note, so times and pictures are those of a pass, not of ten million blocks.
-void Executor::main_program_pass(Frame& frame, const ast::BlockView& view, const Word* p) {
+void Executor::main_program_pass(Frame& frame, const BlockContext& ctx, const Word* p) {
     std::optional<std::uint32_t> target = program_of(frame).first_block;
     if (p) target = find_label(frame, p->value);
     if (!target) {
-        alarm(frame, view, 78, fmt::format("M99 P{}: no N{} in this program (alarm 078)", p->value, p->value));
+        alarm(ctx, 78, fmt::format("M99 P{}: no N{} in this program (alarm 078)", p->value, p->value));
         return;
     }
     if (*target >= frame.block) {   // M99 P to a later block: a jump forward, not a new pass
@@ -377,7 +384,7 @@ void Executor::main_program_pass(Frame& frame, const ast::BlockView& view, const
         frame.block = *target;
         return;
     }
-    Event e = event_at(EventKind::message, frame, view);
+    Event e = event_at(EventKind::message, ctx);
     e.code = kerf_warning::program_repeats;
     e.text = fmt::format("the program repeats: M99 in the main program starts it again (a bar-feed loop); the dry run "
                          "stops after {} pass{}, and its times are for {} (kerf run --passes N)",
@@ -388,24 +395,25 @@ void Executor::main_program_pass(Frame& frame, const ast::BlockView& view, const
     frames_.clear();
 }
 
-void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const BlockWords& words, MPhase phase) {
-    for (const ast::CodeRef& c : scan_.m) {
+void Executor::apply_m_codes(Frame& frame, const BlockContext& ctx, MPhase phase) {
+    const BlockWords& words = ctx.words;
+    for (const ast::CodeRef& c : ctx.scan.m) {
         if (!c.info || c.info->has(dialects::traits::after_motion) != (phase == MPhase::after_motion)) continue;
         const dialects::FunctionId f = c.info->function;
-        Event e = event_at(EventKind::message, frame, view);   // the kind is set per code below
+        Event e = event_at(EventKind::message, ctx);   // the kind is set per code below
         e.code = c.key ? *c.key / 10 : 0;
         if (f == fn::spindle_cw || f == fn::spindle_ccw || f == fn::spindle_stop) {
-            spindle_on_ = f != fn::spindle_stop;
+            state_.spindle_on = f != fn::spindle_stop;
             e.kind = EventKind::spindle;
-            e.spindle_rpm = spindle_on_ ? current_rpm(position_[0]) : 0;
-            e.spindle_running = spindle_on_;   // check3: start or stop, for the analyzer (K5010)
+            e.spindle_rpm = state_.spindle_on ? current_rpm(state_, state_.position[0]) : 0;
+            e.spindle_running = state_.spindle_on;   // check3: start or stop, for the analyzer (K5010)
             emit(e);
         } else if (f == fn::tool_change) {
-            tool_ = pending_tool_;
-            if (std::find(result_.tools.begin(), result_.tools.end(), tool_) == result_.tools.end())
-                result_.tools.push_back(tool_);
+            state_.tool = state_.pending_tool;
+            if (std::find(result_.tools.begin(), result_.tools.end(), state_.tool) == result_.tools.end())
+                result_.tools.push_back(state_.tool);
             e.kind = EventKind::tool_change;
-            e.tool = tool_;
+            e.tool = state_.tool;
             emit(e);
         } else if (f == fn::coolant_on || f == fn::coolant_off) {
             e.kind = EventKind::coolant;
@@ -421,31 +429,31 @@ void Executor::apply_m_codes(Frame& frame, const ast::BlockView& view, const Blo
             frames_.clear();
             return;
         } else if (f == fn::subprogram_call) {
-            call_subprogram(frame, view, words);
+            call_subprogram(ctx);
             return;
         } else if (f == fn::local_subprogram_call) {
-            call_local_subprogram(frame, view, words);   // [Haas] M97 (executor_local_call.cpp)
+            call_local_subprogram(ctx);   // [Haas] M97 (executor_local_call.cpp)
             return;
         } else if (f == fn::thread_chamfer_on || f == fn::thread_chamfer_off) {
-            thread_chamfer_ = f == fn::thread_chamfer_on;   // [Haas] M23 / M24 (cycles/haas_lathe.cpp)
+            state_.thread_chamfer = f == fn::thread_chamfer_on;   // [Haas] M23 / M24 (cycles/haas_lathe.cpp)
         } else if (f == fn::subprogram_return) {
             e.kind = EventKind::return_;
             emit(e);
             const auto* p = words.get('P');
             if (frames_.size() == 1) {
-                main_program_pass(frame, view, p);
+                main_program_pass(frame, ctx, p);
                 return;
             }
             if (--frame.repeats_left > 0) {
                 frame.block = frame.start_block;
                 return;
             }
-            pop_frame();
+            pop_frame();   // ctx.frame is gone: only ctx.source() is read below
             if (p) {
                 // M99 P n: back to sequence number n of the caller (dialects.md §3.6).
                 Frame& caller = frames_.back();
                 if (const auto label = find_label(caller, p->value)) caller.block = *label;
-                else alarm(caller, view, 78, fmt::format("M99 P{}: no N{} in the calling program (alarm 078)", p->value, p->value));
+                else alarm(ctx, 78, fmt::format("M99 P{}: no N{} in the calling program (alarm 078)", p->value, p->value));
             }
             return;
         }

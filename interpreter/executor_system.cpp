@@ -83,9 +83,15 @@ constexpr AdditionalRange kAdditionalOffsets[] = {{7001, 48}, {14001, 300}};
 
 }  // namespace
 
-std::optional<macro::Value> ExecutorSystemVariables::read(int number) { return executor_.read_system(number); }
+ExecutorSystemVariables::ExecutorSystemVariables(Executor& executor, const BlockContext& block)
+    : executor_(executor), state_(executor.state_), at_(executor.state_.position), writer_(&executor), block_(&block) {}
+
+std::optional<macro::Value> ExecutorSystemVariables::read(int number) { return executor_.read_system(state_, at_, number); }
 macro::WriteResult ExecutorSystemVariables::write(int number, macro::Value value) {
-    return executor_.write_system(number, value);
+    // Only a block's assignments write (executor_macro.cpp); a reader's hook refuses (a look-ahead,
+    // RunOptions::after_block).
+    if (!writer_) return macro::WriteResult::read_only;
+    return writer_->write_system(*block_, number, value);
 }
 bool ExecutorSystemVariables::read_only(int number) const { return executor_.system_read_only(number); }
 bool ExecutorSystemVariables::modelled(int number) const { return executor_.system_modelled(number); }
@@ -115,34 +121,34 @@ bool Executor::system_read_only(int number) const {
            number == 3007 || number == 3011 || number == 3012;
 }
 
-std::optional<macro::Value> Executor::read_system(int number) {
+std::optional<macro::Value> Executor::read_system(const MachineState& s, const Position& at, int number) const {
     using macro::Value;
     // The dialect's own ranges first (Haas NGC #10000..: executor_dialect_variables.cpp).
-    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return read_dialect_variable(*range, number);
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return read_dialect_variable(s, at, *range, number);
     const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
     // Tool offsets.
     for (const OffsetRange& r : lathe ? std::span<const OffsetRange>(kLatheOffsets) : std::span<const OffsetRange>(kMillOffsets)) {
         if (number < r.first || number >= r.first + r.count) continue;
         const int offset = number - r.first + 1;
         if (offset > setup_.tool_offset_count) return std::nullopt;
-        const auto it = tools_.find(offset);
-        if (it == tools_.end()) return Value::of(0);
+        const auto it = memory_.tools.find(offset);
+        if (it == memory_.tools.end()) return Value::of(0);
         const ToolOffset& t = it->second;
         // Registers are mm; a macro reads them in the program's unit (G20: inches).
-        return Value::of(r.field == OffsetField::tip ? t.tip : *field_of(t, r.field) / unit_scale());
+        return Value::of(r.field == OffsetField::tip ? t.tip : *field_of(t, r.field) / s.unit_scale());
     }
     if ((number >= 1000 && number <= 1035) || (number >= 1100 && number <= 1135)) return Value::of(0);
     if (number == 3000 || number == 3006) return Value::vacant_value();
-    if (number == 3001) return Value::of(result_.total_time_s * 1000.0 - clock_ms_offset_);
-    if (number == 3002) return Value::of(result_.total_time_s / 3600.0 - clock_h_offset_);
+    if (number == 3001) return Value::of(result_.total_time_s * 1000.0 - memory_.clock_ms_offset);
+    if (number == 3002) return Value::of(result_.total_time_s / 3600.0 - memory_.clock_h_offset);
     if (number == 3011 || number == 3012 || number == 3007) return Value::of(0);
-    if (const auto it = stored_system_.find(number); it != stored_system_.end()) return Value::of(it->second);
+    if (const auto it = memory_.stored_system.find(number); it != memory_.stored_system.end()) return Value::of(it->second);
     if (number == 3003 || number == 3004 || number == 3005 || number == 3901 || number == 3902) return Value::of(0);
     // #4001-#4030 (and #4201-#4230, the block being executed: the same in a dry run).
     const int modal = number >= 4201 && number <= 4330 ? number - 200 : number;
     if (modal >= 4001 && modal <= 4030) {
         const auto group = dialect_.group_index(fmt::format("{:02}", modal - 4000));
-        const dialects::CodeInfo* code = group ? modal_[*group] : nullptr;
+        const dialects::CodeInfo* code = group ? s.modal[*group] : nullptr;
         if (!code) return Value::vacant_value();
         const std::string& spelling = code->spelling;
         return Value::of(std::strtod(spelling.c_str() + 1, nullptr));
@@ -156,8 +162,8 @@ std::optional<macro::Value> Executor::read_system(int number) {
             if (modal - 4100 == n) letter = l;
         if (!letter) return Value::vacant_value();
         if (letter == 'O') return Value::of(static_cast<double>(program_of(frames_.back()).number.value_or(0)));
-        if (letter == 'T' && dialect_.machine == dialects::MachineKind::lathe) return Value::of(tool_ * 100 + tool_offset_);
-        const auto& last = last_words_[static_cast<std::size_t>(letter - 'A')];
+        if (letter == 'T' && dialect_.machine == dialects::MachineKind::lathe) return Value::of(s.tool * 100 + s.tool_offset);
+        const auto& last = s.last_words[static_cast<std::size_t>(letter - 'A')];
         return last ? Value::of(*last) : Value::vacant_value();
     }
     // Positions: per axis in the machine's order.
@@ -167,21 +173,21 @@ std::optional<macro::Value> Executor::read_system(int number) {
         const auto a = axis_of_letter(setup_.axis_order[static_cast<std::size_t>(i)]);
         return a ? std::optional<std::size_t>(static_cast<std::size_t>(*a)) : std::nullopt;
     };
-    if (const auto a = axis_at(kEndPoint)) return Value::of(position_[*a]);
-    if (const auto a = axis_at(kWorkPosition)) return Value::of(position_[*a]);
-    if (const auto a = axis_at(kMachinePosition)) return Value::of(position_[*a] + machine_offset()[*a] / axis_scale(*a));
+    if (const auto a = axis_at(kEndPoint)) return Value::of(at[*a]);
+    if (const auto a = axis_at(kWorkPosition)) return Value::of(at[*a]);
+    if (const auto a = axis_at(kMachinePosition)) return Value::of(at[*a] + machine_offset(s)[*a] / s.axis_scale(*a));
     if (const auto a = axis_at(kSkipPosition)) return Value::of(0);
-    if (const auto a = axis_at(kToolOffsetValue)) return Value::of(tool_offset()[*a] / axis_scale(*a));
+    if (const auto a = axis_at(kToolOffsetValue)) return Value::of(tool_offset(s)[*a] / s.axis_scale(*a));
     if (const auto a = axis_at(kServoDeviation)) return Value::of(0);
     if (number >= kWorkOffsets && number <= kWorkOffsetsEnd) {
         const int set = (number - kWorkOffsets) / kAxesPerRange;   // 0 = external, 1..6 = G54..G59
         if (const auto a = axis_at(kWorkOffsets + set * kAxesPerRange))
-            return Value::of((set == 0 ? external_offset_[*a] : work_offsets_[static_cast<std::size_t>(set - 1)][*a]) /
-                             axis_scale(*a));
+            return Value::of((set == 0 ? s.external_offset[*a] : s.work_offsets[static_cast<std::size_t>(set - 1)][*a]) /
+                             s.axis_scale(*a));
     }
-    if (const auto at = additional_variable(number)) {
-        const auto it = additional_offsets_.find(at->first);
-        return Value::of(it == additional_offsets_.end() ? 0.0 : it->second[at->second] / axis_scale(at->second));
+    if (const auto slot = additional_variable(number)) {
+        const auto it = memory_.additional_offsets.find(slot->first);
+        return Value::of(it == memory_.additional_offsets.end() ? 0.0 : it->second[slot->second] / s.axis_scale(slot->second));
     }
     return std::nullopt;
 }
@@ -201,28 +207,31 @@ std::optional<std::pair<int, std::size_t>> Executor::additional_variable(int num
     return std::nullopt;
 }
 
-macro::WriteResult Executor::write_system(int number, macro::Value value) {
+macro::WriteResult Executor::write_system(const BlockContext& ctx, int number, macro::Value value) {
     using macro::WriteResult;
-    if (const dialects::VariableRange* range = dialect_.variable_range(number)) return write_dialect_variable(*range, number, value);
+    if (const dialects::VariableRange* range = dialect_.variable_range(number)) {
+        ExecutorSystemVariables system(*this, ctx);
+        return write_dialect_variable(*range, number, value, system);
+    }
     const double v = value.or_zero();
     const bool lathe = dialect_.machine == dialects::MachineKind::lathe;
     if (number == 3000) {
         // Macro alarm: number 3000 + n, the comment of the block is the message ([FANUC]).
-        alarm(*frame_, *view_, 3000 + static_cast<int>(std::lround(v)), block_comment(*view_));
+        alarm(ctx, 3000 + static_cast<int>(std::lround(v)), block_comment(ctx.view));
         return WriteResult::ok;
     }
     if (number == 3006) {
-        Event e = event_at(EventKind::stop, *frame_, *view_);
+        Event e = event_at(EventKind::stop, ctx);
         e.code = 3006;
-        e.text = block_comment(*view_);
+        e.text = block_comment(ctx.view);
         emit(e);
         if (options_.stop_at_m00) stopped_ = true;
         return WriteResult::ok;
     }
-    if (number == 3001) { clock_ms_offset_ = result_.total_time_s * 1000.0 - v; return WriteResult::ok; }
-    if (number == 3002) { clock_h_offset_ = result_.total_time_s / 3600.0 - v; return WriteResult::ok; }
+    if (number == 3001) { memory_.clock_ms_offset = result_.total_time_s * 1000.0 - v; return WriteResult::ok; }
+    if (number == 3002) { memory_.clock_h_offset = result_.total_time_s / 3600.0 - v; return WriteResult::ok; }
     if (number == 3003 || number == 3004 || number == 3005 || number == 3901 || number == 3902) {
-        stored_system_[number] = v;
+        memory_.stored_system[number] = v;
         return WriteResult::ok;
     }
     if (number >= 1100 && number <= 1135) return WriteResult::ok;
@@ -230,9 +239,9 @@ macro::WriteResult Executor::write_system(int number, macro::Value value) {
         if (number < r.first || number >= r.first + r.count) continue;
         const int offset = number - r.first + 1;
         if (offset > setup_.tool_offset_count) return WriteResult::undefined;
-        ToolOffset& t = tools_[offset];
+        ToolOffset& t = memory_.tools[offset];
         if (r.field == OffsetField::tip) t.tip = static_cast<int>(std::lround(v));
-        else *field_of(t, r.field) = v * unit_scale();
+        else *field_of(t, r.field) = v * state_.unit_scale();
         return WriteResult::ok;
     }
     if (number >= kWorkOffsets && number <= kWorkOffsetsEnd) {
@@ -243,13 +252,13 @@ macro::WriteResult Executor::write_system(int number, macro::Value value) {
         if (!a) return WriteResult::undefined;
         // The tool stays where it is; its work coordinates follow the new offset.
         change_offsets([&] {
-            Position& reg = set == 0 ? external_offset_ : work_offsets_[static_cast<std::size_t>(set - 1)];
-            reg[static_cast<std::size_t>(*a)] = v * axis_scale(static_cast<std::size_t>(*a));
+            Position& reg = set == 0 ? state_.external_offset : state_.work_offsets[static_cast<std::size_t>(set - 1)];
+            reg[static_cast<std::size_t>(*a)] = v * state_.axis_scale(static_cast<std::size_t>(*a));
         });
         return WriteResult::ok;
     }
     if (const auto at = additional_variable(number)) {
-        change_offsets([&] { additional_offsets_[at->first][at->second] = v * axis_scale(at->second); });
+        change_offsets([&] { memory_.additional_offsets[at->first][at->second] = v * state_.axis_scale(at->second); });
         return WriteResult::ok;
     }
     return system_read_only(number) ? WriteResult::read_only : WriteResult::undefined;

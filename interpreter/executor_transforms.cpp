@@ -29,35 +29,36 @@ bool has_axis_word(const BlockWords& words) {
 
 }  // namespace
 
-// The block's G15/G16, G50/G51, G50.1/G51.1. False when the block has G51, G51.1 or G50.1 with
+// The block's G15/G16, G50/G51, G50.1/G51.1. Done when the block has G51, G51.1 or G50.1 with
 // axis words: they are a centre or mirror positions, and the block does not move (like G68); a
-// bare `G50.1` in a safety block lets the rest of the block (M codes) run.
-bool Executor::apply_program_transforms(const ast::BlockView& view, const BlockWords& words) {
+// bare `G50.1` in a safety block lets the rest of the block (M codes) run (not_mine).
+Outcome Executor::apply_program_transforms(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     const bool axis_words = has_axis_word(words);
     bool moves = true;
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info || !(code_class_of(*c.info) & kProgramTransformCode)) continue;
         const dialects::FunctionId f = c.info->function;
         if (f == fn::polar_coordinate_command || f == fn::polar_coordinate_command_cancel) {
             const bool on = f == fn::polar_coordinate_command;
-            if (on != polar_command_) note_transform(view, on ? "polar coordinate command (G16)" : "polar coordinate command cancel (G15)");
-            polar_command_ = on;
+            if (on != state_.polar_command) note_transform(ctx, on ? "polar coordinate command (G16)" : "polar coordinate command cancel (G15)");
+            state_.polar_command = on;
         } else if (f == fn::scaling) {
-            start_scaling(view, words);
+            start_scaling(ctx);
             moves = !axis_words;
-        } else if (f == fn::scaling_cancel && scaling_) {
-            scaling_.reset();
-            note_transform(view, "scaling cancel (G50)");
+        } else if (f == fn::scaling_cancel && state_.scaling) {
+            state_.scaling.reset();
+            note_transform(ctx, "scaling cancel (G50)");
         } else if (f == fn::mirror || f == fn::mirror_cancel) {
-            set_mirror(view, words, f == fn::mirror);
+            set_mirror(ctx, f == fn::mirror);
             moves = !axis_words;
         }
     }
-    return moves;
+    return unless_stopped(moves ? Outcome::not_mine : Outcome::done);
 }
 
-void Executor::note_transform(const ast::BlockView& view, std::string text) {
-    Event e = event_at(EventKind::coordinate_change, *frame_, view);
+void Executor::note_transform(const BlockContext& ctx, std::string text) {
+    Event e = event_at(EventKind::coordinate_change, ctx);
     e.text = std::move(text);
     emit(std::move(e));
 }
@@ -71,14 +72,15 @@ double Executor::magnification(const Word& w) const {
 // one is centred on the current point. P is a magnification from 0 up: zero or negative is FANUC
 // alarm 142 (illegal scale rate), as is a zero I/J/K. Without P, I, J, K the magnification is 1
 // (FANUC reads parameter 5411 there; kerf has no such setting).
-void Executor::start_scaling(const ast::BlockView& view, const BlockWords& words) {
+void Executor::start_scaling(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
     Scaling s;
     // The centre is in the frame scaling maps from: inside G51.1 (a mirror is its own inverse),
     // outside G68 (FANUC nesting G51.1 ⊃ G51 ⊃ G68; transforms.hpp).
-    const Position here = ProgramFrame{mirror_, std::nullopt, std::nullopt}.to_program(position_);
+    const Position here = ProgramFrame{state_.mirror, std::nullopt, std::nullopt}.to_program(state_.position);
     for (std::size_t a = 0; a < 3; ++a) {
         const auto* w = words.get(kAxisLetters[a]);
-        s.center[a] = w ? axis_value(*w, kAxisLetters[a]) : here[a];
+        s.center[a] = w ? axis_value(state_, *w, kAxisLetters[a]) : here[a];
     }
     const auto* p = words.get('P');
     if (p) s.factor.fill(magnification(*p));
@@ -86,35 +88,36 @@ void Executor::start_scaling(const ast::BlockView& view, const BlockWords& words
         if (const auto* k = words.get(static_cast<char>('I' + a))) s.factor[a] = magnification(*k);
     const bool bad = (p && s.factor[0] <= 0) || std::any_of(s.factor.begin(), s.factor.end(), [](double k) { return k == 0; });
     if (bad) {
-        alarm(*frame_, view, 142, fmt::format("G51: magnification {:g} {:g} {:g} is not allowed (FANUC alarm 142, illegal "
+        alarm(ctx, 142, fmt::format("G51: magnification {:g} {:g} {:g} is not allowed (FANUC alarm 142, illegal "
                                               "scale rate: P must be positive, I/J/K not zero)",
                                               s.factor[0], s.factor[1], s.factor[2]));
         return;
     }
-    scaling_ = s;
-    note_transform(view, fmt::format("scaling (G51) about X{:g} Y{:g} Z{:g}, magnification X{:g} Y{:g} Z{:g}", s.center[0],
+    state_.scaling = s;
+    note_transform(ctx, fmt::format("scaling (G51) about X{:g} Y{:g} Z{:g}, magnification X{:g} Y{:g} Z{:g}", s.center[0],
                                      s.center[1], s.center[2], s.factor[0], s.factor[1], s.factor[2]));
 }
 
 // `G51.1 X_ Y_ ...`: each named axis is mirrored about the given position (absolute program
 // coordinates); `G50.1 X_ ...` cancels the named axes, and kerf reads a G50.1 without axis words
 // as cancelling all of them (FANUC wants the axes named) [FANUC].
-void Executor::set_mirror(const ast::BlockView& view, const BlockWords& words, bool on) {
+void Executor::set_mirror(const BlockContext& ctx, bool on) {
+    const BlockWords& words = ctx.words;
     const bool named = has_axis_word(words);
     std::string axes;
     for (std::size_t a = 0; a < kAxisCount; ++a) {
         const char letter = kAxisLetters[a];
         const auto* w = words.get(letter);
         if (on && w) {
-            mirror_[a] = axis_value(*w, letter);
-            axes += fmt::format(" {}{:g}", letter, *mirror_[a]);
-        } else if (!on && mirror_[a] && (w || !named)) {
-            mirror_[a].reset();
+            state_.mirror[a] = axis_value(state_, *w, letter);
+            axes += fmt::format(" {}{:g}", letter, *state_.mirror[a]);
+        } else if (!on && state_.mirror[a] && (w || !named)) {
+            state_.mirror[a].reset();
             axes += fmt::format(" {}", letter);
         }
     }
     if (axes.empty()) return;
-    note_transform(view, on ? fmt::format("mirror image (G51.1) about{}", axes) : fmt::format("mirror image cancel (G50.1){}", axes));
+    note_transform(ctx, on ? fmt::format("mirror image (G51.1) about{}", axes) : fmt::format("mirror image cancel (G50.1){}", axes));
 }
 
 // G16 [FANUC]: in the plane of G17/G18/G19 the first axis word is the radius, the second the
@@ -128,8 +131,8 @@ void Executor::set_mirror(const ast::BlockView& view, const BlockWords& words, b
 // `start` and `to` are in the program's frame (transforms.hpp undone), so G16 inside G51/G68
 // describes the pattern before it is scaled and turned. G51/G51.1/G68/G52/G92/G10 blocks do not
 // come here (their words are centres and values, not polar: [FANUC]).
-void Executor::polar_target(const BlockWords& words, const Position& start, Position& to) const {
-    const auto [i, j] = plane_indices(flags_.plane);
+void Executor::polar_target(const MachineState& s, const BlockWords& words, const Position& start, Position& to) const {
+    const auto [i, j] = plane_indices(s.flags.plane);
     const auto word = [&](std::size_t axis) -> const Word* {
         const Word* w = words.get(kAxisLetters[axis]);
         return w && !w->data ? w : nullptr;
@@ -142,14 +145,14 @@ void Executor::polar_target(const BlockWords& words, const Position& start, Posi
     double r = std::hypot(start[i], start[j]);
     double centre_i = 0, centre_j = 0;
     if (radius) {
-        r = axis_value(*radius, kAxisLetters[i]);
-        if (flags_.incremental) {
+        r = axis_value(s, *radius, kAxisLetters[i]);
+        if (s.flags.incremental) {
             centre_i = start[i];
             centre_j = start[j];
         }
     }
     double degrees = here_angle;
-    if (angle) degrees = axis_value(*angle, kAxisLetters[j]) + (flags_.incremental ? here_angle : 0.0);
+    if (angle) degrees = axis_value(s, *angle, kAxisLetters[j]) + (s.flags.incremental ? here_angle : 0.0);
     to[i] = centre_i + r * std::cos(degrees * kDeg);
     to[j] = centre_j + r * std::sin(degrees * kDeg);
 }

@@ -42,48 +42,49 @@ std::optional<std::pair<std::size_t, std::size_t>> cylinder_axes(char rotary) {
 }  // namespace
 
 // A coordinate of a programmed point in the plane, geometric mm (lathe X as a radius).
-double Executor::plane_mm(std::size_t axis, double value) const {
-    return (axis == kX && setup_.diameter_x ? value / 2 : value) * unit_scale();
+double Executor::plane_mm(const MachineState& s, std::size_t axis, double value) const {
+    return (axis == kX && setup_.diameter_x ? value / 2 : value) * s.unit_scale();
 }
-double Executor::program_value(std::size_t axis, double mm) const {
-    return (axis == kX && setup_.diameter_x ? mm * 2 : mm) / unit_scale();
-}
-
-motion::P2 Executor::transform_point(const Position& p) const {
-    const PlaneTransform& t = *transform_;
-    return {plane_mm(t.linear, p[t.linear]), p[t.rotary] * unit_scale()};   // the virtual axis: mm, never a diameter
+double Executor::program_value(const MachineState& s, std::size_t axis, double mm) const {
+    return (axis == kX && setup_.diameter_x ? mm * 2 : mm) / s.unit_scale();
 }
 
-std::optional<bool> Executor::apply_plane_transform(const ast::BlockView& view, const BlockWords& words) {
-    if (transform_) {
-        if (const auto improper = improper_in_transform(view)) {
-            alarm(*frame_, view, transform_->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
-                  fmt::format("{} is not allowed in {} mode ([FANUC] alarm {})", *improper, transform_->code,
-                              transform_->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical));
-            return false;
+motion::P2 Executor::transform_point(const MachineState& s, const Position& p) const {
+    const PlaneTransform& t = *s.transform;
+    return {plane_mm(s, t.linear, p[t.linear]), p[t.rotary] * s.unit_scale()};   // the virtual axis: mm, never a diameter
+}
+
+Outcome Executor::apply_plane_transform(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
+    if (state_.transform) {
+        if (const auto improper = improper_in_transform(ctx)) {
+            alarm(ctx, state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical,
+                  fmt::format("{} is not allowed in {} mode ([FANUC] alarm {})", *improper, state_.transform->code,
+                              state_.transform->map.kind == motion::PlaneMap::Kind::polar ? kImproperInPolar : kImproperInCylindrical));
+            return Outcome::stopped;
         }
     }
-    for (const ast::CodeRef& c : scan_.g) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
         if (!c.info) continue;
         const dialects::FunctionId f = c.info->function;
-        if (f == fn::polar_interpolation_off && transform_ && transform_->map.kind == motion::PlaneMap::Kind::polar) {
-            if (!transform_switch_allowed(view, c.info->spelling)) return false;
-            transform_.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
-        } else if (f == fn::polar_interpolation_on && !transform_) {
-            if (!transform_switch_allowed(view, c.info->spelling)) return false;
-            if (words.get('C')) return start_polar_with_c(view, words, c.info->spelling);
+        if (f == fn::polar_interpolation_off && state_.transform && state_.transform->map.kind == motion::PlaneMap::Kind::polar) {
+            if (!transform_switch_allowed(ctx, c.info->spelling)) return Outcome::stopped;
+            state_.transform.reset();   // G113: the ordinary modes resume at the real X/C (cycles.md §18)
+        } else if (f == fn::polar_interpolation_on && !state_.transform) {
+            if (!transform_switch_allowed(ctx, c.info->spelling)) return Outcome::stopped;
+            if (words.get('C')) return start_polar_with_c(ctx, c.info->spelling);
             start_polar(c.info->spelling);
         } else if (f == fn::cylindrical_interpolation) {
-            if (!cylindrical_code(view, words, c.info->spelling)) return false;
-            if (!transform_) return std::nullopt;   // G07.1 C0: the block's other words run as usual
+            if (cylindrical_code(ctx, c.info->spelling) == Outcome::stopped) return Outcome::stopped;
+            if (!state_.transform) return Outcome::not_mine;   // G07.1 C0: the block's other words run as usual
         }
     }
-    if (!transform_) return std::nullopt;
-    return transform_move(view, words);
+    if (!state_.transform) return Outcome::not_mine;
+    return transform_move(ctx);
 }
 
-std::optional<std::string> Executor::improper_in_transform(const ast::BlockView&) const {
-    for (const std::vector<ast::CodeRef>* codes : {&scan_.g, &scan_.m})
+std::optional<std::string> Executor::improper_in_transform(const BlockContext& ctx) const {
+    for (const std::vector<ast::CodeRef>* codes : {&ctx.scan.g, &ctx.scan.m})
         for (const ast::CodeRef& c : *codes) {
             if (!c.info) continue;
             // [FANUC] the modes allow motion G00–G03, dwell, compensation, feed modes and macro
@@ -91,12 +92,12 @@ std::optional<std::string> Executor::improper_in_transform(const ast::BlockView&
             // under the program (traits::not_in_plane_transform).
             const bool improper = c.info->has(dialects::traits::cycle | dialects::traits::not_in_plane_transform) ||
                                   (c.info->function == fn::polar_interpolation_on &&
-                                   transform_->map.kind == motion::PlaneMap::Kind::cylindrical) ||
+                                   state_.transform->map.kind == motion::PlaneMap::Kind::cylindrical) ||
                                   (c.info->function == fn::cylindrical_interpolation &&
-                                   transform_->map.kind == motion::PlaneMap::Kind::polar);
+                                   state_.transform->map.kind == motion::PlaneMap::Kind::polar);
             if (improper) return fmt::format("{} ({})", c.info->spelling, c.info->function);
         }
-    if (flags_.motion == fn::thread_cutting) return std::string("thread cutting");
+    if (state_.flags.motion == fn::thread_cutting) return std::string("thread cutting");
     return std::nullopt;
 }
 
@@ -108,16 +109,17 @@ void Executor::start_polar(const std::string& spelling) {
     t.map = {motion::PlaneMap::Kind::polar, 0};
     t.linear = kX;
     t.rotary = kC;
-    t.origin_deg = position_[kC];
-    t.programmed = position_;
+    t.origin_deg = state_.position[kC];
+    t.programmed = state_.position;
     t.programmed[kC] = 0;
     t.code = spelling;
-    transform_ = t;
+    state_.transform = t;
 }
 
 // Seed 001 §10.11 writes `G112 C45`: the meaning of C is unknown (cycles.md §18): said, not moved.
-bool Executor::start_polar_with_c(const ast::BlockView& view, const BlockWords& words, const std::string& spelling) {
-    Event e = event_at(EventKind::message, *frame_, view);
+Outcome Executor::start_polar_with_c(const BlockContext& ctx, const std::string& spelling) {
+    const BlockWords& words = ctx.words;
+    Event e = event_at(EventKind::message, ctx);
     e.text = fmt::format("{} C{}: a C word in the {} block has no known meaning (cycles.md §18): ignored", spelling,
                          words.get('C')->value, spelling);
     emit(e);
@@ -127,73 +129,73 @@ bool Executor::start_polar_with_c(const ast::BlockView& view, const BlockWords& 
         if (letter != 'C') rest.words.set(letter, word);
     for (const auto& [letter, word] : words.incremental)
         if (letter != 'C') rest.incremental.set(letter, word);
-    return transform_move(view, rest);
+    return transform_move(ctx.with(rest));
 }
 
 // G07.1 C r starts cylindrical interpolation on a cylinder of radius r (mm), G07.1 C0 ends it
 // (cycles.md §19). The rotary word names the axis: C turns about Z (lathes), A about X, B about
 // Y. C is then programmed in mm of arc: the tool's angle at the start is that many mm of arc.
-bool Executor::cylindrical_code(const ast::BlockView& view, const BlockWords& words, const std::string& spelling) {
+Outcome Executor::cylindrical_code(const BlockContext& ctx, const std::string& spelling) {
+    const BlockWords& words = ctx.words;
     char letter = 0;
     for (const char l : {'C', 'A', 'B'})
         if (const auto* w = words.get(l); w && !letter) letter = l;
     const auto axes = letter ? cylinder_axes(letter) : std::nullopt;
     if (!axes) {
-        alarm(*frame_, view, kIllegalCylinderAxis,
+        alarm(ctx, kIllegalCylinderAxis,
               fmt::format("{} without the rotary axis and radius (G07.1 C<r>) ([FANUC] alarm {})", spelling,
                           kIllegalCylinderAxis));
-        return false;
+        return Outcome::stopped;
     }
-    const double radius = axis_value(*words.get(letter), letter) * unit_scale();
+    const double radius = axis_value(state_, *words.get(letter), letter) * state_.unit_scale();
     if (radius == 0) {
-        transform_.reset();
-        return true;
+        state_.transform.reset();
+        return Outcome::done;
     }
     PlaneTransform t;
     t.map = {motion::PlaneMap::Kind::cylindrical, std::fabs(radius)};
     t.rotary = axes->first;
     t.linear = axes->second;
-    t.programmed = position_;
-    t.programmed[t.rotary] = position_[t.rotary] / kDegPerRad * t.map.cylinder_radius / unit_scale();
+    t.programmed = state_.position;
+    t.programmed[t.rotary] = state_.position[t.rotary] / kDegPerRad * t.map.cylinder_radius / state_.unit_scale();
     t.code = spelling;
-    transform_ = t;
-    return true;
+    state_.transform = t;
+    return Outcome::done;
 }
 
 // A block in the mode: its end point in the Cartesian plane, the line or arc there, its pieces.
 // Under G41/G42 the tool centre's path is offset in the Cartesian plane first (polar_compensation.cpp).
-bool Executor::transform_move(const ast::BlockView& view, const BlockWords& words) {
-    PlaneTransform& t = *transform_;
+Outcome Executor::transform_move(const BlockContext& ctx) {
+    const BlockWords& words = ctx.words;
+    PlaneTransform& t = *state_.transform;
     bool moves = false;
-    const Position real = position_;
-    position_ = t.programmed;   // the block's words are measured from the programmed point
-    const Position to = target_position(words, moves);
-    position_ = real;
-    note_drawing_outside_g01(view);
-    if (compensating() || (scan_.classes & kRadiusCompCode)) return transform_compensated(view, words, to, moves);
-    const dialects::FunctionId motion = flags_.motion;
+    const Position real = state_.position;
+    const Position to = target_position(state_, t.programmed, words, moves);   // measured from the programmed point
+    note_drawing_outside_g01(ctx);
+    if (compensating() || (ctx.scan.classes & kRadiusCompCode)) return transform_compensated(ctx, to, moves);
+    const dialects::FunctionId motion = state_.flags.motion;
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
-    if (!moves) return false;
-    if (motion != fn::rapid && motion != fn::linear && !arc) return false;   // no motion code: nothing moves
-    const motion::P2 a = transform_point(t.programmed), b = transform_point(to);
+    if (!moves) return Outcome::done;
+    if (motion != fn::rapid && motion != fn::linear && !arc) return Outcome::done;   // no motion code: nothing moves
+    const motion::P2 a = transform_point(state_, t.programmed), b = transform_point(state_, to);
     std::function<motion::P2(double)> path = [a, b](double u) { return a + (b - a) * u; };
     if (arc) {
-        const auto geometry = transform_arc(motion == fn::circular_cw, a, b, words);
+        const auto geometry = transform_arc(state_, motion == fn::circular_cw, a, b, words);
         if (!geometry) {
-            transform_arc_alarm(view, geometry);
-            return false;
+            raise(transform_arc_alarm(state_, ctx, geometry));
+            return Outcome::stopped;
         }
         path = [g = geometry.arc()](double u) { return arc_point(g, u); };
     }
-    run_plane_path(motion == fn::rapid ? EventKind::rapid : EventKind::linear, path, {real, to, 0, 1}, view);
+    run_plane_path(motion == fn::rapid ? EventKind::rapid : EventKind::linear, path, {real, to, 0, 1}, ctx);
     if (!stopped_) t.programmed = to;
-    return true;
+    return unless_stopped(Outcome::moved);
 }
 
-void Executor::transform_arc_alarm(const ast::BlockView& view, const motion::ArcResult& geometry) {
-    alarm(*frame_, view, geometry.error().fanuc_alarm,
-          fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", transform_->code,
-                      motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed));
+Alarm Executor::transform_arc_alarm(const MachineState& s, const BlockContext& ctx, const motion::ArcResult& geometry) const {
+    return {ctx.source(), s.position, geometry.error().fanuc_alarm,
+            fmt::format("arc in {} mode: {} (found {:.4f}, allowed {:.4f})", s.transform->code,
+                        motion::describe(geometry.error().code), geometry.error().found, geometry.error().allowed)};
 }
 
 motion::P2 Executor::arc_point(const motion::Arc& arc, double u) {
@@ -204,27 +206,27 @@ motion::P2 Executor::arc_point(const motion::Arc& arc, double u) {
 // A path of the Cartesian plane from the tool's point (path(0)) run as pieces of the real axes;
 // the axes outside the plane go from span.from toward span.to over the part [u0, u1] of the block.
 void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(double)>& path, const PathSpan& span,
-                              const ast::BlockView& view) {
-    const PlaneTransform& t = *transform_;
-    const double start_deg = position_[t.rotary] - t.origin_deg;
+                              const BlockContext& ctx) {
+    const PlaneTransform& t = *state_.transform;
+    const double start_deg = state_.position[t.rotary] - t.origin_deg;
     const std::vector<motion::MappedPoint> pieces = motion::map_path(t.map, path, start_deg, setup_.transform_tolerance);
     const motion::P2 a = path(0);
-    if (kind != EventKind::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(view, pieces, a);
+    if (kind != EventKind::rapid && t.map.kind == motion::PlaneMap::Kind::polar) warn_rotary_speed(ctx, pieces, a);
     motion::P2 previous = a;
     for (const motion::MappedPoint& p : pieces) {
         const double u = span.u0 + (span.u1 - span.u0) * p.t;
         Position end = span.to;   // the axes outside the plane move linearly along the block
         for (std::size_t axis = 0; axis < kAxisCount; ++axis)
             end[axis] = span.from[axis] + (span.to[axis] - span.from[axis]) * u;
-        end[t.linear] = program_value(t.linear, p.machine.a);
+        end[t.linear] = program_value(state_, t.linear, p.machine.a);
         end[t.rotary] = t.origin_deg + p.machine.b;
         double other_mm2 = 0;   // travel of the linear axes outside the plane
         for (std::size_t axis = 0; axis < 3; ++axis)
             if (axis != t.linear && !setup_.rotary[axis]) {
-                const double d = plane_mm(axis, end[axis]) - plane_mm(axis, position_[axis]);
+                const double d = plane_mm(state_, axis, end[axis]) - plane_mm(state_, axis, state_.position[axis]);
                 other_mm2 += d * d;
             }
-        transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), view);
+        transform_piece(kind, end, std::sqrt(motion::dot(p.cartesian - previous, p.cartesian - previous) + other_mm2), ctx);
         if (stopped_) return;
         previous = p.cartesian;
     }
@@ -233,55 +235,55 @@ void Executor::run_plane_path(EventKind kind, const std::function<motion::P2(dou
 // G02/G03 in the Cartesian plane (counter-clockwise from its first axis toward the second): R,
 // or I (first axis, a radius value) and J (second axis) from the start point (cycles.md §18
 // `G2 X-100 C-30 R30`).
-motion::ArcResult Executor::transform_arc(bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const {
+motion::ArcResult Executor::transform_arc(const MachineState& s, bool cw, motion::P2 a, motion::P2 b, const BlockWords& words) const {
     const motion::Vec3 start{a.a, a.b, 0}, end{b.a, b.b, 0};
     const motion::ArcDirection dir = cw ? motion::ArcDirection::cw : motion::ArcDirection::ccw;
     motion::ArcOptions options;
     options.radius_tolerance = setup_.arc_tolerance;
     options.allow_negative_r = setup_.arc_negative_r;
     options.enlarge_small_r = setup_.arc_enlarge_small_r;
-    if (const auto* r = words.get('R')) return motion::arc_from_radius(start, end, motion::Plane::xy, dir, axis_value(*r, 'R') * unit_scale(), options);
+    if (const auto* r = words.get('R')) return motion::arc_from_radius(start, end, motion::Plane::xy, dir, axis_value(s, *r, 'R') * s.unit_scale(), options);
     motion::Vec3 offset{};
-    if (const auto* i = words.get('I')) offset.x = axis_value(*i, 'I') * unit_scale();
-    if (const auto* j = words.get('J')) offset.y = axis_value(*j, 'J') * unit_scale();
+    if (const auto* i = words.get('I')) offset.x = axis_value(s, *i, 'I') * s.unit_scale();
+    if (const auto* j = words.get('J')) offset.y = axis_value(s, *j, 'J') * s.unit_scale();
     return motion::arc_from_center(start, end, motion::Plane::xy, dir, offset, options);
 }
 
 // Near the centre of the polar plane the rotary axis must turn fast: at F mm/min and radius r it
 // turns F/r·(180/π) °/min; past the axis' rapid rate the control clamps it ([FANUC]) and the block
 // takes longer than the trace says (cycles.md §18 "a dry run should warn").
-void Executor::warn_rotary_speed(const ast::BlockView& view, const std::vector<motion::MappedPoint>& pieces, motion::P2 start) {
-    const double limit = setup_.rapid_mm_min[transform_->rotary];
-    const double feed = feed_ * unit_scale();
-    if (limit <= 0 || feed <= 0 || flags_.per_revolution) return;
+void Executor::warn_rotary_speed(const BlockContext& ctx, const std::vector<motion::MappedPoint>& pieces, motion::P2 start) {
+    const double limit = setup_.rapid_mm_min[state_.transform->rotary];
+    const double feed = state_.feed * state_.unit_scale();
+    if (limit <= 0 || feed <= 0 || state_.flags.per_revolution) return;
     const double r = motion::min_radius(pieces, start);
     const double needed = r > 0 ? feed / r * kDegPerRad : INFINITY;
     if (needed <= limit) return;
-    Event e = event_at(EventKind::message, *frame_, view);
+    Event e = event_at(EventKind::message, ctx);
     e.text = fmt::format("{}: the path passes {:.3f} mm from the centre: C would turn {} °/min at F{}, over its rate "
                          "{} °/min: the control slows down and this block takes longer (cycles.md §18)",
-                         transform_->code, r, std::isfinite(needed) ? fmt::format("{:.0f}", needed) : std::string("without limit"),
-                         feed_, limit);
+                         state_.transform->code, r, std::isfinite(needed) ? fmt::format("{:.0f}", needed) : std::string("without limit"),
+                         state_.feed, limit);
     emit(e);
 }
 
 // One piece: a rapid at the axes' own rates (executor_motion.cpp move), a feed piece timed along
 // its Cartesian length at F.
-void Executor::transform_piece(EventKind kind, const Position& to, double length_mm, const ast::BlockView& view) {
+void Executor::transform_piece(EventKind kind, const Position& to, double length_mm, const BlockContext& ctx) {
     if (kind == EventKind::rapid) {
-        move(kind, to, *frame_, view);
+        move(kind, to, ctx);
         return;
     }
-    if (!within_soft_limits(to, to, *frame_, view)) return;
+    if (!within_soft_limits(to, to, ctx)) return;
     Event e;
     e.kind = kind;
-    e.source = source(*frame_, view);
-    e.start = position_;
+    e.source = ctx.source();
+    e.start = state_.position;
     e.end = to;
     e.length_mm = length_mm;
-    time_feed_move(e, length_mm, 0.0, nullptr);   // pieces blend: no exact stop between them
+    time_feed_move(e, length_mm, 0.0, nullptr, modal_feed());   // pieces blend: no exact stop between them
     result_.feed_distance_mm += length_mm;
-    position_ = to;
+    state_.position = to;
     emit(std::move(e));
 }
 

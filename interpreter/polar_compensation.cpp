@@ -28,67 +28,67 @@ constexpr int kIllegalConditions = 145;
 
 // The block's element in the Cartesian plane from the programmed point `start` (read ahead too:
 // comp_pieces comes here while a mode is on).
-std::optional<motion::Element> Executor::transform_element(const BlockWords& words, const Position& start,
-                                                            const Position& to, bool quiet) {
-    const motion::P2 a = transform_point(start), b = transform_point(to);
-    const dialects::FunctionId motion = flags_.motion;
+OrAlarm<motion::Element> Executor::transform_element(const MachineState& s, const BlockContext& ctx, const Position& start,
+                                                      const Position& to) const {
+    const BlockWords& words = ctx.words;
+    const motion::P2 a = transform_point(s, start), b = transform_point(s, to);
+    const dialects::FunctionId motion = ctx.motion_in(s);
     if (motion == fn::circular_cw || motion == fn::circular_ccw) {
-        const motion::ArcResult geometry = transform_arc(motion == fn::circular_cw, a, b, words);
-        if (!geometry) {
-            if (!quiet) transform_arc_alarm(*view_, geometry);
-            return std::nullopt;
-        }
+        const motion::ArcResult geometry = transform_arc(s, motion == fn::circular_cw, a, b, words);
+        if (!geometry) return {{}, transform_arc_alarm(s, ctx, geometry)};
         const motion::Vec3 c = geometry.arc().center;
-        return motion::Element{a, b, true, {c.x, c.y}, !geometry.arc().cw};
+        return {motion::Element{a, b, true, {c.x, c.y}, !geometry.arc().cw}, std::nullopt};
     }
-    return motion::Element{a, b, false, {}, true};
+    return {motion::Element{a, b, false, {}, true}, std::nullopt};
 }
 
-bool Executor::transform_compensated(const ast::BlockView& view, const BlockWords& words, const Position& to, bool moves) {
-    PlaneTransform& t = *transform_;
-    const int side = comp_side_of_block(comp_side_);
-    const dialects::FunctionId motion = flags_.motion;
+Outcome Executor::transform_compensated(const BlockContext& ctx, const Position& to, bool moves) {
+    PlaneTransform& t = *state_.transform;
+    const int side = comp_side_of_block(state_, ctx, state_.comp_side);
+    const dialects::FunctionId motion = ctx.motion_in(state_);
     const bool runs = motion == fn::rapid || motion == fn::linear || motion == fn::circular_cw || motion == fn::circular_ccw;
     if (!moves || !runs) {
-        comp_side_ = side;   // G41/G42/G40 without motion: in force from the next move
-        return false;
+        state_.comp_side = side;   // G41/G42/G40 without motion: in force from the next move
+        return Outcome::done;
     }
     const bool arc = motion == fn::circular_cw || motion == fn::circular_ccw;
     const EventKind kind = motion == fn::rapid ? EventKind::rapid : EventKind::linear;
-    if (!arc && motion::norm(transform_point(to) - transform_point(t.programmed)) <= 1e-9) {
+    if (!arc && motion::norm(transform_point(state_, to) - transform_point(state_, t.programmed)) <= 1e-9) {
         // A move off the plane only (a Z plunge): the offset stays, the compensation goes on with
         // the next move in the plane (as executor_compensation.cpp, semantics.md §5).
-        comp_side_ = side;
-        const motion::P2 at = t.tool.value_or(transform_point(t.programmed));
-        run_plane_path(kind, [at](double) { return at; }, {position_, to, 0, 1}, view);
+        state_.comp_side = side;
+        const motion::P2 at = t.tool.value_or(transform_point(state_, t.programmed));
+        run_plane_path(kind, [at](double) { return at; }, {state_.position, to, 0, 1}, ctx);
         if (!stopped_) t.programmed = to;
-        return true;
+        return unless_stopped(Outcome::moved);
     }
-    Position programmed_end = to;
-    const auto pieces = comp_pieces(view, words, t.programmed, to, false, programmed_end);
-    comp_side_ = side;
-    if (!pieces || pieces->empty()) return false;
-    const Programmed& current = pieces->front().programmed;
-    const std::optional<Programmed> next = comp_look_ahead(scan_.block, to);
-    if (stopped_) return false;   // the block read ahead raised an alarm
-    const auto step = comp_step(current, next, view);
-    if (!step) return false;
-    run_transform_moves(*step, kind, to, view);
-    if (stopped_) return true;
+    CompPieces read = comp_pieces(state_, ctx, t.programmed, to, false);
+    state_.comp_side = side;
+    if (!block_pieces_run(read, ctx)) return unless_stopped(Outcome::done);
+    const Programmed& current = read.pieces.front().programmed;
+    OrAlarm<std::optional<Programmed>> next = comp_look_ahead(ctx, to);
+    if (!next.ok()) {
+        raise(std::move(*next.alarm));   // the block read ahead cannot be read
+        return Outcome::stopped;
+    }
+    const auto step = comp_step(current, next.value, ctx);
+    if (!step) return Outcome::stopped;
+    run_transform_moves(*step, kind, to, ctx);
+    if (stopped_) return Outcome::stopped;
     t.programmed = to;
-    if (!radius_comp_.engaged()) t.tool.reset();   // cancelled: on the programmed point again
-    return true;
+    if (!state_.radius_comp.engaged()) t.tool.reset();   // cancelled: on the programmed point again
+    return Outcome::moved;
 }
 
 // The tool-centre moves of one step, each cut into pieces; the axes outside the plane share the
 // block's travel in proportion to the moves' lengths.
 void Executor::run_transform_moves(const compensation::Step& step, EventKind kind, const Position& to,
-                                   const ast::BlockView& view) {
-    PlaneTransform& t = *transform_;
-    const Position from = position_;
+                                   const BlockContext& ctx) {
+    PlaneTransform& t = *state_.transform;
+    const Position from = state_.position;
     std::vector<std::function<motion::P2(double)>> paths;
     std::vector<double> lengths;
-    motion::P2 tool = t.tool.value_or(transform_point(t.programmed));
+    motion::P2 tool = t.tool.value_or(transform_point(state_, t.programmed));
     for (const compensation::ToolMove& m : step.moves) {
         std::function<motion::P2(double)> path = [a = tool, b = m.end](double u) { return a + (b - a) * u; };
         double length = motion::norm(m.end - tool);
@@ -113,7 +113,7 @@ void Executor::run_transform_moves(const compensation::Step& step, EventKind kin
         const double u0 = total > 0 ? done / total : 0;
         done += lengths[i];
         const double u1 = total > 0 ? done / total : 1;
-        run_plane_path(kind, paths[i], {from, to, u0, u1}, view);
+        run_plane_path(kind, paths[i], {from, to, u0, u1}, ctx);
         if (stopped_) return;
         t.tool = paths[i](1);
     }
@@ -121,9 +121,9 @@ void Executor::run_transform_moves(const compensation::Step& step, EventKind kin
 
 // G12.1/G13.1 may only be given with the compensation cancelled ([FANUC] PS0145; every seed
 // program gives G40 before G113, cycles.md §18).
-bool Executor::transform_switch_allowed(const ast::BlockView& view, const std::string& spelling) {
-    if (!radius_comp_.engaged()) return true;
-    alarm(*frame_, view, kIllegalConditions,
+bool Executor::transform_switch_allowed(const BlockContext& ctx, const std::string& spelling) {
+    if (!state_.radius_comp.engaged()) return true;
+    alarm(ctx, kIllegalConditions,
           fmt::format("{} while tool radius compensation is on: cancel it with G40 and a move first ([FANUC] alarm {})",
                       spelling, kIllegalConditions));
     return false;

@@ -183,11 +183,13 @@ bool near_integer(double x, double& integer) {
 
 class Evaluator {
 public:
-    Evaluator(const ast::SyntaxTree& tree, Variables& variables, const Options& options)
-        : tree_(tree), variables_(variables), options_(options) {}
+    Evaluator(const ast::SyntaxTree& tree, const Variables& variables, SystemVariables& system, const Options& options)
+        : tree_(tree), variables_(variables), system_(system), options_(options) {}
 
     std::optional<Error> error;
 
+    // Each of these is a value or an error: nullopt (a vacant Value for `value`) exactly when
+    // `error` has been set.
     Value value(std::int32_t index);
     std::optional<bool> condition(std::int32_t index);
     std::optional<int> variable_number(std::int32_t index);
@@ -211,7 +213,8 @@ public:
 
 private:
     const ast::SyntaxTree& tree_;
-    Variables& variables_;
+    const Variables& variables_;   // read only: an expression never writes a variable
+    SystemVariables& system_;      // #1000 and up
     const Options& options_;
     int depth_ = 0;
 
@@ -306,8 +309,8 @@ std::optional<int> Evaluator::variable_number(std::int32_t index) {
 Value Evaluator::read_variable(const Expr& e) {
     const auto number = variable_number(static_cast<std::int32_t>(&e - tree_.exprs.data()));
     if (!number) return Value::vacant_value();
-    const std::optional<Value> v = variables_.read(*number);
-    if (!v && !variables_.system().modelled(*number))
+    const std::optional<Value> v = variables_.read(*number, system_);
+    if (!v && !system_.modelled(*number))
         return fail_value(e.range(), codes::variable_number, kerf_alarm::unknown_variable, not_modelled(*number, quote(e)));
     if (!v)
         return fail_value(e.range(), codes::variable_number, 115, no_such_variable(*number, quote(e)));
@@ -662,24 +665,25 @@ std::optional<bool> Evaluator::condition(std::int32_t index) {
 
 }  // namespace
 
-Result evaluate(const ast::SyntaxTree& tree, std::int32_t expr_index, Variables& variables, const Options& options) {
-    Evaluator ev(tree, variables, options);
+Result evaluate(const ast::SyntaxTree& tree, std::int32_t expr_index, const Variables& variables, SystemVariables& system,
+                const Options& options) {
+    Evaluator ev(tree, variables, system, options);
     Value v = ev.value(expr_index);
     if (ev.error) return Result{Value::vacant_value(), std::move(ev.error)};
     return Result{v, std::nullopt};
 }
 
-ConditionResult evaluate_condition(const ast::SyntaxTree& tree, std::int32_t expr_index, Variables& variables,
-                                   const Options& options) {
-    Evaluator ev(tree, variables, options);
+ConditionResult evaluate_condition(const ast::SyntaxTree& tree, std::int32_t expr_index, const Variables& variables,
+                                   SystemVariables& system, const Options& options) {
+    Evaluator ev(tree, variables, system, options);
     const auto c = ev.condition(expr_index);
     if (ev.error) return ConditionResult{std::nullopt, std::move(ev.error)};
     return ConditionResult{c, std::nullopt};
 }
 
-NumberResult variable_number(const ast::SyntaxTree& tree, std::int32_t variable_expr, Variables& variables,
+NumberResult variable_number(const ast::SyntaxTree& tree, std::int32_t variable_expr, const Variables& variables,
                              const Options& options) {
-    Evaluator ev(tree, variables, options);
+    Evaluator ev(tree, variables, variables.system(), options);
     const auto n = ev.variable_number(variable_expr);
     if (ev.error) return NumberResult{0, std::move(ev.error)};
     return NumberResult{*n, std::nullopt};
@@ -688,8 +692,8 @@ NumberResult variable_number(const ast::SyntaxTree& tree, std::int32_t variable_
 // [M-16i] "Replacement #i = <expression>": a replacement copies vacancy (#2=#1 with #1 vacant
 // leaves #2 vacant). "#0 cannot be assigned" and write-protected variables give alarm 116.
 std::optional<Error> assign(const ast::SyntaxTree& tree, const ast::Statement& statement, Variables& variables,
-                            const Options& options) {
-    Evaluator ev(tree, variables, options);
+                            SystemVariables& system, const Options& options) {
+    Evaluator ev(tree, variables, system, options);
     if (statement.kind != ast::StatementKind::assign) {
         ev.fail(statement.range, codes::bad_tree, kerf_alarm::internal, "not an assignment statement");
         return ev.error;
@@ -700,10 +704,10 @@ std::optional<Error> assign(const ast::SyntaxTree& tree, const ast::Statement& s
     if (ev.error) return ev.error;
     const Expr& target = tree.exprs[static_cast<std::size_t>(statement.target)];
     const std::string text(tree.slice(target.range()));
-    switch (variables.write(*number, v)) {
+    switch (variables.write(*number, v, system)) {
         case WriteResult::ok: return std::nullopt;
         case WriteResult::undefined:
-            if (!variables.system().modelled(*number))
+            if (!system.modelled(*number))
                 return Error{target.range(), codes::variable_number, kerf_alarm::unknown_variable, not_modelled(*number, text)};
             return Error{target.range(), codes::variable_number, 115, no_such_variable(*number, text)};
         case WriteResult::read_only:

@@ -90,7 +90,7 @@ struct Result {
 };
 
 struct ConditionResult {
-    std::optional<bool> value;    // nullopt exactly when error is set
+    std::optional<bool> value;    // a value or an error: nullopt exactly when error is set
     std::optional<Error> error;
     bool ok() const { return !error; }
 };
@@ -101,28 +101,47 @@ struct NumberResult {
     bool ok() const { return !error; }
 };
 
+// Expressions only read variables: every evaluation takes them const, so no expression can change
+// one (only `assign` writes). The variables #1000 and up are answered by a SystemVariables object:
+// the one the Variables were built with, or the one given (the interpreter reads a block ahead with
+// the system variables of its copy of the machine state, and writes with those of the block being
+// run).
+
 // The value of expression `expr_index` (an index into tree.exprs). A comparison is not a value
 // (FANUC: "#2=[1 LT 2]" is a format error): it is alarm 114 here; use evaluate_condition.
-Result evaluate(const ast::SyntaxTree& tree, std::int32_t expr_index, Variables& variables,
-                const Options& options = {});
+Result evaluate(const ast::SyntaxTree& tree, std::int32_t expr_index, const Variables& variables,
+                SystemVariables& system, const Options& options = {});
+inline Result evaluate(const ast::SyntaxTree& tree, std::int32_t expr_index, const Variables& variables,
+                       const Options& options = {}) {
+    return evaluate(tree, expr_index, variables, variables.system(), options);
+}
 
 // The condition of IF [..] GOTO/THEN and WHILE [..] DO: a comparison (EQ NE GT LT GE LE), in
 // brackets or not, or (Options::logical_conditions) AND/OR/XOR of two conditions. Anything
 // else is alarm 114.
-ConditionResult evaluate_condition(const ast::SyntaxTree& tree, std::int32_t expr_index,
-                                   Variables& variables, const Options& options = {});
+ConditionResult evaluate_condition(const ast::SyntaxTree& tree, std::int32_t expr_index, const Variables& variables,
+                                   SystemVariables& system, const Options& options = {});
+inline ConditionResult evaluate_condition(const ast::SyntaxTree& tree, std::int32_t expr_index,
+                                          const Variables& variables, const Options& options = {}) {
+    return evaluate_condition(tree, expr_index, variables, variables.system(), options);
+}
 
 // The number a variable node (#1, #[#2+1]) designates: its index expression rounded half away
 // from zero (#[1.4] is #1, #[1.5] is #2; a vacant index is #0). Alarm 115 when the index is
 // negative or too large. Does not check that the variable exists.
-NumberResult variable_number(const ast::SyntaxTree& tree, std::int32_t variable_expr,
-                             Variables& variables, const Options& options = {});
+NumberResult variable_number(const ast::SyntaxTree& tree, std::int32_t variable_expr, const Variables& variables,
+                             const Options& options = {});
 
 // Executes `#target = value` (a statement of kind assign): evaluates the value, then the target
-// number, then writes. Replacement keeps vacancy (#1=#0 makes #1 vacant). Errors: those of the
-// expressions, 115 (no such variable), 116 (#0 or a read-only variable), 119 (value refused).
-std::optional<Error> assign(const ast::SyntaxTree& tree, const ast::Statement& statement,
-                            Variables& variables, const Options& options = {});
+// number, then writes (#1000 and up through `system`). Replacement keeps vacancy (#1=#0 makes #1
+// vacant). Errors: those of the expressions, 115 (no such variable), 116 (#0 or a read-only
+// variable), 119 (value refused).
+std::optional<Error> assign(const ast::SyntaxTree& tree, const ast::Statement& statement, Variables& variables,
+                            SystemVariables& system, const Options& options = {});
+inline std::optional<Error> assign(const ast::SyntaxTree& tree, const ast::Statement& statement, Variables& variables,
+                                   const Options& options = {}) {
+    return assign(tree, statement, variables, variables.system(), options);
+}
 
 // The classic two-argument arc tangent ATAN[a]/[b]: the grammar reads it as a division whose left
 // side is ATAN with one argument and whose right side is a bracket. Returns the indices of a and

@@ -23,7 +23,7 @@ Variables::Variables(SystemVariables& system) : system_(&system) {
     levels_.emplace_back();   // level 0, all vacant (Value{} is vacant)
 }
 
-std::optional<Value> Variables::read(int number) const {
+std::optional<Value> Variables::read(int number, SystemVariables& system) const {
     using namespace numbers;
     if (number == vacant) return Value::vacant_value();
     if (in(number, local_first, local_last)) return levels_.back()[static_cast<std::size_t>(number - local_first)];
@@ -31,18 +31,18 @@ std::optional<Value> Variables::read(int number) const {
         return cleared_[static_cast<std::size_t>(number - common_cleared_first)];
     if (in(number, common_kept_first, common_kept_last)) return kept_[static_cast<std::size_t>(number - common_kept_first)];
     if (number < 0) return std::nullopt;
-    return system_->read(number);
+    return system.read(number);
 }
 
-bool Variables::read_only(int number) const {
+bool Variables::read_only(int number, const SystemVariables& system) const {
     // #0 "cannot be assigned" ([M-16i] "Null variables"); the rest is the interpreter's call.
-    return number == numbers::vacant || system_->read_only(number);
+    return number == numbers::vacant || system.read_only(number);
 }
 
-WriteResult Variables::write(int number, Value value) {
+WriteResult Variables::write(int number, Value value, SystemVariables& system) {
     using namespace numbers;
     if (number < 0) return WriteResult::undefined;
-    if (read_only(number)) return WriteResult::read_only;
+    if (read_only(number, system)) return WriteResult::read_only;
     if (value.vacant) value = Value::vacant_value();
     if (in(number, local_first, local_last)) {
         levels_.back()[static_cast<std::size_t>(number - local_first)] = value;
@@ -56,7 +56,7 @@ WriteResult Variables::write(int number, Value value) {
         kept_[static_cast<std::size_t>(number - common_kept_first)] = value;
         return WriteResult::ok;
     }
-    return system_->write(number, value);
+    return system.write(number, value);
 }
 
 void Variables::push_level() { levels_.emplace_back(); }

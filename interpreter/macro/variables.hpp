@@ -93,10 +93,15 @@ public:
     SystemVariables& system() const { return *system_; }
 
     // nullopt: no variable has this number (the evaluator reports alarm 115).
-    std::optional<Value> read(int number) const;
+    std::optional<Value> read(int number) const { return read(number, *system_); }
     // #0 and numbers the system hook protects are read-only (alarm 116).
-    WriteResult write(int number, Value value);
-    bool read_only(int number) const;
+    WriteResult write(int number, Value value) { return write(number, value, *system_); }
+    bool read_only(int number) const { return read_only(number, *system_); }
+    // The same with the numbers #1000 and up answered by `system` instead of the hook of this object
+    // (the interpreter's system variables of one machine state, or of the block being run).
+    std::optional<Value> read(int number, SystemVariables& system) const;
+    WriteResult write(int number, Value value, SystemVariables& system);
+    bool read_only(int number, const SystemVariables& system) const;
 
     // Macro call levels (FANUC: levels 0 to 4, G65/G66 calls nest 4 deep; the limit belongs to the
     // interpreter, which knows the control). A new level's #1-#33 are vacant.

@@ -42,6 +42,26 @@ TEST_CASE("G41/G42 on a mill: a square outside and inside") {
     }
 }
 
+// The look-ahead of compensation reads the next motion block through const functions of the live
+// state (executor.hpp comp_look_ahead): an alarm there is the next block's, raised by the running
+// block before it moves, with the tool where it stands. D1 = 5, G41: the start-up N3 ends at
+// (0,5), perpendicular to N4's +X; N4 reads N5 ahead, whose Y[1/0] is alarm 112: the alarm is on
+// line 5 at (0,5), and N4 makes no move.
+TEST_CASE("G41 on a mill: an alarm in the block read ahead stops the run where the tool stands") {
+    const Run r = run_bare("O1\nG90 G17 G0 X-10. Y0.\nG41 D1 G1 X0. F100.\nX20.\nY[1/0]\nM30\n", "fanuc-mill",
+                           [](Setup& s) { s.tools[1].radius = 5; });
+    require_alarm(r, 112);
+    const Event& a = r.result.alarms[0];
+    CHECK(a.source.line == 5);
+    CHECK(a.end[X] == Approx(0).margin(1e-9));
+    CHECK(a.end[Y] == Approx(5));
+    const auto m = moves(r);
+    REQUIRE(m.size() == 2);   // the rapid of N2 and the start-up of N3
+    CHECK(m[1].end[X] == Approx(0).margin(1e-9));
+    CHECK(m[1].end[Y] == Approx(5));
+    CHECK(moves_on_line(r, 4).empty());
+}
+
 // A full circle R20 about the origin from (20,0), entered and left along +Y (tangent there):
 // G41 (left of counter-clockwise travel = inside) r5 runs R15 from (15,0); G42 R25 from (25,0);
 // the cancel ends on the programmed (20,10).

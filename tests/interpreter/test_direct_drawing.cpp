@@ -18,6 +18,21 @@ void check_center(const Event& e, double x, double z) {
     CHECK((*e.center)[Z] == Approx(z).margin(0.001));
 }
 
+// A mill's G17 fillet from +X travel into +Y travel (a G03 quarter): the line to (x_in, 0), the
+// arc to (x_corner, r) about (x_in, r), to 0.001 mm (the G17 moves of `line`).
+void check_xy_fillet(const Run& r, std::uint32_t line, double x_in, double x_corner, double radius) {
+    const std::vector<Event> m = moves_on_line(r, line);
+    REQUIRE(m.size() == 2);
+    CHECK(m[0].end[X] == Approx(x_in));
+    CHECK(m[0].end[Y] == Approx(0).margin(1e-9));
+    CHECK(m[1].kind == EventKind::arc_ccw);
+    CHECK(m[1].end[X] == Approx(x_corner));
+    CHECK(m[1].end[Y] == Approx(radius));
+    REQUIRE(m[1].center);
+    CHECK((*m[1].center)[X] == Approx(x_in));
+    CHECK((*m[1].center)[Y] == Approx(radius));
+}
+
 }  // namespace
 
 // semantics.md §10.2, O0012 (program exact but for the G10/T/spindle lines, which do not change
@@ -155,16 +170,37 @@ TEST_CASE("direct drawing on a mill (fanuc-mill G17): ,R between two lines") {
     const Run r = run("O1\nG17 G90 G0 X0 Y0\nG1 X50. ,R10. F100.\nY40.\nM30\n", "fanuc-mill");
     require_clean(r);
     // +X then +Y: turn +90° (G03), setback 10: X40 Y0 → X50 Y10 about X40 Y10.
-    const std::vector<Event> m = moves_on_line(r, 3);
-    REQUIRE(m.size() == 2);
-    CHECK(m[0].end[X] == Approx(40));
-    CHECK(m[0].end[Y] == Approx(0).margin(1e-9));
-    CHECK(m[1].kind == EventKind::arc_ccw);
-    CHECK(m[1].end[X] == Approx(50));
-    CHECK(m[1].end[Y] == Approx(10));
-    REQUIRE(m[1].center);
-    CHECK((*m[1].center)[X] == Approx(40));
-    CHECK((*m[1].center)[Y] == Approx(10));
+    check_xy_fillet(r, 3, 40, 50, 10);
+}
+
+// The next block is read ahead from the point the running block is programmed to (semantics.md
+// §10.1 (c)): the executor reads it through const functions of the live state (executor.hpp
+// look_ahead), the tool taken to stand at that point. So #5001 in the block
+// read ahead is X10, the end of N3: the corner is +X → +Y, a 90° turn, setback 2: X8 Y0, then
+// the fillet about X8 Y2 to X10 Y2; N4 then runs from there to X10 Y10 (its #5001 is the tool's
+// X10). Read with the tool where it stood before N3 (X0) the next block would run to X0 Y10, a
+// 135° turn with setback 2·tan 67.5° = 4.828, and N3 would end at X5.172.
+TEST_CASE("direct drawing: the block read ahead reads #5001 at the end of the running block") {
+    const Run r = run("O1\nG17 G90 G0 X0 Y0\nG1 X10. Y0 ,R2. F100.\nX[#5001] Y10.\nM30\n", "fanuc-mill");
+    require_clean(r);
+    check_xy_fillet(r, 3, 8, 10, 2);
+    const std::vector<Event> next = moves_on_line(r, 4);
+    REQUIRE(next.size() == 1);
+    CHECK(next[0].end[X] == Approx(10));
+    CHECK(next[0].end[Y] == Approx(10));
+}
+
+// An alarm in the block read ahead is that block's, standing where the reading stood (the end of
+// the running block, X50 Y0), and the running block makes no move: N3's corner needs N4, whose
+// Y[1/0] is alarm 112 (division by zero).
+TEST_CASE("direct drawing: an alarm of the block read ahead stops the run before the corner") {
+    const Run r = run("O1\nG17 G90 G0 X0 Y0\nG1 X50. ,R10. F100.\nY[1/0]\nM30\n", "fanuc-mill");
+    require_alarm(r, 112);
+    const Event& a = r.result.alarms[0];
+    CHECK(a.source.line == 4);
+    CHECK(a.end[X] == Approx(50));
+    CHECK(a.end[Y] == Approx(0).margin(1e-9));
+    CHECK(moves_on_line(r, 3).empty());
 }
 
 // The alarms of §10.1 ("a missing intersection or a corner larger than the adjacent segments is

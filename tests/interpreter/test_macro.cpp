@@ -262,6 +262,32 @@ TEST_CASE("Variables: system variables are delegated, with a read-only hook") {
     CHECK(&vars.system() == &system);
 }
 
+// The interpreter evaluates a block read ahead with the live variables and the system variables of
+// the machine state it reads with (interpreter/executor.hpp, look_ahead): an expression takes the
+// variables const, so it cannot change one (this test would not compile otherwise), and #1000 and up
+// come from the hook it is given, not from the variables' own; an assignment writes #1000 and up
+// through the hook it is given.
+TEST_CASE("Variables: an expression reads them const, with the system hook it is given") {
+    TestSystem own, ahead;
+    ahead.values[5001] = Value::of(40);
+    Variables vars(own);
+    REQUIRE(vars.write(100, Value::of(2)) == WriteResult::ok);
+    const Variables& read_only = vars;
+    const ast::SyntaxTree tree = parse("#999=#100*#5001\n");
+    const auto st = statements(tree);
+    REQUIRE(st.size() == 1);
+    const Result with_own = evaluate(tree, st[0]->value, read_only);
+    REQUIRE(with_own.ok());
+    CHECK(with_own.value == Value::of(25));   // 2 × 12.5
+    const Result with_ahead = evaluate(tree, st[0]->value, read_only, ahead);
+    REQUIRE(with_ahead.ok());
+    CHECK(with_ahead.value == Value::of(80));   // 2 × 40
+    const ast::SyntaxTree set = parse("#3003=7\n");
+    REQUIRE_FALSE(assign(set, *statements(set).at(0), vars, ahead).has_value());
+    CHECK(ahead.values[3003] == Value::of(7));
+    CHECK(own.values.count(3003) == 0);
+}
+
 // --- arithmetic -----------------------------------------------------------------------------------
 
 TEST_CASE("arithmetic: + - * / with FANUC precedence") {
