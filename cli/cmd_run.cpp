@@ -52,31 +52,34 @@ std::string distance(double mm, bool inch) {
     return inch ? fmt::format("{:.1f} mm ({:.3f} in)", mm, mm / 25.4) : fmt::format("{:.1f} mm", mm);
 }
 
-void print_summary(const project::DryRun& run, const interpreter::RunResult& result, const std::string& axes) {
+void print_summary(std::ostream& out, const project::DryRun& run, const interpreter::RunResult& result, const std::string& axes) {
     std::string final_position;
     for (std::size_t a = 0; a < interpreter::kAxisCount; ++a)
         if (axes.find(interpreter::kAxisLetters[a]) != std::string::npos)
             final_position += fmt::format(" {}{:.3f}", interpreter::kAxisLetters[a], result.final_position[a]);
-    std::cout << fmt::format("dialect {}\nblocks executed {}\ncycle time {:.1f} s ({:.2f} min)\n", run.choice.id,
+    out << fmt::format("dialect {}\nblocks executed {}\ncycle time {:.1f} s ({:.2f} min)\n", run.choice.id,
                              result.blocks, result.total_time_s, result.total_time_s / 60);
-    std::cout << fmt::format("feed distance {}, rapid distance {}\nfinal position{} ({})\n",
+    out << fmt::format("feed distance {}, rapid distance {}\nfinal position{} ({})\n",
                              distance(result.feed_distance_mm, result.inch), distance(result.rapid_distance_mm, result.inch),
                              final_position, result.inch ? "inch" : "mm");
-    for (const auto& [tool, seconds] : result.time_per_tool_s) std::cout << fmt::format("tool {:>3}: {:.1f} s\n", tool, seconds);
+    for (const auto& [tool, seconds] : result.time_per_tool_s) out << fmt::format("tool {:>3}: {:.1f} s\n", tool, seconds);
     if (result.repeats)
-        std::cout << fmt::format("ended normally; the program repeats (M99 in the main program): {} pass{} run, times "
+        out << fmt::format("ended normally; the program repeats (M99 in the main program): {} pass{} run, times "
                                  "are for {} (--passes N)\n",
                                  result.passes, result.passes == 1 ? "" : "es", result.passes == 1 ? "one pass" : "them");
     else
-        std::cout << (result.completed ? "ended normally\n" : "did not reach its end\n");
+        out << (result.completed ? "ended normally\n" : "did not reach its end\n");
 }
 
 int run_run(const RunCliOptions& o) {
     auto prepared = prepare(o.run);
     if (const int* code = std::get_if<int>(&prepared)) return *code;
     project::DryRun& run = *std::get<std::unique_ptr<project::DryRun>>(prepared);
+    // `--trace -`: the trace on standard output (as `fmt -` reads standard input), and the summary
+    // on standard error so that standard output is JSON lines only.
+    const bool trace_to_stdout = o.trace == "-";
     std::ofstream trace_file;
-    if (!o.trace.empty()) {
+    if (!o.trace.empty() && !trace_to_stdout) {
         trace_file.open(o.trace, std::ios::binary);
         if (!trace_file) {
             std::cerr << fmt::format("kerf: {}: cannot write the trace\n", o.trace);
@@ -85,13 +88,15 @@ int run_run(const RunCliOptions& o) {
     }
     // The machine's axes (a lathe has no Y even where the dialect knows the letter).
     const std::string axes = run.setup.axis_order.empty() ? run.dialect->lexical.axes : run.setup.axis_order;
-    JsonLinesSink sink(o.trace.empty() ? nullptr : &trace_file, run.programs, axes);
+    std::ostream* trace_out = trace_to_stdout ? &std::cout : o.trace.empty() ? nullptr : &trace_file;
+    JsonLinesSink sink(trace_out, run.programs, axes);
     const interpreter::RunResult result = project::execute(run, sink, o.run.lenient, o.state);
     sink.flush();
+    std::ostream& summary = trace_to_stdout ? std::cerr : std::cout;
     if (o.json)
-        std::cout << boost::json::serialize(interpreter::summary_to_json(result, axes)) << "\n";
+        summary << boost::json::serialize(interpreter::summary_to_json(result, axes)) << "\n";
     else
-        print_summary(run, result, axes);
+        print_summary(summary, run, result, axes);
     return report_alarms(run, result);
 }
 
@@ -102,7 +107,7 @@ Command add_run_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("run", "dry-run a program: cycle time, distances, final position, alarms");
     add_dry_run_options(*cmd, o->run);
     cmd->add_flag("--json", o->json, "the summary as JSON");
-    cmd->add_option("--trace", o->trace, "write the trace as JSON lines to this file");
+    cmd->add_option("--trace", o->trace, "write the trace as JSON lines to this file (- : standard output, the summary then on standard error)");
     cmd->add_flag("--state", o->state, "with --trace: a `state` line (active modal codes, F S T) after every block");
     return [o] { return run_run(*o); };
 }

@@ -36,6 +36,24 @@ TEST_CASE("kerf run --json: the summary keys the issue names") {
     CHECK(s.at("completed").as_bool());
 }
 
+TEST_CASE("kerf run --trace - writes the trace on standard output and the summary on standard error") {
+    const fs::path nc = kerf::test::write_text(kDir / "dash.nc", kProgram);
+    const fs::path dash = fs::current_path() / "-";
+    fs::remove(dash);
+    const auto r = run_kerf("run --dialect fanuc-lathe-a --trace - " + shell_quote(nc), kDir);
+    CHECK(r.code == 0);
+    CHECK_FALSE(fs::exists(dash));   // it wrote a file named '-' (issue 13, hygiene)
+    std::istringstream lines(r.out);
+    std::string line;
+    int events = 0;
+    while (std::getline(lines, line)) {
+        CHECK(json::parse(line).as_object().contains("kind"));   // stdout is JSON lines only
+        ++events;
+    }
+    CHECK(events > 5);
+    CHECK(r.err.find("ended normally") != std::string::npos);
+}
+
 TEST_CASE("kerf run --trace writes one JSON object per event; --state adds the modal state") {
     const fs::path nc = kerf::test::write_text(kDir / "p.nc", kProgram);
     const fs::path trace = kDir / "p.jsonl";
