@@ -1,8 +1,9 @@
 #include "project/parallel.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -12,35 +13,45 @@ void run_parallel(std::size_t count, unsigned threads, const std::function<void(
                   const std::function<void(std::size_t, std::size_t)>& done) {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(count, 1)));
-    std::atomic<std::size_t> next{0};
-    std::atomic<std::size_t> finished{0};
+    std::mutex mutex;
+    std::condition_variable progressed;
+    std::size_t next = 0, finished = 0;
     auto worker = [&] {
-        for (std::size_t i = next++; i < count; i = next++) {
+        while (true) {
+            std::size_t i = 0;
+            {
+                const std::lock_guard lock(mutex);
+                if (next >= count) return;
+                i = next++;
+            }
             work(i);
-            ++finished;
+            {
+                const std::lock_guard lock(mutex);
+                ++finished;
+            }
+            progressed.notify_one();
         }
     };
+    // `threads` workers in all. With a progress callback the calling thread only reports (it was
+    // one of the workers and reported between items: a folder check ran on one core of two);
+    // without one it is a worker itself.
     std::vector<std::thread> pool;
-    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+    const unsigned helpers = done ? threads : threads - 1;
+    for (unsigned t = 0; t < helpers; ++t) pool.emplace_back(worker);
     if (!done) {
         worker();
     } else {
-        // The calling thread reports progress while the pool works; with one thread it works too.
-        if (pool.empty()) {
-            for (std::size_t i = next++; i < count; i = next++) {
-                work(i);
-                ++finished;
-                done(finished.load(), count);
-            }
-        } else {
-            while (finished.load() < count) {
-                done(finished.load(), count);
-                std::this_thread::sleep_for(std::chrono::milliseconds(100));
-            }
+        std::unique_lock lock(mutex);
+        while (finished < count) {
+            const std::size_t now = finished;
+            lock.unlock();
+            done(now, count);
+            lock.lock();
+            progressed.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished == count; });
         }
     }
     for (std::thread& t : pool) t.join();
-    if (done) done(finished.load(), count);
+    if (done) done(finished, count);
 }
 
 }  // namespace kerf::project

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <chrono>
+#include <thread>
 #include <vector>
 
 #include "project/parallel.hpp"
@@ -83,6 +85,26 @@ TEST_CASE("walk: [check] include adds files content would skip, exclude removes 
                                   "pic.nc: binary: PNG image",
                               });
     fs::remove_all(root);
+}
+
+TEST_CASE("run_parallel keeps `threads` items running at once, also with a progress callback") {
+    // Two items that each wait (up to 5 s) until both have started: they meet only when two threads
+    // work. With a progress callback the calling thread used to report instead of working, so a
+    // folder check with -j2 ran on one core.
+    for (const bool progress : {false, true}) {
+        std::atomic<int> started{0};
+        std::atomic<int> met{0};
+        const auto work = [&](std::size_t) {
+            ++started;
+            const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+            while (started.load() < 2 && std::chrono::steady_clock::now() < until) std::this_thread::yield();
+            if (started.load() == 2) ++met;
+        };
+        if (progress) run_parallel(2, 2, work, [](std::size_t, std::size_t) {});
+        else run_parallel(2, 2, work);
+        INFO(progress);
+        CHECK(met.load() == 2);
+    }
 }
 
 TEST_CASE("run_parallel runs every index once and reports the end") {
