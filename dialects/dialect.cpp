@@ -105,7 +105,12 @@ std::string AlarmTable::name_of(int kerf) const {
 }
 
 std::string AlarmTable::message(int kerf, std::string_view kerf_text) const {
-    if (!shown(kerf)) return std::string(kerf_text);
+    if (!shown(kerf)) {
+        // A control with numbers of its own that the table does not give (Haas: none could be
+        // sourced, docs/haas.md): the number said is FANUC's, and the message says so.
+        if (control.empty() || kerf >= 1000) return std::string(kerf_text);
+        return fmt::format("{} ({} numbers this alarm its own way; kerf gives FANUC's)", qualify_fanuc_number(kerf_text, kerf), control);
+    }
     return fmt::format("{}: {}", name_of(kerf), qualify_fanuc_number(kerf_text, kerf));
 }
 

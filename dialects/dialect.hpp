@@ -171,7 +171,8 @@ struct AlarmTable {
     // it, else FANUC's "alarm 078" (three digits below 1000, as FANUC writes them).
     std::string name_of(int kerf) const;
     // The alarm's text as the user reads it: kerf's explanation as it is when the table does not map
-    // the alarm, else "Haas NGC alarm 314 SUBPROGRAM NOT FOUND: program O9810 not found (FANUC alarm
+    // the alarm (with "(Haas NGC numbers this alarm its own way; kerf gives FANUC's)" and the FANUC
+    // number named as FANUC's when the table names a control), else "Haas NGC alarm 314 SUBPROGRAM NOT FOUND: program O9810 not found (FANUC alarm
     // 078)" — the control's number and text, then kerf's explanation with the FANUC number it quotes
     // named as FANUC's.
     std::string message(int kerf, std::string_view kerf_text) const;

@@ -81,8 +81,9 @@ TEST_CASE("[alarms]: the message says the control's number and text, then kerf's
     CHECK(t.message(20, "arc: R too small (FANUC alarm 020), see alarm 020") ==
           "Test NGC alarm 7020 TEST ARC: arc: R too small (FANUC alarm 020), see FANUC alarm 020");
     CHECK(t.message(20, "x ([FANUC] alarm 020)") == "Test NGC alarm 7020 TEST ARC: x ([FANUC] alarm 020)");
+    // Not mapped: kerf's text, and the control's name says the number is FANUC's.
     CHECK(t.message(146, "G28 is not allowed in G112 mode ([FANUC] alarm 146)") ==
-          "G28 is not allowed in G112 mode ([FANUC] alarm 146)");   // not mapped: as it is
+          "G28 is not allowed in G112 mode ([FANUC] alarm 146) (Test NGC numbers this alarm its own way; kerf gives FANUC's)");
     // #3000 = 5 (NO TOOL): the program's own message under the control's number.
     CHECK(t.message(3005, "NO TOOL") == "Test NGC alarm 7005: NO TOOL");
     // How the static rules name an alarm (K3003 "... (alarm 078)"): the control's, else FANUC's.
@@ -166,4 +167,22 @@ TEST_CASE("[alarms]: every name a table may map is a control's alarm of alarms.h
         CHECK(errors.empty() == mappable);
     }
     CHECK(alarms::number_of("no_such_alarm") == 0);
+}
+
+TEST_CASE("a control whose numbers kerf does not have: the message names FANUC's number as FANUC's") {
+    // haas-mill and haas-lathe map no alarm (none could be sourced: docs/haas.md), but a Haas user
+    // must not read 078 as a Haas number.
+    for (const char* id : {"haas-mill", "haas-lathe"}) {
+        const Dialect* d = builtin_registry().find(id);
+        REQUIRE(d != nullptr);
+        CHECK(d->alarms.control == "Haas NGC");
+        CHECK_FALSE(d->alarms.shown(alarms::program_not_found).has_value());
+        CHECK(d->alarms.message(alarms::program_not_found, "program O7777 not found (alarm 078)") ==
+              "program O7777 not found (FANUC alarm 078) (Haas NGC numbers this alarm its own way; kerf gives FANUC's)");
+        // #3000 = n: the program's own message, as it is.
+        CHECK(d->alarms.message(3001, "NOT SET") == "NOT SET");
+    }
+    // A FANUC dialect: kerf's text as it is.
+    CHECK(builtin_registry().find("fanuc-mill")->alarms.message(alarms::program_not_found, "program O7777 not found (alarm 078)") ==
+          "program O7777 not found (alarm 078)");
 }
