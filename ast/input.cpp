@@ -309,7 +309,9 @@ void InputScanner::feed(std::string_view piece) {
     LineBreaks breaks(piece);
     while (pos < piece.size()) {
         const LineBreaks::Line l = breaks.line_from(pos);
-        line_length_ += l.end - pos;
+        // The line's bytes without its break: not the '\r' of a "\r\n" (as decode_input counts).
+        const bool crlf = l.end < piece.size() && l.end > pos && piece[l.end] == '\n' && piece[l.end - 1] == '\r';
+        line_length_ += l.end - pos - (crlf ? 1 : 0);
         if (only_blank_) only_blank_ = std::all_of(piece.begin() + static_cast<std::ptrdiff_t>(pos),
                                                    piece.begin() + static_cast<std::ptrdiff_t>(l.end), is_blank_byte);
         if (l.end == piece.size()) break;   // the line goes on in the next piece
