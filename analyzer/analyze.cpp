@@ -518,13 +518,19 @@ std::shared_ptr<const JumpTargets> FileContext::shared_jump_targets() const {
 
 const JumpTargets& FileContext::jump_targets() const { return *shared_jump_targets(); }
 
+std::optional<LabelTable::Entry> LabelTable::entry_of(const ast::TypedFile& typed, std::uint32_t block) {
+    const ast::BlockView view = typed.block(block);
+    const auto label = view.sequence_label();
+    if (!label) return std::nullopt;
+    return Entry{*label, *view.sequence_number(), block};
+}
+
 const LabelTable& FileContext::labels(std::size_t program) const {
     if (const auto it = labels_.find(program); it != labels_.end()) return it->second;
     std::vector<LabelTable::Entry> entries;
     const ast::Program& p = typed.programs()[program];
     for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
-        if (const ast::BlockView view = typed.block(b); const auto label = view.sequence_label())
-            entries.push_back({*label, *view.sequence_number(), b});
+        if (const auto e = LabelTable::entry_of(typed, b)) entries.push_back(*e);
     return labels_.emplace(program, LabelTable(std::move(entries))).first->second;
 }
 

@@ -235,8 +235,7 @@ void IncrementalStatic::relabel(const ast::TypedFile& typed) {
         if (lo >= hi) continue;
         std::vector<LabelTable::Entry> now;
         for (std::uint32_t b = lo; b < hi; ++b)
-            if (const ast::BlockView view = typed.block(b); const auto label = view.sequence_label())
-                now.push_back({*label, *view.sequence_number(), b});
+            if (const auto e = LabelTable::entry_of(typed, b)) now.push_back(*e);
         table.replace(lo, hi, now);
     }
 }
@@ -260,7 +259,7 @@ std::optional<std::vector<Finding>> IncrementalStatic::check(const Input& in) {
     if (valid_)
         for (const BlockEdit& e : *in.edits) apply(e);
     if (valid_ && !same_programs(programs_, typed.programs())) forget();
-    if (valid_ && dirty_) relabel(typed);   // as FileContext::labels reads them
+    if (valid_ && dirty_) relabel(typed);
 
     std::function<bool(std::int64_t)> exists = in.program_exists;
     if (!exists) {

@@ -81,6 +81,8 @@ public:
     };
     // `entries` in block order.
     explicit LabelTable(std::vector<Entry> entries);
+    // The entry of block `block` of `typed`, when it carries a sequence number that is a label.
+    static std::optional<Entry> entry_of(const ast::TypedFile& typed, std::uint32_t block);
     int count(std::int64_t n) const;   // how many blocks carry N`n`
     // The blocks whose N value is exactly `n`, in block order (references::label_blocks without the
     // walk over the program: AmbiguousLabel asks once per jump, and CAM output repeats N numbers).
