@@ -137,7 +137,14 @@ void Converter::convert_distance(std::uint32_t b, const ast::BlockView& view, st
     }
     if (flags_[b] & kProfile) {   // read in the cycle block's mode: its increments stay letters
         for (const AxisMeaning& a : axes_) write_axis(a, true);
+        const bool src_effective = src_modes_ && src_incremental_;
         if (mode_token) map_mode_token(*mode_token, src_incremental_);
+        // A profile block also runs in sequence: a G91 written for an earlier block must not make
+        // its absolute words increments (fuzz_converter, regressions/converter/).
+        else if (tgt_incremental_ != src_effective && (!axes_.empty() || dependent(view)))
+            insert_mode(first, tokens, src_effective, lower);
+        else return;
+        tgt_incremental_ = src_effective;
         return;
     }
     bool to_mode_form = false;

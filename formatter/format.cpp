@@ -274,10 +274,11 @@ private:
     }
 
     // Word order matters in blocks with macro statements, and for G65/G66 arguments (argument
-    // specification II counts repeated I J K in order; dialects.md §3.7).
+    // specification II counts repeated I J K in order; dialects.md §3.7). A '%' inside a block may
+    // close the tape there (grammar/parse.cpp): what stands before it runs, what follows does not.
     bool reorderable(std::size_t b) const {
         for (const Token& t : tree_.block_tokens(b)) {
-            if (t.kind == TokenKind::statement || t.kind == TokenKind::error) return false;
+            if (t.kind == TokenKind::statement || t.kind == TokenKind::error || t.kind == TokenKind::percent) return false;
             if (t.kind != TokenKind::word || t.role() != Role::g_code || !t.is_number()) continue;
             const auto key = dialects::code_key(tree_.number_value(t));
             const dialects::CodeInfo* info = key ? file_.dialect().fast_code('G', *key) : nullptr;

@@ -159,6 +159,17 @@ private:
                "write the sequence number as a plain integer, or keep the block numbers (block_numbers = \"keep\")");
     }
 
+    // The block has an N word, and taking it away leaves no block that starts with '%': such a line
+    // is a tape mark and would close the program there (grammar/parse.cpp; fuzz_formatter).
+    bool removable_sequence_word(std::uint32_t b) const {
+        const auto tokens = tree_.block_tokens(b);
+        for (std::size_t i = 0; i < tokens.size(); ++i) {
+            if (tokens[i].kind != ast::TokenKind::word || tokens[i].role() != ast::Role::sequence) continue;
+            return i + 1 >= tokens.size() || tokens[i + 1].kind != ast::TokenKind::percent;
+        }
+        return false;
+    }
+
     // --- numbering ---------------------------------------------------------------------------------
 
     // New numbers for the blocks of a program; `targets` are the blocks jumps land on (the
@@ -174,12 +185,12 @@ private:
             switch (style_.block_numbers) {
                 case BlockNumbers::keep: break;
                 case BlockNumbers::remove:
-                    if (view.has_sequence_word() && !target) plan_.blocks[b] = Renumbering::kRemove;
+                    if (removable_sequence_word(b) && !target) plan_.blocks[b] = Renumbering::kRemove;
                     break;
                 case BlockNumbers::renumber:
                 case BlockNumbers::referenced:
                     if (style_.block_numbers == BlockNumbers::referenced && !target) {
-                        if (view.has_sequence_word()) plan_.blocks[b] = Renumbering::kRemove;
+                        if (removable_sequence_word(b)) plan_.blocks[b] = Renumbering::kRemove;
                         break;
                     }
                     if (next > kMaxSequenceNumber) {
