@@ -43,7 +43,7 @@ std::optional<project::ReadResult> read_program(project::Workspace& workspace, c
     project::ReadResult read;
     const std::string name = o.file == "-" ? "<stdin>" : o.file;
     if (o.file == "-") {
-        std::string bytes(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        std::string bytes{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
         read = project::decode_file(name, std::move(bytes), workspace.project_for(name)->limits().input);
     } else {
         read = workspace.read(o.file);
