@@ -236,12 +236,25 @@ void Converter::insert_code(std::span<const Token> tokens, const CodeInfo& code_
 // moves them at its own (G00): nothing says "do not move" there.
 // An axis word of the source whose letter the target has no axis for (fanuc-mill's C into the
 // three-axis pcnc-mill): the target reads the letter otherwise, or not at all, so the move is lost.
+// Axis words one side has and the other has not: a move that would vanish, or a word the source
+// ignores that the target would move by (fuzz_converter, regressions/converter/).
 void Converter::report_lost_axes(std::span<const Token> tokens) {
-    for (const Token& t : tokens)
-        if (t.kind == TokenKind::word && t.role() == Role::axis_absolute && !to_.lexical.is_axis(t.letter))
+    std::uint32_t parameters = 0;   // letters the block's codes take as their data
+    for (const CodeInfo* c : infos_)
+        if (c) parameters |= c->parameter_mask;
+    for (const Token& t : tokens) {
+        if (t.kind != TokenKind::word) continue;
+        if (t.role() == Role::axis_absolute && !to_.lexical.is_axis(t.letter))
             report_token(t, ReportKind::unconverted,
                          fmt::format("{} is an axis of {}, and {} has no {} axis (its axes: {})", t.letter, from_.id, to_.id,
                                      t.letter, to_.lexical.axes));
+        const bool data = t.letter >= 'A' && t.letter <= 'Z' && (parameters >> (t.letter - 'A') & 1u);
+        if (t.role() == Role::parameter && !data && !from_.lexical.is_axis(t.letter) && to_.lexical.is_axis(t.letter))
+            report_token(t, ReportKind::unconverted,
+                         fmt::format("{} is no axis of {} (its axes: {}): the word moves nothing there, and {} would move "
+                                     "its {} axis",
+                                     t.letter, from_.id, from_.lexical.axes, to_.id, t.letter));
+    }
 }
 
 void Converter::report_no_motion_mode(const ast::BlockView& view, bool group01, std::span<const Token> tokens, bool lower) {

@@ -113,7 +113,8 @@ void append_code_number(std::string& out, std::string_view value, CodeDigits dig
     const std::size_t point = std::min(value.find('.'), value.size());
     std::string_view whole = value.substr(0, point);
     while (whole.size() > 1 && whole.front() == '0') whole.remove_prefix(1);
-    if (digits == CodeDigits::two && whole.size() < 2) out += '0';
+    // "M.0" has no digit before the point: two of them make "M00.0", as "M0.0" would become next time.
+    if (digits == CodeDigits::two) out.append(whole.size() < 2 ? 2 - whole.size() : 0, '0');
     out += whole;
     out += value.substr(point);
 }

@@ -18,7 +18,10 @@ namespace {
 
 // Numbers are written shortest-exact after snapping to 1e-9, so 150 prints as 150 and a rotated
 // 6.1e-16 as 0 (a trace reader compares to 1e-9 anyway, docs/trace.md).
+// From 1e15 on a double has no digit at 1e-9 to snap, and v * 1e9 would overflow past 1.8e299
+// (a 300-digit word made "inf", which is no JSON: fuzz_interpreter).
 double snap(double v) {
+    if (!(std::fabs(v) < 1e15)) return v;
     const double s = std::round(v * 1e9) / 1e9;
     return s == 0 ? 0.0 : s;   // no "-0"
 }
@@ -38,6 +41,11 @@ void put_int(Buffer& out, long long v) { fmt::format_to(std::back_inserter(out),
 void put_number(Buffer& out, double v) {
     const double s = snap(v);
     const double a = std::fabs(s);
+    if (!std::isfinite(s)) {
+        // JSON has no infinity: the length of a move between 1e193-mm words overflows (fuzz_interpreter).
+        put(out, "null");
+        return;
+    }
     if (s == 0) {
         out.push_back('0');
         return;

@@ -17,6 +17,7 @@ using namespace kerf;
 namespace {
 
 double snapped(double v) {
+    if (!(std::fabs(v) < 1e15)) return v;
     const double s = std::round(v * 1e9) / 1e9;
     return s == 0 ? 0.0 : s;
 }
@@ -47,6 +48,13 @@ TEST_CASE("trace numbers are written as fmt writes the snapped value") {
         INFO(v);
         CHECK(written(writer, v) == fmt::format("{}", snapped(v)));
     }
+    // JSON has no infinity or NaN: a value past the doubles (the length of a move between 1e193 mm
+    // words) is null, and a huge finite value is not snapped into an infinity.
+    CHECK(written(writer, INFINITY) == "null");
+    CHECK(written(writer, -INFINITY) == "null");
+    CHECK(written(writer, NAN) == "null");
+    CHECK(written(writer, 1.5e300) == "1.5e+300");
+    CHECK(written(writer, -4.2e193) == "-4.2e+193");
     std::mt19937_64 random(20261121);
     for (const double scale : {1e-5, 1e-3, 1.0, 1e3, 1e5, 1e7}) {
         std::uniform_real_distribution<double> value(-scale, scale);
