@@ -131,13 +131,15 @@ public:
     }
     void block(const BlockContext& b, Reporter& out) override {
         if (b.file.dialect.lexical.tool_word != "number") return;
-        if (const auto t = number_word(b, 'T')) selected_ = static_cast<std::int64_t>(t->value);
+        // A T or H past the integers (T5e42 from a fuzzer) is no tool number: casting it would be undefined.
+        if (const auto t = number_word(b, 'T')) selected_ = ast::truncated_integer(t->value);
         if (b.has_function(fn::tool_change)) spindle_ = selected_;
         if (!b.has_function(fn::tool_length_comp_plus) && !b.has_function(fn::tool_length_comp_minus)) return;
         const auto h = number_word(b, 'H');
-        if (!h || !spindle_ || static_cast<std::int64_t>(h->value) == *spindle_) return;
+        const std::optional<std::int64_t> length = h ? ast::truncated_integer(h->value) : std::nullopt;
+        if (!length || !spindle_ || *length == *spindle_) return;
         out.report(b.token(h->token).range(),
-                   fmt::format("H{} is not the length of the tool T{} in the spindle", static_cast<std::int64_t>(h->value), *spindle_),
+                   fmt::format("H{} is not the length of the tool T{} in the spindle", *length, *spindle_),
                    fmt::format("write H{} unless the offset numbering differs on purpose", *spindle_));
     }
 

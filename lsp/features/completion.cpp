@@ -155,8 +155,8 @@ void variables(const Snapshot& s, const json::object& range, json::array& out) {
     for (const ast::Expr& e : tree.exprs) {
         if (e.kind != ast::ExprKind::variable || e.a < 0) continue;
         const ast::Expr& n = tree.exprs[static_cast<std::size_t>(e.a)];
-        if (n.kind == ast::ExprKind::number && tree.number_value(n) == std::floor(tree.number_value(n)))
-            used.insert(static_cast<std::int64_t>(tree.number_value(n)));
+        if (n.kind != ast::ExprKind::number || tree.number_value(n) != std::floor(tree.number_value(n))) continue;
+        if (const auto number = ast::truncated_integer(tree.number_value(n))) used.insert(*number);
     }
     const std::string& language = s.doc->settings().language;
     for (const std::int64_t v : used) {

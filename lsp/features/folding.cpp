@@ -28,7 +28,7 @@ std::optional<std::int64_t> loop_label(const ast::SyntaxTree& tree, const ast::S
     std::int32_t e = st.label;
     while (e >= 0 && tree.exprs[static_cast<std::size_t>(e)].kind == ast::ExprKind::bracket) e = tree.exprs[static_cast<std::size_t>(e)].a;
     if (e < 0 || tree.exprs[static_cast<std::size_t>(e)].kind != ast::ExprKind::number) return std::nullopt;
-    return static_cast<std::int64_t>(tree.number_value(tree.exprs[static_cast<std::size_t>(e)]));
+    return ast::truncated_integer(tree.number_value(tree.exprs[static_cast<std::size_t>(e)]));
 }
 
 }  // namespace
