@@ -92,6 +92,7 @@ void reads_before_assigned(const ast::TypedFile& file, std::size_t program, doub
                            const std::function<void(int)>& first_read) {
     const ast::Program& p = file.programs()[program];
     const ast::SyntaxTree& tree = file.tree();
+    if (tree.exprs.empty()) return;   // no expression, no variable (most CAM output): no walk of its blocks
     std::set<int> assigned;
     const auto number = [&](std::int32_t name) -> std::optional<int> {
         const auto n = rules::constant_of(tree, name);
@@ -134,6 +135,7 @@ LocalSet vacancy_tested(const ast::TypedFile& file, std::size_t program) {
     const ast::Program& p = file.programs()[program];
     const ast::SyntaxTree& tree = file.tree();
     LocalSet out;
+    if (tree.exprs.empty()) return out;   // no expression, no test of a variable
     const auto local_of = [&](std::int32_t e) -> std::optional<int> {
         if (e < 0 || tree.exprs[static_cast<std::size_t>(e)].kind != ast::ExprKind::variable) return std::nullopt;
         const auto n = rules::constant_of(tree, tree.exprs[static_cast<std::size_t>(e)].a);

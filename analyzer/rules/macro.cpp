@@ -17,18 +17,16 @@ namespace fn = dialects::functions;
 // with M30/M02: it has no arguments). Vacant in arithmetic is 0: a silent wrong value.
 class VacantLocal : public StaticCheck {
 public:
-    void begin_program(const FileContext& file, std::size_t program, Reporter&) override {
+    void begin_program(const FileContext&, std::size_t, Reporter&) override {
         assigned_.reset();
-        // G65 arguments (callers, or the header's `G65 P9994 A B C`) are set when the macro runs.
-        arguments_ = program_arguments(file.typed, program, file.caller_arguments).locals;
-        const ast::Program& p = file.typed.programs()[program];
+        known_ = false;
         main_ = false;
-        for (std::uint32_t b = p.first_block; b < p.end_block && !main_; ++b) {
-            const ast::BlockView v = file.typed.block(b);
-            main_ = v.has_code('M', fn::program_end) || v.has_code('M', fn::program_end_rewind);
-        }
     }
     void block(const BlockContext& b, Reporter& out) override {
+        if (!has_expressions(b)) return;
+        // What the program is (a main program, its arguments) is asked at its first expression:
+        // CAM output has none, and the question walks the whole program (bench/RESULTS.md).
+        if (!known_) learn_program(b.file, b.program);
         if (!main_) return;
         const ast::SyntaxTree& tree = b.tree();
         auto read = [&](std::int32_t root) {
@@ -48,11 +46,34 @@ public:
         block_expressions(b.tree(), b.view, read, assign);
     }
 
-    void state(StateKey& key) const override { key.add(static_cast<std::int64_t>(assigned_.to_ullong() * 2 + main_)); }
+    void state(StateKey& key) const override {
+        key.add(static_cast<std::int64_t>(assigned_.to_ullong() * 4 + main_ * 2 + known_));
+        key.add(static_cast<std::int64_t>(arguments_.to_ullong()));
+    }
 
 private:
+    static bool has_expressions(const BlockContext& b) {
+        for (const ast::Token& t : b.view.tokens())
+            if (t.kind == ast::TokenKind::statement || (t.kind == ast::TokenKind::word && t.has(ast::token_flags::value_expr)))
+                return true;
+        return false;
+    }
+    // A main program ends with M30/M02 (it has no arguments); G65 arguments (callers, or the
+    // header's `G65 P9994 A B C`) are set when the macro runs.
+    void learn_program(const FileContext& file, std::size_t program) {
+        known_ = true;
+        arguments_ = program_arguments(file.typed, program, file.caller_arguments).locals;
+        const ast::Program& p = file.typed.programs()[program];
+        main_ = false;
+        for (std::uint32_t b = p.first_block; b < p.end_block && !main_; ++b) {
+            const ast::BlockView v = file.typed.block(b);
+            main_ = v.has_code('M', fn::program_end) || v.has_code('M', fn::program_end_rewind);
+        }
+    }
+
     std::bitset<34> assigned_;
     LocalSet arguments_;
+    bool known_ = false;
     bool main_ = false;
 };
 
