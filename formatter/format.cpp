@@ -278,6 +278,7 @@ private:
     // specification II counts repeated I J K in order; dialects.md §3.7). A '%' inside a block may
     // close the tape there (grammar/parse.cpp): what stands before it runs, what follows does not.
     bool reorderable(std::size_t b) const {
+        if (axis_named_twice(b)) return false;
         for (const Token& t : tree_.block_tokens(b)) {
             if (t.kind == TokenKind::statement || t.kind == TokenKind::error || t.kind == TokenKind::percent) return false;
             if (t.kind != TokenKind::word || t.role() != Role::g_code || !t.is_number()) continue;
@@ -286,6 +287,25 @@ private:
             if (info && info->has(dialects::traits::takes_arguments)) return false;
         }
         return true;
+    }
+
+    // `U107 X10.497`: one axis by two letters (absolute and incremental, system A); the last one
+    // moves it (interpreter/executor_words.cpp), so the order is the meaning (fuzz_formatter).
+    bool axis_named_twice(std::size_t b) const {
+        std::uint32_t axes = 0;
+        for (const Token& t : tree_.block_tokens(b)) {
+            if (t.kind != TokenKind::word) continue;
+            char axis = 0;
+            if (t.role() == Role::axis_absolute) axis = t.letter;
+            if (t.role() == Role::axis_incremental)
+                for (const auto& [letter, moved] : file_.dialect().lexical.incremental_letters)
+                    if (letter == t.letter) axis = moved;
+            if (axis < 'A' || axis > 'Z') continue;
+            const std::uint32_t bit = 1u << (axis - 'A');
+            if (axes & bit) return true;
+            axes |= bit;
+        }
+        return false;
     }
 
     // Comments keep their slots; the other pieces fill the remaining slots in rank order (stable:

@@ -6,6 +6,8 @@
 // bytes after it fill it in: document texts, versions, positions and ranges (which may lie outside
 // the document), names, ids. Raw bytes and frames with a wrong Content-Length or a body that is not
 // a JSON-RPC message break the framing on purpose; a script without them is "well formed".
+#include <cstdio>
+#include <cstdlib>
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -342,6 +344,15 @@ Broken check_lsp(std::string_view input) {
     Script script(input);
     Sent sent;
     Writer(script, sent).run();
+    // KERF_FUZZ_LSP_SCRIPT=FILE writes the message stream a fuzz input makes (to replay it:
+    // build/kerf lsp < FILE), so that a finding can be read as the messages it is.
+    if (const char* path = std::getenv("KERF_FUZZ_LSP_SCRIPT")) {
+        std::FILE* f = std::fopen(path, "wb");
+        if (f) {
+            std::fwrite(sent.bytes.data(), 1, sent.bytes.size(), f);
+            std::fclose(f);
+        }
+    }
     int to_server[2], from_server[2];
     if (::pipe2(to_server, O_CLOEXEC) != 0) return std::nullopt;   // no pipes left: nothing to check
     if (::pipe2(from_server, O_CLOEXEC) != 0) {

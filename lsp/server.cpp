@@ -151,9 +151,13 @@ struct Server::Impl {
             }
             Parsed parsed = parse_message(frame->body);
             if (parsed.bad && parsed.bad->code == error_code::parse_error) {
-                // A Content-Length too large swallows the next message's header: read on from it.
+                // A Content-Length too large swallows the next message's header: read on from it, when
+                // the text before it is a whole JSON value (a document's text that says "Content-Length:"
+                // inside a message that is broken otherwise is no header: fuzz_lsp).
                 const std::size_t next = frame->body.find("Content-Length:");
-                if (next != std::string::npos) transport.unread(std::string_view(frame->body).substr(next));
+                json::error_code ec;
+                if (next != std::string::npos) (void)json::parse(std::string_view(frame->body).substr(0, next), ec);
+                if (next != std::string::npos && !ec) transport.unread(std::string_view(frame->body).substr(next));
             }
             if (parsed.message && parsed.message->method == "$/cancelRequest") note_cancel(*parsed.message);
             in.message = std::move(parsed.message);

@@ -121,6 +121,19 @@ TEST_CASE("a wrong Content-Length: the broken message is reported and the next o
         CHECK(e.at("error").at("code").as_int64() == -32700);
         CHECK(c.response(42).contains("result"));   // the second message survived
     }
+    SECTION("a broken message whose text says Content-Length: the next message is still served") {
+        // fuzz_lsp: a didOpen with bytes that are not UTF-8 and "Content-Length:" in its text was
+        // taken for a message too long, and its text read as the next header: request 44 was lost.
+        const std::string broken = "{\"jsonrpc\":\"2.0\",\"method\":\"textDocument/didOpen\",\"params\":{\"textDocument\":"
+                                   "{\"uri\":\"file:///b.nc\",\"languageId\":\"gcode\",\"version\":1,\"text\":\"X1\xb0 "
+                                   "Content-Length:0000X1\"}}}";
+        const std::string next = R"({"jsonrpc":"2.0","id":44,"method":"workspace/symbol","params":{"query":""}})";
+        c.send_raw("Content-Length: " + std::to_string(broken.size()) + "\r\n\r\n" + broken + "Content-Length: " +
+                   std::to_string(next.size()) + "\r\n\r\n" + next);
+        const json::object e = c.wait_for([](const json::object& m) { return m.contains("error"); });
+        CHECK(e.at("error").at("code").as_int64() == -32700);
+        CHECK(c.response(44).contains("result"));
+    }
     SECTION("no Content-Length at all") {
         c.send_raw("Content-Type: application/vscode-jsonrpc; charset=utf-8\r\n\r\n{}");
         c.log_containing("without Content-Length");
