@@ -12,7 +12,7 @@ namespace kerf::alarms {
 
 // [FANUC] alarm numbers (FANUC 0i/30i operator's manual alarm list; the reference cites them where
 // it relies on one).
-inline constexpr int improper_command = 10;         // G10 without a valid P / register (alarm 010)
+inline constexpr int improper_command = 10;         // an unknown G code; G10 without a valid P / register (alarm 010)
 inline constexpr int feed_zero = 11;                // a feed move with no feed rate commanded (PS011)
 inline constexpr int arc_radius_mismatch = 20;      // arc end off its circle, R too small (semantics.md §3)
 inline constexpr int offset_number = 30;            // an offset number the machine does not have (PS0030: G54.1 P, G10 L10–L13/L20 P)
@@ -75,7 +75,7 @@ struct AlarmDef {
 
 // Every number above, in order (docs/diagnostics.md "Alarms the dry run raises").
 inline constexpr AlarmDef kAlarms[] = {
-    {improper_command, "improper_command", "G10 without a valid P or register number"},
+    {improper_command, "improper_command", "a G code the dialect does not have; G10 without a valid P or register number"},
     {feed_zero, "feed_zero", "a feed move (G01/G02/G03) with no feed rate commanded (F0, or no F yet)"},
     {arc_radius_mismatch, "arc_radius_mismatch", "arc end point off its circle, or R too small for the chord"},
     {offset_number, "offset_number", "an offset number the machine does not have (G54.1 P, G10 L10–L13/L20 P)"},

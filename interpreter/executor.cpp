@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "dialects/alarms.hpp"
 #include "dialects/functions.hpp"
 
 namespace kerf::interpreter {
@@ -291,6 +292,7 @@ void Executor::execute_block(Frame& frame) {
         e.text = "block with syntax errors run without its defective words (lenient)";
         emit(e);
     }
+    if (refuse_unknown_g_code(ctx)) return;
     const std::size_t depth = frames_.size();
     if (execute_statements(frame, ctx) != Outcome::not_mine) return;   // a jump, a loop, a call, an alarm
     if (frames_.size() != depth || stopped_) return;   // a call or an alarm
@@ -310,6 +312,25 @@ void Executor::execute_block(Frame& frame) {
     // G66: the macro runs after each move block, not inside the macro it calls (dialects.md §3.7).
     if (moved && state_.modal_call && !stopped_ && frames_.size() == depth && !frame.modal_macro)
         push_macro_frame(ctx, state_.modal_call->program, state_.modal_call->repeats, state_.modal_call->arguments, true);
+}
+
+// A G code the dialect does not have stops the control with alarm 010 (gcode-tables.md; the
+// analyzer's K2001 says so before the run). Lenient: said, and the block runs without it. A
+// computed code (G#1) is looked up when its value is known (apply_modal_codes).
+bool Executor::refuse_unknown_g_code(const BlockContext& ctx) {
+    for (const ast::CodeRef& c : ctx.scan.g) {
+        if (c.info || !c.key) continue;
+        const std::string_view code = ctx.view.tree().spelling(ctx.view.tree().tokens[c.token]);
+        if (!options_.lenient) {
+            alarm(ctx, alarms::improper_command, fmt::format("{} is not a code of {} (alarm 010)", code, dialect_.id));
+            return true;
+        }
+        Event e = event_at(EventKind::message, ctx);
+        e.text = fmt::format("{} is not a code of {}: the block runs without it (lenient; the control stops with alarm 010)",
+                             code, dialect_.id);
+        emit(e);
+    }
+    return false;
 }
 
 // Steps 2-9 of semantics.md §1.2 for the evaluated words.

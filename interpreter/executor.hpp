@@ -268,6 +268,7 @@ private:
     // Block execution.
     void execute_block(Frame& frame);
     void scan_block(const Frame& frame, const ast::BlockView& view, BlockScan& out) const;
+    bool refuse_unknown_g_code(const BlockContext& ctx);
     // Step 1: the block's macro statements and G65 call. not_mine: the rest of the block runs;
     // done: it ends here (a jump, a loop, a call, IF [..] with the words skipped).
     Outcome execute_statements(Frame& frame, const BlockContext& ctx);

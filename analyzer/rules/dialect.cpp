@@ -266,9 +266,10 @@ public:
 
 void add_dialect(Registry& r) {
     const auto rule = rule_maker(Category::dialect);
-    r.add(static_rule<UnknownCode>(rule("K2001", "unknown-code", S::error,
+    // The dry run stops at the same block with alarm 010: one defect, this finding (not K4010's).
+    r.add(explaining(static_rule<UnknownCode>(rule("K2001", "unknown-code", S::error,
         {"A G code the dialect does not have (M codes: K2010/K2011).", "The control stops with alarm 010 (improper G code).",
-         "G384 X10.", "G84 X10.", "gcode-tables.md; dialects.md §1"})));
+         "G384 X10.", "G84 X10.", "gcode-tables.md; dialects.md §1"})), {{alarms::improper_command, alarms::improper_command}}));
     // Detection found another control's program (analyzer/analyze.cpp reports it, nothing else).
     r.add(rule("K2009", "foreign-control", S::warning,
         {"A program of another control (Syntec, Fagor, a Macro Executor source, GRBL, a 3D printer, LinuxCNC): "

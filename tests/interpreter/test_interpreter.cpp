@@ -6,6 +6,7 @@
 #include "interpreter/interpreter.hpp"
 #include "tests/interpreter/interpreter_fixture.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -223,4 +224,35 @@ TEST_CASE("G52 in its three readings (semantics.md §2.4)") {
     CHECK(f[1].machine_end[Y] - f[0].machine_end[Y] == Approx(5));
     CHECK(fanuc.result.final_position[X] == Approx(10));   // after the cancel the tool reads X10 Y5
     CHECK(fanuc.result.final_position[Y] == Approx(5));
+}
+
+// A G code the dialect does not have stops the control with alarm 010 (gcode-tables.md; K2001 says
+// it before the run). Before, the dry run went past it as if it were not there: a system A → C
+// conversion that left `G710` as it was compared equal although neither control runs it.
+TEST_CASE("an unknown G code: alarm 010 at its block; lenient, a message and the block without it") {
+    const std::string text = "G00 X10. Z5.\nG710 U1.\nG00 X20.\nM30\n";
+    const dialects::Dialect& d = test::dialect("fanuc-lathe-a");
+    const Run strict = test::run_with(text, d, test::plain_setup(d));
+    REQUIRE(strict.result.alarms.size() == 1);
+    CHECK(strict.result.alarms[0].code == 10);
+    CHECK(strict.result.alarms[0].source.line == 2);
+    CHECK(strict.result.alarms[0].text.find("G710 is not a code of fanuc-lathe-a") != std::string::npos);
+    CHECK(moves(strict).size() == 1);   // the first block's rapid only
+    CHECK_FALSE(strict.result.completed);
+
+    interpreter::RunOptions lenient;
+    lenient.lenient = true;
+    const Run run = test::run_with(text, d, test::plain_setup(d), lenient);
+    CHECK(run.result.completed);
+    CHECK(run.result.alarms.empty());
+    const auto said = std::find_if(run.events.begin(), run.events.end(), [](const interpreter::Event& e) {
+        return e.kind == EventKind::message && e.text.find("G710 is not a code of fanuc-lathe-a") != std::string::npos;
+    });
+    CHECK(said != run.events.end());
+    REQUIRE(moves(run).size() == 3);   // G710's U1. is a rapid from the modal G00, then X20.
+    CHECK(run.result.final_position[X] == Approx(20));
+
+    // A computed code (G#1) is no unknown code: it is looked up when its value is known.
+    const Run computed = test::run_with("#1=1\nG#1 X5. Z1. F0.2\nM30\n", d, test::plain_setup(d));
+    CHECK(computed.result.alarms.empty());
 }
