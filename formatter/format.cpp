@@ -169,7 +169,14 @@ private:
             return;
         }
         if (block.kind == ast::BlockKind::blank) {
-            blank(tokens.empty() ? tree_.slice(range) : trailing, !tokens.empty());
+            // Its tokens can be a byte order mark (kept first) and a ';' (an empty block): a file of
+            // nothing but a BOM printed as ';' (fuzz_formatter).
+            bool eob = false;
+            for (const Token& t : tokens) {
+                if (t.kind == TokenKind::bom) out_ += tree_.spelling(t);
+                eob = eob || t.kind == TokenKind::eob;
+            }
+            blank(tokens.empty() ? tree_.slice(range) : trailing, eob);
             return;
         }
         collect(b, block, b + 1 == tree_.block_count() || !line_break_of(trailing).empty());
@@ -466,7 +473,9 @@ Framing framing(const ast::SyntaxTree& tree, Percent percent) {
     std::optional<std::size_t> first_code, last_code;
     for (std::size_t b = 0; b < tree.block_count(); ++b) {
         const ast::BlockKind k = tree.blocks[b].kind;
-        if (k == ast::BlockKind::code || k == ast::BlockKind::program_start) {
+        // An empty file is one code block without tokens (grammar/parse.cpp): nothing to frame.
+        const bool empty = tree.block_first_token(b) == tree.block_token_end(b);
+        if ((k == ast::BlockKind::code || k == ast::BlockKind::program_start) && !empty) {
             if (!first_code) first_code = b;
             last_code = b;
         }
