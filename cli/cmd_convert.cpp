@@ -156,6 +156,10 @@ json::object json_of(const fs::path& path, const FileResult& r, bool with_output
                                        {"reason", ast::valid_utf8(rep.reason)}});
     f["reports"] = std::move(reports);
     if (c.verified || c.verify_failure) f["verified"] = c.verified;
+    if (c.verify_stopped)
+        f["verified_up_to_alarm"] = json::object{{"line", c.verify_stopped->line},
+                                                 {"alarm", c.verify_stopped->number},
+                                                 {"text", ast::valid_utf8(c.verify_stopped->text)}};
     if (c.verify_failure) {
         const project::VerifyFailure& v = *c.verify_failure;
         f["verify_failure"] = json::object{{"event", v.event},         {"input_file", ast::valid_utf8(v.input_file)},

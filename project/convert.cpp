@@ -74,6 +74,8 @@ void verify(Workspace& workspace, const fs::path& file, const std::string& input
     run.time_limit = resolved.project->limits().time_limit;
     const interpreter::TraceComparison c = interpreter::compare_runs(std::move(before), std::move(after), compare, run);
     r.verified_events = c.events;
+    if (const std::optional<interpreter::Event>& a = c.stopped_at)
+        r.verify_stopped = VerifyStop{static_cast<int>(a->source.line), a->control_alarm ? a->control_alarm : a->code, a->text};
     if (!c.difference) {
         r.verified = true;
         return;
@@ -139,6 +141,11 @@ std::vector<std::string> describe(const std::string& file, const ConvertOutcome&
     for (const ConvertReport& r : o.reports)
         lines.push_back(fmt::format("{}:{}:{}: {}: {}: {}", file, r.line, r.column, converter::to_string(r.kind),
                                     ast::printable(ast::shorten(r.construct, 80)), ast::printable(r.reason)));
+    // As kerf fmt --verify says it (project/format.cpp): equal up to the alarm proves nothing after it.
+    if (o.verify_stopped && !o.verify_failure)
+        lines.push_back(fmt::format("{}:{}: note: --verify compared the runs up to alarm {} ({}); the blocks after it are not "
+                                    "verified",
+                                    file, o.verify_stopped->line, o.verify_stopped->number, ast::printable(o.verify_stopped->text)));
     if (o.verify_failure) {
         const VerifyFailure& f = *o.verify_failure;
         const std::string at = f.input_file == file && f.input_line > 0 ? fmt::format("{}:{}", file, f.input_line) : file;

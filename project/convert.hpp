@@ -39,6 +39,13 @@ struct VerifyFailure {
     std::string what;
 };
 
+// Equal runs that both stopped at an alarm of the program: what follows it was not compared.
+struct VerifyStop {
+    int line = 0;      // 1-based, in the input
+    int number = 0;    // as the control shows it
+    std::string text;
+};
+
 struct ConvertOutcome {
     std::string from, to;                    // dialect ids
     std::optional<std::string> converted;    // nullopt: not converted at all (problems say why)
@@ -47,6 +54,7 @@ struct ConvertOutcome {
     bool verified = false;                   // --verify ran and the traces agree
     std::size_t verified_events = 0;
     std::optional<VerifyFailure> verify_failure;
+    std::optional<VerifyStop> verify_stopped;   // verified up to this alarm only
     std::vector<Problem> problems;           // errors: the file could not be converted (exit 2)
 };
 

@@ -151,6 +151,22 @@ TEST_CASE("kerf convert --verify: a difference fails the file with the first dif
     fs::remove_all(kerf::test::runs_beside(dir));
 }
 
+TEST_CASE("kerf convert --verify: runs that stop at the same alarm are verified up to it, and it says so") {
+    const fs::path dir = fresh_folder("verify-alarm");
+    // G710 is a code of neither system: both controls stop at it with alarm 010.
+    write_text(dir / "g710.nc", "(DIALECT: fanuc-lathe-a)\nO0004\nN10 G00 X100. Z100.\nN20 G710 U1.\nN30 G00 X50.\nN40 M30\n");
+    const auto r = run_kerf("convert --verify --to fanuc-lathe-c " + shell_quote(dir / "g710.nc"), kerf::test::runs_beside(dir));
+    CHECK(r.code == 0);
+    CHECK(r.err.find((dir / "g710.nc").string() +
+                     ":4: note: --verify compared the runs up to alarm 10 (G710 is not a code of fanuc-lathe-a (alarm 010)); "
+                     "the blocks after it are not verified") != std::string::npos);
+    const auto j = run_kerf("convert --verify --format json --to fanuc-lathe-c " + shell_quote(dir / "g710.nc"),
+                            kerf::test::runs_beside(dir));
+    CHECK(j.out.find(R"("verified_up_to_alarm":{"line":4,"alarm":10,)") != std::string::npos);
+    fs::remove_all(dir);
+    fs::remove_all(kerf::test::runs_beside(dir));
+}
+
 TEST_CASE("kerf convert --format json: one document with every report and the output") {
     const fs::path dir = fresh_folder("json");
     write_text(dir / "s.nc", kSpinner);
