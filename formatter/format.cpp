@@ -203,9 +203,12 @@ private:
         }
         ++blank_run_;
         if (style_.max_blank_lines >= 0 && blank_run_ > style_.max_blank_lines) return;
+        const std::size_t before = out_.size();
         if (eob && style_.block_end != BlockEnd::none) out_ += ';';
         else if (!eob && style_.spacing == Spacing::keep) out_.append(text.substr(0, text.size() - brk.size()));
-        if (brk.empty()) line_start_ = false;
+        // A ';' that block_end = none drops leaves the line as it was: what follows it on the line
+        // starts the line (`;(NOTE)` → `(NOTE)`, not ` (NOTE)`: fuzz_formatter, not idempotent).
+        if (brk.empty()) line_start_ = line_start_ && out_.size() == before;
         else line_break(brk);
     }
 

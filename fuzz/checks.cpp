@@ -11,6 +11,7 @@
 #include "analyzer/analyze.hpp"
 #include "analyzer/fix.hpp"
 #include "analyzer/registry.hpp"
+#include "ast/display.hpp"
 #include "converter/convert.hpp"
 #include "ast/input.hpp"
 #include "ast/printer.hpp"
@@ -266,7 +267,13 @@ Broken check_formatter(std::string_view input) {
     if (*second.text != *first.text) {
         const auto at = std::mismatch(first.text->begin(), first.text->end(), second.text->begin(), second.text->end());
         const std::size_t offset = static_cast<std::size_t>(at.first - first.text->begin());
-        return fmt::format("not idempotent: the second pass differs at byte {} of {}", offset, first.text->size());
+        // The two texts around the first difference, escaped, so that the report says what changed.
+        const auto around = [&](const std::string& t) {
+            const std::size_t from = offset > 12 ? offset - 12 : 0;
+            return ast::printable(t.substr(from, 40));
+        };
+        return fmt::format("not idempotent: the second pass differs at byte {} of {}: '{}' then '{}'", offset, first.text->size(),
+                           around(*first.text), around(*second.text));
     }
     // The input has no syntax error: the runs must agree.
     if (*first.text == text) return std::nullopt;

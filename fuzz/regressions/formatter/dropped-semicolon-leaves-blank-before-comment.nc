@@ -1,0 +1,2 @@
+0;(OUTER (INNER) TEXT)
+G0
