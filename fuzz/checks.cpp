@@ -153,13 +153,25 @@ Broken lossless(const ast::SyntaxTree& tree, std::string_view text, const char* 
     return std::nullopt;
 }
 
-// A style from the option bits: each option takes one of its values, chosen by successive bits.
-formatter::Style style_of(unsigned bits, std::string_view text) {
+// A style from the option bits: each option takes one of its values, chosen by successive bits;
+// `flags` spells it as kerf fmt's options, so that a finding can be replayed with the CLI.
+struct FuzzStyle {
     formatter::Style style;
+    std::string flags;
+};
+
+FuzzStyle style_of(unsigned bits, std::string_view text) {
+    FuzzStyle out;
     std::size_t salt = text.size();
+    const auto set = [&out](std::string_view key, std::string_view value) {
+        (void)formatter::set_option(out.style, key, value);
+        std::string flag(key);
+        std::replace(flag.begin(), flag.end(), '_', '-');
+        out.flags += fmt::format("{}--{} {}", out.flags.empty() ? "" : " ", flag, value);
+    };
     for (const formatter::OptionInfo& o : formatter::options()) {
         if (o.values == "integer") {
-            (void)formatter::set_option(style, o.key, std::to_string((bits + salt) % 4));
+            set(o.key, std::to_string((bits + salt) % 4));
             continue;
         }
         std::vector<std::string_view> values;
@@ -168,10 +180,10 @@ formatter::Style style_of(unsigned bits, std::string_view text) {
             values.push_back(o.values.substr(at, bar - at));
             at = bar + 1;
         }
-        (void)formatter::set_option(style, o.key, values[(bits + salt) % values.size()]);
+        set(o.key, values[(bits + salt) % values.size()]);
         salt = salt * 31 + 7;
     }
-    return style;
+    return out;
 }
 
 // A fixed program that moves, loops a little and calls, for the TOML targets: what a machine or a
@@ -243,12 +255,7 @@ Broken check_analyzer(std::string_view input) {
     return std::nullopt;
 }
 
-Broken check_formatter(std::string_view input) {
-    if (input.size() < 2 || input.size() > kMaxProgramInput) return std::nullopt;
-    const std::uint8_t byte = static_cast<std::uint8_t>(input[0]);
-    const dialects::Dialect& d = dialect_of(byte);
-    const std::string text(input.substr(1));
-    const formatter::Style style = style_of(options_of(byte), text);
+static Broken check_formatter_with(const dialects::Dialect& d, const std::string& text, const formatter::Style& style) {
     const interpreter::Setup setup = small_setup(interpreter::default_setup(d));
     const formatter::FormatContext context{setup.calculator_decimal};
     ast::SyntaxTree tree = grammar::parse(text, d.lexical);
@@ -285,6 +292,18 @@ Broken check_formatter(std::string_view input) {
         return fmt::format("--verify: event {} (input line {}, output line {}): {}", result.difference->event,
                            result.difference->input_line, result.difference->output_line, result.difference->what);
     return std::nullopt;
+}
+
+Broken check_formatter(std::string_view input) {
+    if (input.size() < 2 || input.size() > kMaxProgramInput) return std::nullopt;
+    const std::uint8_t byte = static_cast<std::uint8_t>(input[0]);
+    const dialects::Dialect& d = dialect_of(byte);
+    const std::string text(input.substr(1));
+    const FuzzStyle style = style_of(options_of(byte), text);
+    Broken broken = check_formatter_with(d, text, style.style);
+    // How to replay it with the CLI, on the input without its first byte (in a folder of its own).
+    if (broken) *broken += fmt::format(" [kerf fmt --verify --dialect {} {}]", d.id, style.flags);
+    return broken;
 }
 
 Broken check_converter(std::string_view input) {
