@@ -130,6 +130,9 @@ OrAlarm<std::optional<Programmed>> Executor::comp_look_ahead(const BlockContext&
     const LoadedFile& file = file_of(f);
     // [FANUC] up to two blocks without motion in the plane between (semantics.md §5).
     int idle = 0;
+    // The modal motion after the running block (a G12/G13 quarter arc is no mode), carried through
+    // the blocks read ahead: `G03` alone on a block is the motion of the move after it.
+    dialects::FunctionId running = state_.flags.motion;
     for (std::uint32_t b = ctx.index() + 1; file.in_program(f.program.program, b) && idle <= 2; ++b) {
         BlockAhead next{file.block(b), {}, {}};
         if (next.view.block().kind != ast::BlockKind::code) continue;
@@ -141,10 +144,11 @@ OrAlarm<std::optional<Programmed>> Executor::comp_look_ahead(const BlockContext&
         for (const ast::CodeRef& c : next.scan.m)
             stop |= c.info && (c.info->function == fn::subprogram_call || c.info->function == fn::subprogram_return);
         if (stop) return {};
-        // The block runs with its own motion code, else with the running block's motion.
-        dialects::FunctionId motion = ctx.motion_in(state_);
+        // The block runs with its own motion code, else with the modal motion.
+        dialects::FunctionId motion = running;
         for (const ast::CodeRef& c : next.scan.g)
             if (c.info && c.info->has(dialects::traits::motion_group)) motion = c.info->function;
+        if (!(next.scan.classes & kArcApproachCode)) running = motion;
         if (auto failed = read_words(state_, state_.position, {f, next.view, next.scan, next.words}, next.words))
             return {{}, std::move(failed)};
         bool moves = false;

@@ -137,3 +137,24 @@ TEST_CASE("G42 on a lathe: a chamfered profile for tip families 0, 3 and 8") {
                    Z);
     }
 }
+
+// The look-ahead carries the modal motion through the blocks it reads (executor_compensation.cpp
+// comp_look_ahead). D1 = 5, G41, `G03` alone on a block before `X30. Y10. R10.`: N4 (X20, +X)
+// meets the arc about (20,10), which leaves (20,0) along +X: tangent, so N4 ends at (20,5); the arc
+// runs on radius 10 − 5 to (25,10); N7 (+Y) is tangent to the arc's end: (25,20) and the corner
+// with the cancel's +X, (25,25). Before, the look-ahead read the arc as a line from the running
+// block's G01: N4 stopped short at the inside corner (17.929,5) and the arc ran as a line.
+TEST_CASE("G41 on a mill: a motion code alone on a block is the motion of the move read ahead after it") {
+    const Run r = run_bare("O1\nG90 G17 G0 X-10. Y0.\nG41 D1 G1 X0. F100.\nX20.\nG03\nX30. Y10. R10.\nG1 Y20.\nG40 X40.\nM30\n",
+                           "fanuc-mill", [](Setup& s) { s.tools[1].radius = 5; });
+    require_clean(r);
+    const auto m = moves(r);
+    REQUIRE(m.size() == 6);
+    CHECK(m[2].end[X] == Approx(20));
+    CHECK(m[2].end[Y] == Approx(5));
+    CHECK(m[3].kind == EventKind::arc_ccw);
+    CHECK(m[3].end[X] == Approx(25));
+    CHECK(m[3].end[Y] == Approx(10));
+    CHECK(m[4].end[X] == Approx(25));
+    CHECK(m[4].end[Y] == Approx(25));
+}

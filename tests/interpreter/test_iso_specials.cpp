@@ -239,3 +239,26 @@ TEST_CASE("seed 004 G44 without H: the move as programmed, the gap said") {
     REQUIRE(count(r, EventKind::message) == 1);
     CHECK(of_kind(r, EventKind::message)[0].text.find("opposite direction of G43") != std::string::npos);
 }
+
+// A G12/G13 quarter arc is no mode: read ahead from it (compensation's look-ahead), the block after
+// it without a motion code is the modal G01, as when it is written. Before, the look-ahead took the
+// quarter arc's motion for it and the corner at the arc's end was built for an arc.
+TEST_CASE("seed 004 G12 under G41: the block after it runs and is read ahead with the modal G01") {
+    const auto with_regs = [](Setup& s) {
+        s.tools[1].radius = 2;
+        s.comp_shift_without_motion = true;
+    };
+    const std::string head = "O1\nG90 G17 G0 X0. Y0.\nG41 D1 G1 X10. Y0. F200\nG12 X20. Y10.\n";
+    const Run modal = run_bare(head + "X30. Y10.\nG40 G1 Y20.\nM02\n", "iso-legacy-mill", with_regs);
+    const Run written = run_bare(head + "G01 X30. Y10.\nG40 G1 Y20.\nM02\n", "iso-legacy-mill", with_regs);
+    require_clean(modal);
+    require_clean(written);
+    const auto a = moves(modal), b = moves(written);
+    REQUIRE(a.size() == b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        INFO("move " << i);
+        CHECK(a[i].kind == b[i].kind);
+        CHECK(a[i].end[X] == Approx(b[i].end[X]).margin(1e-9));
+        CHECK(a[i].end[Y] == Approx(b[i].end[Y]).margin(1e-9));
+    }
+}
