@@ -179,7 +179,8 @@ private:
         const ast::Program& p = file_.programs()[program];
         std::int64_t next = style_.number_start;
         for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
-            if (tree_.blocks[b].kind != ast::BlockKind::code) continue;
+            // An empty file is one code block without tokens (grammar/parse.cpp): no block to number.
+            if (tree_.blocks[b].kind != ast::BlockKind::code || tree_.block_first_token(b) == tree_.block_token_end(b)) continue;
             const ast::BlockView view = file_.block(b);
             const bool target = targets.count(b) > 0;
             switch (style_.block_numbers) {
