@@ -29,8 +29,13 @@ std::string format_print(std::string_view text, const macro::Variables& variable
             continue;
         }
         std::size_t j = i + 1;
+        // Saturated: #2025555555555 is no variable (read gives vacant), and must not overflow an int.
+        constexpr int kPastEveryVariable = 100'000'000;
         int number = 0;
-        while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) number = number * 10 + (text[j++] - '0');
+        while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) {
+            const int digit = text[j++] - '0';
+            number = number >= kPastEveryVariable ? kPastEveryVariable : number * 10 + digit;
+        }
         int decimals = -1;
         if (j + 1 < text.size() && text[j] == '[') {
             const std::size_t close = text.find(']', j);

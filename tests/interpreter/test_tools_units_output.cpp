@@ -67,6 +67,16 @@ TEST_CASE("DPRNT prints #n[ab] with b decimals, * as a space, and drops blanks")
     CHECK(messages[0].text == "X1.500 Y-2Z0.0");
 }
 
+// fuzz_formatter (UBSan, signed overflow): a variable number of thirteen digits in DPRNT is no
+// variable; it prints as a vacant one, 0.
+TEST_CASE("DPRNT with a variable number past every variable prints 0 and does not overflow") {
+    const Run r = run_bare("O1\nDPRNT[A#2025555555555[31]]\nM30\n");
+    require_clean(r);
+    const auto messages = of_kind(r, EventKind::message);
+    REQUIRE(messages.size() == 1);
+    CHECK(messages[0].text == "A0.0");
+}
+
 TEST_CASE("trace JSON: numbers shortest, snapped to 1e-9, only the given axes") {
     kerf::interpreter::ProgramSet programs;
     programs.add("t.nc", "O1\nM30\n", dialect("fanuc-mill"));
