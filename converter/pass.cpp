@@ -181,13 +181,17 @@ std::string Converter::respell(const Token& t, const CodeInfo& target) const {
 }
 
 void Converter::update_state(const ast::BlockView& view, bool group01) {
+    // A '/' block is skipped with the block-delete switch on, as the dry run (and --verify) runs it:
+    // its motion code is not the mode of the blocks after it (`/G00 Z50.` then `X1.` moves in the
+    // power-on mode, which the target must be told: fuzz_converter).
+    const bool deleted = view.block().has(ast::block_flags::deleted);
     for (const ast::CodeRef& c : g_) {
         if (!c.info) continue;
         const CodeInfo& i = *c.info;
         // The modal motion: a group-01 code, or a drilling cycle of its own group (until G80 or
         // a group-01 code cancels it, cycles.md §10, §11).
         const bool modal_cycle = i.has(dialects::traits::cycle) && i.modal;
-        if (i.has(dialects::traits::motion_group) || modal_cycle || i.function == fn::canned_cycle_cancel) {
+        if (!deleted && (i.has(dialects::traits::motion_group) || modal_cycle || i.function == fn::canned_cycle_cancel)) {
             motion_ = i.function == fn::canned_cycle_cancel ? nullptr : &i;
             seen_motion_ = true;
             motion_at_ = tree_.tokens[c.token].begin;

@@ -80,6 +80,19 @@ TEST_CASE("the trace comparison catches a program that moves differently") {
           "G0 X10\n");
 }
 
+// A program that runs nothing and no program at all run the same: `N4 (NOTE)` is a program of one
+// code block; with its N removed it is a comment, and the file has no program (fuzz_formatter).
+// A program that moves is not "the same" as no program.
+TEST_CASE("the trace comparison: no program equals a program that does nothing, not one that moves") {
+    const dialects::Dialect& d = test::fmt_dialect("fanuc-mill");
+    CHECK_FALSE(test::trace_difference("(HEAD)\nN4 (NOTE)\n", "(HEAD)\n(NOTE)\n", d).has_value());
+    CHECK_FALSE(test::trace_difference("(HEAD)\n(NOTE)\n", "(HEAD)\nN4 (NOTE)\n", d).has_value());
+    const auto moves = test::trace_difference("(HEAD)\nG0 X10.\n", "(HEAD)\n(G0 X10.)\n", d);
+    REQUIRE(moves.has_value());
+    CHECK(moves->what == "the output has no program");
+    CHECK(moves->input_line == 2);
+}
+
 TEST_CASE("range formatting for the language server touches only the blocks of those lines") {
     const dialects::Dialect& d = test::fmt_dialect("fanuc-mill");
     ast::SyntaxTree tree = grammar::parse("o1\ng0  x1\ng1 x2 (a)\n\n\ng0 x3\n", d.lexical);
