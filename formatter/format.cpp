@@ -179,7 +179,7 @@ private:
             blank(tokens.empty() ? tree_.slice(range) : trailing, eob);
             return;
         }
-        collect(b, block, b + 1 == tree_.block_count() || !line_break_of(trailing).empty());
+        collect(b, block, b + 1 == tree_.block_count() || !line_break_of(trailing).empty() || only_dropped_blocks_follow(b));
         // A block of nothing but a removed N word goes, line and all; one left with only its ';'
         // is an empty block, which the grammar reads as a blank line: both are printed as they will
         // be when the output is formatted again.
@@ -192,6 +192,21 @@ private:
         leading(tree_.slice({range.begin, content_begin}));
         print_pieces();
         end_line(trailing);
+    }
+
+    // block_end = none prints nothing of an empty block (`;`): when only such blocks follow on the
+    // line, the block ends it (`G28 U0;;;` → `G28 U0`, not `G28 U0;`, which the next pass changed).
+    bool only_dropped_blocks_follow(std::size_t b) const {
+        if (style_.block_end != BlockEnd::none) return false;
+        for (std::size_t next = b + 1; next < tree_.block_count(); ++next) {
+            const auto tokens = tree_.block_tokens(next);
+            for (const Token& t : tokens)
+                if (t.kind != TokenKind::eob) return false;
+            const ast::Range range = tree_.block_range(next);
+            const std::uint32_t content_end = tokens.empty() ? range.end : tokens.back().begin + tokens.back().length;
+            if (!line_break_of(tree_.slice({content_end, range.end})).empty()) return true;
+        }
+        return true;
     }
 
     // A blank line, or an empty block (`;` alone, `eob`), as one of a run of at most max_blank_lines.
