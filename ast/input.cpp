@@ -69,13 +69,20 @@ Detected detect_encoding(std::string_view head) {
 // Bytes that text does not have: NUL and the C0 controls other than TAB, LF, VT, FF, CR and ESC,
 // and DEL. DC1–DC4 (tape reader control) and SUB (a DOS end of file) do appear in NC files,
 // a few of them, so the decision is by share, not by presence.
-bool binary_byte(unsigned char c) { return (c < 0x20 && (c < 0x09 || c > 0x0D) && c != 0x1B) || c == 0x7F; }
+// Written with & and | (no branch) so that a loop over the bytes vectorises: every file of a folder
+// walk passes here.
+unsigned binary_byte(unsigned char c) {
+    return static_cast<unsigned>(c < 0x09) | (static_cast<unsigned>(c > 0x0D) & static_cast<unsigned>(c < 0x20) &
+                                              static_cast<unsigned>(c != 0x1B)) |
+           static_cast<unsigned>(c == 0x7F);
+}
 
 std::optional<InputProblem> binary_problem(std::string_view head) {
     std::size_t nul = 0, control = 0;
-    for (const char c : head) {
-        if (c == '\0') ++nul;
-        if (binary_byte(static_cast<unsigned char>(c))) ++control;
+    for (const char ch : head) {
+        const auto c = static_cast<unsigned char>(ch);
+        nul += c == 0;
+        control += binary_byte(c);
     }
     // A NUL with at least 1 % control bytes, or 10 % control bytes (compressed data has about 11 %,
     // executables far more NULs): not a program. A stray NUL in a text is read (the grammar
