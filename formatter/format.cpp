@@ -303,7 +303,7 @@ private:
     // specification II counts repeated I J K in order; dialects.md §3.7). A '%' inside a block may
     // close the tape there (grammar/parse.cpp): what stands before it runs, what follows does not.
     bool reorderable(std::size_t b) const {
-        if (axis_named_twice(b)) return false;
+        if (axis_named_twice(b) || program_word_after_first(b)) return false;
         for (const Token& t : tree_.block_tokens(b)) {
             if (t.kind == TokenKind::statement || t.kind == TokenKind::error || t.kind == TokenKind::percent) return false;
             if (t.kind != TokenKind::word || t.role() != Role::g_code || !t.is_number()) continue;
@@ -312,6 +312,19 @@ private:
             if (info && info->has(dialects::traits::takes_arguments)) return false;
         }
         return true;
+    }
+
+    // `G0 O.1 Q1`: sorted first, the O word would start a program there (grammar/parse.cpp classify:
+    // a block that begins with O is a program start), and the program before it would end a block
+    // early (fuzz_formatter, --verify). An O word that is not the block's first word stays behind.
+    bool program_word_after_first(std::size_t b) const {
+        bool first = true;
+        for (const Token& t : tree_.block_tokens(b)) {
+            if (t.kind != TokenKind::word && t.kind != TokenKind::statement) continue;
+            if (!first && t.kind == TokenKind::word && t.role() == Role::program) return true;
+            first = false;
+        }
+        return false;
     }
 
     // `U107 X10.497`: one axis by two letters (absolute and incremental, system A); the last one
