@@ -17,6 +17,20 @@ const char* kSlowdown =
 
 std::vector<Event> on_line(const Run& r, std::uint32_t line) { return moves_on_line(r, line); }
 
+// Both runs clean, and their moves the same kind to the same X Y, move for move.
+void same_moves(const Run& a_run, const Run& b_run, double margin) {
+    require_clean(a_run);
+    require_clean(b_run);
+    const auto a = moves(a_run), b = moves(b_run);
+    REQUIRE(a.size() == b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        INFO("move " << i);
+        CHECK(a[i].kind == b[i].kind);
+        CHECK(a[i].end[X] == Approx(b[i].end[X]).margin(margin));
+        CHECK(a[i].end[Y] == Approx(b[i].end[Y]).margin(margin));
+    }
+}
+
 }  // namespace
 
 // Step (machine switch corner_slowdown = "step"): the feed drops to F·(1 − p) for the last K mm.
@@ -165,18 +179,9 @@ TEST_CASE("seed 004 example 4: G12/G13 under G41 give the path of the explicit a
                                        "iso-legacy-mill", with_regs);
     const Run g12 = run_bare(head + "G12 X95. Y90. F200\n" + body + "G13 X55. Y50. F200\nG0 G40 X95. M02\n", "iso-legacy-mill",
                              with_regs);
-    require_clean(explicit_arcs);
-    require_clean(g12);
-    const auto m1 = moves(explicit_arcs), m2 = moves(g12);
-    REQUIRE(m1.size() == m2.size());
-    for (std::size_t i = 0; i < m1.size(); ++i) {
-        INFO("move " << i);
-        CHECK(m2[i].kind == m1[i].kind);
-        CHECK(m2[i].end[X] == Approx(m1[i].end[X]).margin(1e-6));
-        CHECK(m2[i].end[Y] == Approx(m1[i].end[Y]).margin(1e-6));
-    }
+    same_moves(g12, explicit_arcs, 1e-6);
     // The explicit run: the entry arc R28 about X95 Y50 (the golden trace of example 4).
-    CHECK(m1[2].radius == Approx(28));
+    CHECK(moves(explicit_arcs)[2].radius == Approx(28));
 }
 
 // G43/G44 with H (semantics.md §7: "G43 and G44 define the directions of the axial offset", the
@@ -251,14 +256,5 @@ TEST_CASE("seed 004 G12 under G41: the block after it runs and is read ahead wit
     const std::string head = "O1\nG90 G17 G0 X0. Y0.\nG41 D1 G1 X10. Y0. F200\nG12 X20. Y10.\n";
     const Run modal = run_bare(head + "X30. Y10.\nG40 G1 Y20.\nM02\n", "iso-legacy-mill", with_regs);
     const Run written = run_bare(head + "G01 X30. Y10.\nG40 G1 Y20.\nM02\n", "iso-legacy-mill", with_regs);
-    require_clean(modal);
-    require_clean(written);
-    const auto a = moves(modal), b = moves(written);
-    REQUIRE(a.size() == b.size());
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        INFO("move " << i);
-        CHECK(a[i].kind == b[i].kind);
-        CHECK(a[i].end[X] == Approx(b[i].end[X]).margin(1e-9));
-        CHECK(a[i].end[Y] == Approx(b[i].end[Y]).margin(1e-9));
-    }
+    same_moves(modal, written, 1e-9);
 }
