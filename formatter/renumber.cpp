@@ -191,8 +191,13 @@ private:
                 case BlockNumbers::renumber:
                 case BlockNumbers::referenced:
                     if (style_.block_numbers == BlockNumbers::referenced && !target) {
-                        if (removable_sequence_word(b)) plan_.blocks[b] = Renumbering::kRemove;
-                        break;
+                        if (!view.has_sequence_word()) break;
+                        if (removable_sequence_word(b)) {
+                            plan_.blocks[b] = Renumbering::kRemove;
+                            break;
+                        }
+                        // An N that stays (before a '%') is numbered with the others: kept, its old
+                        // number could be one this renumbering gives another block (fuzz_formatter).
                     }
                     if (next > kMaxSequenceNumber) {
                         refuse(b, view.range(), fmt::format("the new number N{} is over N{}", next, kMaxSequenceNumber),
