@@ -139,7 +139,8 @@ LocalSet vacancy_tested(const ast::TypedFile& file, std::size_t program) {
     const auto local_of = [&](std::int32_t e) -> std::optional<int> {
         if (e < 0 || tree.exprs[static_cast<std::size_t>(e)].kind != ast::ExprKind::variable) return std::nullopt;
         const auto n = rules::constant_of(tree, tree.exprs[static_cast<std::size_t>(e)].a);
-        if (!n) return std::nullopt;
+        // #0 (vacant) and the locals #1–#33 are all this asks about; #6e94 must not reach the cast (UBSan).
+        if (!n || !(*n >= 0 && *n < 34)) return std::nullopt;
         return static_cast<int>(*n);
     };
     for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {

@@ -161,11 +161,33 @@ private:
 
     // The block has an N word, and taking it away leaves no block that starts with '%': such a line
     // is a tape mark and would close the program there (grammar/parse.cpp; fuzz_formatter).
-    bool removable_sequence_word(std::uint32_t b) const {
+    // And a block that is nothing but its N word stays when it is all its program runs (`n4` before
+    // `O00001` on one line is a program of its own): without it the program is gone, and the next
+    // one would be the first to run (fuzz_formatter, --verify).
+    bool removable_sequence_word(std::uint32_t b, bool program_has_other_code) const {
         const auto tokens = tree_.block_tokens(b);
+        bool other_words = false;
+        std::optional<bool> removable;
         for (std::size_t i = 0; i < tokens.size(); ++i) {
-            if (tokens[i].kind != ast::TokenKind::word || tokens[i].role() != ast::Role::sequence) continue;
-            return i + 1 >= tokens.size() || tokens[i + 1].kind != ast::TokenKind::percent;
+            const bool word = tokens[i].kind == ast::TokenKind::word || tokens[i].kind == ast::TokenKind::statement;
+            if (!word) continue;
+            if (removable || tokens[i].role() != ast::Role::sequence) {
+                other_words = true;
+                continue;
+            }
+            removable = i + 1 >= tokens.size() || tokens[i + 1].kind != ast::TokenKind::percent;
+        }
+        return removable.value_or(false) && (other_words || program_has_other_code);
+    }
+
+    // A code block of the program with a word or a statement that is not its N (one pass per program:
+    // a block of nothing but its N is never that block itself).
+    bool runs_code(const ast::Program& p) const {
+        for (std::uint32_t o = p.first_block; o < p.end_block; ++o) {
+            if (tree_.blocks[o].kind != ast::BlockKind::code) continue;
+            for (const ast::Token& t : tree_.block_tokens(o))
+                if ((t.kind == ast::TokenKind::word && t.role() != ast::Role::sequence) || t.kind == ast::TokenKind::statement)
+                    return true;
         }
         return false;
     }
@@ -177,6 +199,7 @@ private:
     ProgramNumbers number_program(std::uint32_t program, const std::set<std::uint32_t>& targets) {
         ProgramNumbers out;
         const ast::Program& p = file_.programs()[program];
+        const bool program_code = style_.block_numbers != BlockNumbers::renumber && runs_code(p);
         std::int64_t next = style_.number_start;
         for (std::uint32_t b = p.first_block; b < p.end_block; ++b) {
             // An empty file is one code block without tokens (grammar/parse.cpp): no block to number.
@@ -186,13 +209,13 @@ private:
             switch (style_.block_numbers) {
                 case BlockNumbers::keep: break;
                 case BlockNumbers::remove:
-                    if (removable_sequence_word(b) && !target) plan_.blocks[b] = Renumbering::kRemove;
+                    if (!target && removable_sequence_word(b, program_code)) plan_.blocks[b] = Renumbering::kRemove;
                     break;
                 case BlockNumbers::renumber:
                 case BlockNumbers::referenced:
                     if (style_.block_numbers == BlockNumbers::referenced && !target) {
                         if (!view.has_sequence_word()) break;
-                        if (removable_sequence_word(b)) {
+                        if (removable_sequence_word(b, program_code)) {
                             plan_.blocks[b] = Renumbering::kRemove;
                             break;
                         }
