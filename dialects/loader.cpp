@@ -778,8 +778,11 @@ Dialect derive_dialect(const Dialect& base, const DialectFile& file, std::string
     if (file.machine_set) out.machine = d.machine;
     out.bases.insert(out.bases.begin(), base.id);
     override_lexical(out.lexical, file);
+    // The base's clues come first (check_detect's lines for them are the base file's).
+    std::size_t inherited = out.detect.clues.size();
     if (file.detect_set) {
         if (!file.detect_inherit) out.detect.clues.clear();
+        inherited = out.detect.clues.size();
         out.detect.clues.insert(out.detect.clues.end(), d.detect.clues.begin(), d.detect.clues.end());
         out.detect.fallback = d.detect.fallback;
         out.detect.needs_own = false;
@@ -813,6 +816,13 @@ Dialect derive_dialect(const Dialect& base, const DialectFile& file, std::string
             apply_patch(*it, p);
     }
     out.set_codes(std::move(codes));
+    // A base's evidence for a code this file removes proves nothing here; check_detect would report
+    // it at a line of the base's file, not this one (fuzz_dialect_toml).
+    const auto gone = [&out](const DetectClue& c) {
+        return c.kind == DetectClue::Kind::code && c.weight > 0 && !out.code(c.letter, c.key);
+    };
+    out.detect.clues.erase(std::remove_if(out.detect.clues.begin(), out.detect.clues.begin() + static_cast<std::ptrdiff_t>(inherited), gone),
+                           out.detect.clues.begin() + static_cast<std::ptrdiff_t>(inherited));
     return out;
 }
 
