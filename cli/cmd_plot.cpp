@@ -50,7 +50,7 @@ int run_plot(const PlotCliOptions& o) {
     const interpreter::RunResult result = project::execute(run, sink, o.run.lenient);
     const plot::SvgOptions options{run.dialect->machine, run.setup.diameter_x, title_of(run, o.run.file), frame};
     const std::string svg = plot::render_svg(std::move(sink).finish(), options);
-    const int code = report_alarms(run, result);
+    const int code = report_alarms(run, result, o.run.lenient);
     return write_svg(svg, o.output) ? code : kExitUsage;
 }
 

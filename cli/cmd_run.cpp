@@ -97,7 +97,7 @@ int run_run(const RunCliOptions& o) {
         summary << boost::json::serialize(interpreter::summary_to_json(result, axes)) << "\n";
     else
         print_summary(summary, run, result, axes);
-    return report_alarms(run, result);
+    return report_alarms(run, result, o.run.lenient);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "ast/display.hpp"
+#include "dialects/alarms.hpp"
 #include "cli/commands.hpp"
 #include "cli/progress.hpp"
 
@@ -52,12 +53,26 @@ std::variant<std::unique_ptr<project::DryRun>, int> prepare(const DryRunOptions&
     return kExitUsage;
 }
 
-int report_alarms(const project::DryRun& run, const interpreter::RunResult& result) {
+namespace {
+
+// Alarms a lenient run does not stop at (interpreter/executor.cpp: refuse_unknown_g_code, and the
+// strict run's refusal of a block with syntax errors).
+bool lenient_goes_past(const interpreter::Event& alarm) {
+    return alarm.code == alarms::improper_command || alarm.code == alarms::syntax_error;
+}
+
+}  // namespace
+
+int report_alarms(const project::DryRun& run, const interpreter::RunResult& result, bool lenient) {
     // The number the control shows: its own when the dialect numbers the alarm ([alarms]), else kerf's.
-    for (const interpreter::Event& a : result.alarms)
+    for (const interpreter::Event& a : result.alarms) {
         std::cerr << fmt::format("{}:{}: error: alarm {}: {}\n", run.programs.file(a.source.file).name(), a.source.line,
                                  a.control_alarm ? a.control_alarm : a.code,
                                  ast::printable(a.text));   // alarm texts quote the program (#3000, comments)
+        if (!lenient && lenient_goes_past(a))
+            std::cerr << "  = hint: if the program is for another control, name its dialect (--dialect; `kerf dialects` "
+                         "lists them), or run past the block with --lenient\n";
+    }
     return result.alarms.empty() ? kExitClean : kExitFindings;
 }
 

@@ -40,6 +40,8 @@ project::Overrides overrides_of(const std::string& dialect, const std::vector<st
 std::variant<std::unique_ptr<project::DryRun>, int> prepare(const DryRunOptions& options);
 
 // Alarms on stderr as `file:line: error: alarm N: text`; the exit code: 0 without alarms, 1 with.
-int report_alarms(const project::DryRun& run, const interpreter::RunResult& result);
+// A strict run that stopped where a lenient one goes on (a code the dialect does not have, a block
+// with syntax errors) says how to go past it.
+int report_alarms(const project::DryRun& run, const interpreter::RunResult& result, bool lenient);
 
 }  // namespace kerf::cli

@@ -23,7 +23,7 @@ for t in $targets; do
     log="$work/$t-$(date -u +%Y%m%dT%H%M%S).log"
     start=$(date -u +%H:%M)
     set +e
-    /usr/bin/time -f '%M' -o "$log.rss" "./build-fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    /usr/bin/time -f '%M %U %S' -o "$log.rss" "./build-fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
         $args -print_final_stats=1 -artifact_prefix="$work/artifacts/$t/" "$work/corpus/$t" "build-fuzz/seeds/$t" >"$log" 2>&1
     rc=$?
     set -e
@@ -32,9 +32,13 @@ for t in $targets; do
     secs=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
     cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1)
     units=$(ls "$work/corpus/$t" | wc -l)
-    rss=$(($(cat "$log.rss" | tail -1) / 1024))
+    # peak RSS and the CPU seconds the fuzzer had (user + system): on a shared machine the
+    # wall-clock budget says little about how much fuzzing a run was.
+    set -- $(tail -1 "$log.rss")
+    rss=$(($1 / 1024))
+    cpu=$(echo "$2 $3" | awk '{printf "%d", $1 + $2}')
     if [ "$rc" -eq 0 ]; then result="no crash, leak or timeout"; else result="FINDING (exit $rc): $(grep -m1 -E 'ERROR|invariant|SUMMARY' "$log" || echo see $log)"; fi
-    row="| fuzz_$t | $rev | $(date -u +%F) $start–$end, ${seconds} s | ${runs:-?} | ${secs:-?} | ${cov:-?} | $units | ${rss} MB | $result |"
+    row="| fuzz_$t | $rev | $(date -u +%F) $start–$end, ${seconds} s, ${cpu} CPU s | ${runs:-?} | ${secs:-?} | ${cov:-?} | $units | ${rss} MB | $result |"
     echo "$row"
     rows="$rows$row
 "

@@ -142,3 +142,27 @@ TEST_CASE("the same programs under fanuc-mill keep FANUC's numbers and texts") {
     fs::remove_all(kDir);
     fs::remove_all(kDir.string() + "-run");
 }
+
+// A code the dialect does not have stops a strict run with alarm 010 (Cherepanov's lathe programs
+// begin with a mill's G49): the message says how to go past it, a lenient run does not stop, and an
+// alarm no dialect or --lenient changes (078) gets no such hint.
+TEST_CASE("kerf run and kerf plot say how to go past an unknown code's alarm 010") {
+    write_text(kDir / "g49.nc", "O0001\nG21 G40 G49 G54\nG00 X10. Z5.\nM30\n");
+    const std::string hint = "= hint: if the program is for another control, name its dialect (--dialect";
+    const CliRun run = run_cli("run --dialect fanuc-lathe-a " + shell_quote(kDir / "g49.nc"));
+    CHECK(run.code == 1);
+    CHECK(run.err.find(":2: error: alarm 10: G49 is not a code of fanuc-lathe-a (alarm 010)") != std::string::npos);
+    CHECK(run.err.find(hint) != std::string::npos);
+    CHECK(run.err.find("or run past the block with --lenient") != std::string::npos);
+    const CliRun plot = run_cli("plot --dialect fanuc-lathe-a -o " + shell_quote(kDir / "g49.svg") + " " + shell_quote(kDir / "g49.nc"));
+    CHECK(plot.err.find(hint) != std::string::npos);
+    const CliRun lenient = run_cli("run --lenient --dialect fanuc-lathe-a " + shell_quote(kDir / "g49.nc"));
+    CHECK(lenient.code == 0);
+    CHECK(lenient.err.find(hint) == std::string::npos);
+    write_text(kDir / "call.nc", "O0001\nG90 G00 X0. Y0.\nM98 P1234\nM30\n");
+    const CliRun call = run_cli("run --dialect fanuc-mill " + shell_quote(kDir / "call.nc"));
+    CHECK(call.err.find("alarm 78") != std::string::npos);
+    CHECK(call.err.find("hint") == std::string::npos);
+    fs::remove_all(kDir);
+    fs::remove_all(kDir.string() + "-run");
+}
