@@ -18,6 +18,9 @@ using ast::TokenKind;
 using ast::Role;
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v' || c == '\r'; }
+// A blank within a line: the grammar's blanks (grammar/block_def.hpp) without the CR that may be a
+// line break.
+bool is_line_blank(char c) { return is_blank(c) && c != '\r'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 // A piece of an output block: a token of the tree, or one the formatter adds.
@@ -85,7 +88,7 @@ int rank_of(const Token& t) {
 // follows on the same line or the file ends.
 std::string_view line_break_of(std::string_view trailing) {
     std::size_t at = 0;
-    while (at < trailing.size() && is_blank(trailing[at]) && trailing[at] != '\r') ++at;
+    while (at < trailing.size() && is_line_blank(trailing[at])) ++at;
     trailing.remove_prefix(at);
     const bool lone_cr = !trailing.empty() && trailing.front() == '\r';
     return lone_cr || trailing.find('\n') != std::string_view::npos ? trailing : std::string_view{};
@@ -501,7 +504,7 @@ bool ends_with_line_break(const std::string& out) { return !out.empty() && (out.
 bool ends_in_loose_blanks(const ast::SyntaxTree& tree) {
     const std::string_view text = tree.text;
     std::size_t blanks = 0;
-    while (blanks < text.size() && (text[text.size() - 1 - blanks] == ' ' || text[text.size() - 1 - blanks] == '\t')) ++blanks;
+    while (blanks < text.size() && is_line_blank(text[text.size() - 1 - blanks])) ++blanks;
     if (blanks == 0) return false;
     if (tree.tokens.empty()) return true;
     const ast::Token& last = tree.tokens[tree.tokens.size() - 1];
@@ -560,7 +563,7 @@ FormatResult format(const ast::TypedFile& file, const Style& style, const Format
         // text keeps its own) would become a line of blanks before the '%', one blank line more than
         // blank_lines allows the next time (fuzz_formatter).
         if (ends_in_loose_blanks(tree))
-            while (!out.empty() && (out.back() == ' ' || out.back() == '\t')) out.pop_back();
+            while (!out.empty() && is_line_blank(out.back())) out.pop_back();
         if (!out.empty() && !ends_with_line_break(out)) out += brk;
         (out += '%') += brk;
     }
