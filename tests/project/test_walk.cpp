@@ -118,3 +118,35 @@ TEST_CASE("run_parallel runs every index once and reports the end") {
         CHECK(last_finished == runs.size());
     }
 }
+
+// DiskFileSystem::read copies a file of 1 MiB or more from its mapping (project/files.cpp) and reads
+// smaller ones as a stream: both give the file's bytes, and the decoder's checks apply to both.
+TEST_CASE("DiskFileSystem reads a large file from its mapping byte for byte, under the same limits") {
+    const fs::path root = fs::temp_directory_path() / "kerf_test_read_mapped";
+    fs::remove_all(root);
+    fs::create_directories(root);
+    std::string big;
+    for (int i = 0; big.size() < (std::size_t{3} << 19); ++i) {   // appended piecewise: GCC 12 warns falsely on "N" + string
+        big += 'N';
+        big += std::to_string(i);
+        big += " G01 X1.5 Y-2.25\r\n";
+    }
+    big += "M30";   // no line break at the end
+    write_text(root / "big.nc", big);
+    write_text(root / "small.nc", "G00 X1.\n");
+    const DiskFileSystem disk;
+    const ReadResult read = disk.read(root / "big.nc", kerf::ast::InputLimits{});
+    REQUIRE(read.text);
+    CHECK(*read.text == big);
+    CHECK(read.problems.empty());
+    const ReadResult small = disk.read(root / "small.nc", kerf::ast::InputLimits{});
+    REQUIRE(small.text);
+    CHECK(*small.text == "G00 X1.\n");
+    // The limits hold for the mapped path: a line over max_line_bytes is refused, the file too big too.
+    const ReadResult long_lines = disk.read(root / "big.nc", kerf::ast::InputLimits{0, 16});
+    CHECK_FALSE(long_lines.text);
+    CHECK(long_lines.error.find("line") != std::string::npos);
+    const ReadResult too_big = disk.read(root / "big.nc", kerf::ast::InputLimits{std::uint64_t{1} << 20, 0});
+    CHECK_FALSE(too_big.text);
+    fs::remove_all(root);
+}
