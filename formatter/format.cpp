@@ -111,6 +111,31 @@ void append_comment(std::string& out, std::string_view spelling, bool unclosed, 
     out += pad ? " )" : ")";
 }
 
+// The block writes #3000 (macro alarm) or #3006 (stop with message), whose message is the block's
+// comment ([FANUC]; interpreter/executor_system.cpp): that comment is data, printed as written
+// whatever comment_inside says (padded, `(TEXT)` became the message ' TEXT ': fuzz_formatter).
+// A variable number computed at run time might be either.
+bool writes_message(const ast::SyntaxTree& tree, std::span<const Token> tokens) {
+    const auto message_variable = [&](std::int32_t target) {
+        if (target < 0) return false;
+        const ast::Expr& variable = tree.exprs[static_cast<std::size_t>(target)];
+        if (variable.kind != ast::ExprKind::variable || variable.a < 0) return true;
+        const ast::Expr& number = tree.exprs[static_cast<std::size_t>(variable.a)];
+        if (number.kind != ast::ExprKind::number) return true;
+        const double n = tree.number_value(number);
+        return n == 3000 || n == 3006;
+    };
+    for (const Token& t : tokens) {
+        if (t.kind != TokenKind::statement) continue;
+        for (std::int32_t i = t.payload; i >= 0;) {
+            const ast::Statement& st = tree.statements[static_cast<std::size_t>(i)];
+            if (st.kind == ast::StatementKind::assign && message_variable(st.target)) return true;
+            i = st.kind == ast::StatementKind::if_then ? st.then_statement : -1;
+        }
+    }
+    return false;
+}
+
 // G/M code digits: "1" → "01" (two) or "001" → "1" (minimal); codes with a fraction keep it.
 void append_code_number(std::string& out, std::string_view value, CodeDigits digits) {
     const std::size_t point = std::min(value.find('.'), value.size());
@@ -153,6 +178,7 @@ private:
     bool line_start_ = true;
     std::uint32_t number_token_ = kNewNumber;   // the N word printed with new_number_
     std::int64_t new_number_ = 0;
+    bool message_block_ = false;   // the block's comment is a message (writes_message)
 
     void block(std::size_t b) {
         const ast::Block& block = tree_.blocks[b];
@@ -193,6 +219,7 @@ private:
         }
         blank_run_ = 0;
         leading(tree_.slice({range.begin, content_begin}));
+        message_block_ = writes_message(tree_, tokens);
         print_pieces();
         end_line(trailing);
     }
@@ -417,7 +444,8 @@ private:
                 out_ += tree_.value_spelling(t);
                 break;
             case TokenKind::comment:
-                append_comment(out_, tree_.spelling(t), t.has(ast::token_flags::unclosed), style_.comment_inside);
+                append_comment(out_, tree_.spelling(t), t.has(ast::token_flags::unclosed),
+                               message_block_ ? CommentInside::keep : style_.comment_inside);
                 break;
             case TokenKind::statement: statement(t, p.token); break;
             default: out_ += tree_.spelling(t);
