@@ -212,7 +212,12 @@ private:
         // A block of nothing but a removed N word goes, line and all; one left with only its ';'
         // is an empty block, which the grammar reads as a blank line: both are printed as they will
         // be when the output is formatted again.
-        if (pieces_.empty()) return;
+        if (pieces_.empty()) {
+            // After a block on its line, the line break is that block's: `G0 X1; N630;` with the N
+            // removed is `G0 X1` and its line end (dropped, the next line joined it: fuzz_formatter).
+            if (!line_start_) end_line(trailing);
+            return;
+        }
         if (pieces_.size() == 1 && (pieces_[0].token == kNewEob || is_kind(pieces_[0], TokenKind::eob))) {
             blank(trailing, true);
             return;
@@ -224,14 +229,24 @@ private:
         end_line(trailing);
     }
 
-    // block_end = none prints nothing of an empty block (`;`): when only such blocks follow on the
-    // line, the block ends it (`G28 U0;;;` → `G28 U0`, not `G28 U0;`, which the next pass changed).
+    // block_end = none prints nothing of an empty block (`;`), nor of a block of an N word that
+    // renumbering removes (`N630;`): when only such blocks follow on the line, the block ends it
+    // (`G28 U0;;;` → `G28 U0`, not `G28 U0;`, which the next pass changed).
     bool only_dropped_blocks_follow(std::size_t b) const {
         if (style_.block_end != BlockEnd::none) return false;
         for (std::size_t next = b + 1; next < tree_.block_count(); ++next) {
             const auto tokens = tree_.block_tokens(next);
-            for (const Token& t : tokens)
-                if (t.kind != TokenKind::eob) return false;
+            const auto planned = plan_.blocks.find(static_cast<std::uint32_t>(next));
+            const bool number_removed = planned != plan_.blocks.end() && planned->second == Renumbering::kRemove;
+            bool number_seen = false;
+            for (const Token& t : tokens) {
+                if (t.kind == TokenKind::eob) continue;
+                if (number_removed && !number_seen && t.kind == TokenKind::word && t.role() == Role::sequence) {
+                    number_seen = true;
+                    continue;
+                }
+                return false;
+            }
             const ast::Range range = tree_.block_range(next);
             const std::uint32_t content_end = tokens.empty() ? range.end : tokens.back().begin + tokens.back().length;
             if (!line_break_of(tree_.slice({content_end, range.end})).empty()) return true;
