@@ -77,7 +77,7 @@ int run_parse(const ParseOptions& o) {
     if (o.explain_dialect) std::cerr << why << "\n";
 
     const auto start = std::chrono::steady_clock::now();
-    ast::SyntaxTree tree = grammar::parse(std::move(*text), dialect->lexical);
+    ast::SyntaxTree tree = grammar::parse(std::move(*text), dialect->lexical, grammar::parse_threads());
     const ast::TypedFile typed = ast::TypedFile::bind(tree, *dialect);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (o.stats) {

@@ -31,8 +31,10 @@ enum class PendingValue : std::uint8_t { none, number, expr };
 
 class Builder {
 public:
-    Builder(ast::SyntaxTree& target, const dialects::LexicalRules& lexical)
-        : tree(target), rules(lexical), base(target.text.data()) {}
+    // Offsets count from `text_base`: the start of the whole text, also when `target` receives
+    // only a later stretch of it (grammar/parse.cpp, the second half of a parse on two threads).
+    Builder(ast::SyntaxTree& target, const dialects::LexicalRules& lexical, const char* text_base)
+        : tree(target), rules(lexical), base(text_base) {}
 
     ast::SyntaxTree& tree;
     const dialects::LexicalRules& rules;

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <thread>
 
 #include "ast/diagnostic_ids.hpp"
+#include "ast/source.hpp"
 #include "ast/display.hpp"
 #include "grammar/block_def.hpp"
 
@@ -67,16 +69,21 @@ void classify(const ast::SyntaxTree& tree, ast::Block& block, std::size_t first,
 
 class Driver {
 public:
-    Driver(ast::SyntaxTree& tree, const dialects::LexicalRules& rules) : tree_(tree), builder_(tree, rules) {}
+    // `text` is the whole text the offsets count from; `tree` receives the blocks of the stretch
+    // run() is given (tree.text is not read: it may hold the text or nothing).
+    Driver(ast::SyntaxTree& tree, const dialects::LexicalRules& rules, std::string_view text)
+        : tree_(tree), text_(text), builder_(tree, rules, text.data()) {}
 
-    grammar::ParseState run(grammar::ParseState state) {
-        const std::string& text = tree_.text;
+    // Parses text[from, to): `from` starts a line and `to` ends one (or the text). The arrays are
+    // reserved for `reserve_bytes` of text.
+    grammar::ParseState run(grammar::ParseState state, std::size_t from, std::size_t to, std::size_t reserve_bytes) {
+        const std::string_view text = text_;
         const char* const base = text.data();
-        const char* const end = base + text.size();
-        reserve(base, end);
-        const char* pos = base;
+        const char* const end = base + to;
+        reserve(reserve_bytes);
+        const char* pos = base + from;
         bool program_seen = state.program_seen;   // code since the opening '%'
-        bool bom_pending = state.file_start && text.size() >= 3 && std::memcmp(base, "\xEF\xBB\xBF", 3) == 0;
+        bool bom_pending = state.file_start && to - from >= 3 && std::memcmp(pos, "\xEF\xBB\xBF", 3) == 0;
         bool ended = false;
         // Lines end at "\n", "\r\n" or a lone "\r" (ast/source.hpp LineBreaks): a CR-only file is
         // read line by line like any other. The break itself is trivia of the block before it.
@@ -124,18 +131,20 @@ public:
                 program_seen = true;
             }
         }
-        if (tree_.blocks.empty()) start_block(base);   // an empty file is one blank block
+        if (tree_.blocks.empty()) start_block(base + from);   // an empty file is one blank block
         return {false, program_seen, ended};
     }
 
 private:
     ast::SyntaxTree& tree_;
+    std::string_view text_;
     Builder builder_;
 
-    void reserve(const char* base, const char* end) {
+    std::string_view slice(ast::Range r) const { return text_.substr(r.begin, r.size()); }
+
+    void reserve(std::size_t size) {
         // Generous estimates: reserved capacity that is never written costs address space, not
         // memory (ast/large_allocator.hpp), and growing a 200 MB array would double the peak.
-        const std::size_t size = static_cast<std::size_t>(end - base);
         tree_.blocks.reserve(size / 4 + 16);
         tree_.tokens.reserve(size / 2 + 16);   // a dense G1X1Y2 has 2-3 bytes per token
         // Macro B text: gen_program.py's macro kind has 0.24 expression nodes and 0.023 statements
@@ -194,7 +203,7 @@ private:
     void write_merged_messages() {
         for (const std::size_t i : builder_.merged_diagnostics) {
             ast::Diagnostic& d = tree_.diagnostics[i];
-            const std::string_view text = tree_.slice(d.range);
+            const std::string_view text = slice(d.range);
             const std::string shown = ast::shorten(text, 80);   // on a UTF-8 character boundary
             if (text.back() == ')') {
                 // Prose that ends in ')' is a comment that lost its '(' (seed 000, N040).
@@ -241,7 +250,7 @@ private:
             if (t.kind == TokenKind::comment || t.kind == TokenKind::bom || (i == first && t.kind == TokenKind::block_delete)) continue;
             if (t.kind != TokenKind::word) return 0;
             if ((t.letter == 'O' || t.letter == 'o') && digits_follow(t)) return words_before ? i : 0;
-            if (!is_plain_word(tree_.spelling(t))) return 0;
+            if (!is_plain_word(slice(t.range()))) return 0;
             words_before = true;
         }
         return 0;
@@ -249,7 +258,7 @@ private:
 
     // O0810, O 810: a digit after the letter (and blanks) — the test project/scan.cpp makes too.
     bool digits_follow(const ast::Token& t) const {
-        const std::string_view s = tree_.spelling(t);
+        const std::string_view s = slice(t.range());
         std::size_t i = 1;
         while (i < s.size() && block_detail::is_blank(s[i])) ++i;
         return i < s.size() && s[i] >= '0' && s[i] <= '9';
@@ -286,7 +295,105 @@ bool is_plain_word(std::string_view s) {
     return digits;
 }
 
-ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules) {
+namespace {
+
+// Below this a second thread does not pay for itself (starting it, the second tree, the join).
+constexpr std::size_t kTwoThreadsMin = std::size_t{8} << 20;
+
+// Appends `second` (parsed from a later stretch of the same text: its ranges are already offsets
+// into the whole text) to `tree`: its indices into tokens, expression nodes, statements and big
+// numbers move by the counts `tree` has. The blocks and tokens go over a chunk at a time, the
+// chunk's pages of `second` released behind the copy and those of `tree` mapped ahead of it, so
+// that the two trees together hold little more than the one tree (bench/RESULTS.md: a two-thread
+// parse that copied the whole second tree peaked at 5.6x the text instead of 4.1x).
+template <typename T, typename Adjust>
+void append_released(ast::LargeVector<T>& to, ast::LargeVector<T>& from, Adjust adjust) {
+    constexpr std::size_t kChunk = std::size_t{1} << 16;
+    const bool mapped = from.capacity() * sizeof(T) >= ast::LargeAllocator<T>::kThreshold;
+    for (std::size_t at = 0; at < from.size(); at += kChunk) {
+        const std::size_t end = std::min(from.size(), at + kChunk);
+        if (to.size() + (end - at) <= to.capacity()) ast::prefault(to.data() + to.size(), (end - at) * sizeof(T));
+        for (std::size_t i = at; i < end; ++i) {
+            T item = from[i];
+            adjust(item);
+            to.push_back(item);
+        }
+        if (mapped) ast::release(from.data() + at, (end - at) * sizeof(T));
+    }
+}
+
+void append_tree(ast::SyntaxTree& tree, ast::SyntaxTree& second) {
+    const auto tokens = static_cast<std::uint32_t>(tree.tokens.size());
+    const auto exprs = static_cast<std::int32_t>(tree.exprs.size());
+    const auto statements = static_cast<std::int32_t>(tree.statements.size());
+    const auto big = static_cast<std::int32_t>(tree.big_numbers.size());
+    append_released(tree.blocks, second.blocks, [&](ast::Block& b) { b.first_token += tokens; });
+    append_released(tree.tokens, second.tokens, [&](ast::Token& t) {
+        if (t.kind == TokenKind::statement) t.payload += statements;
+        else if (t.has(ast::token_flags::value_expr)) t.payload += exprs;
+        else if (t.has(ast::token_flags::value_big)) t.payload += big;
+    });
+    const auto shift = [](std::int32_t& index, std::int32_t by) {
+        if (index >= 0) index += by;
+    };
+    for (ast::Expr e : second.exprs) {
+        if (e.kind == ast::ExprKind::number) {
+            if (e.flags & ast::token_flags::value_big) e.a += big;
+        } else {
+            shift(e.a, exprs);
+            shift(e.b, exprs);
+        }
+        tree.exprs.push_back(e);
+    }
+    for (ast::Statement st : second.statements) {
+        shift(st.target, exprs);
+        shift(st.value, exprs);
+        shift(st.label, exprs);
+        shift(st.then_statement, statements);
+        tree.statements.push_back(st);
+    }
+    tree.big_numbers.insert(tree.big_numbers.end(), second.big_numbers.begin(), second.big_numbers.end());
+    tree.diagnostics.insert(tree.diagnostics.end(), second.diagnostics.begin(), second.diagnostics.end());
+}
+
+// The parse of a long text on two threads: the second half from the state a line in the middle
+// of a program has (code seen, the tape not closed), checked against the state the first half
+// really ends in; when they differ (a '%' line in the first half closed the tape, or no code came
+// before the middle) the second half is parsed again after the first. The tree is the one the
+// single-thread parse builds (tests/grammar/test_parse_threads.cpp).
+void parse_on_two_threads(ast::SyntaxTree& tree, const dialects::LexicalRules& rules, std::size_t split) {
+    const std::string_view text = tree.text;
+    const ParseState assumed{false, true, false};
+    ast::SyntaxTree second;
+    ParseState second_end;
+    std::thread worker([&] { second_end = Driver(second, rules, text).run(assumed, split, text.size(), text.size() - split); });
+    const ParseState first_end = Driver(tree, rules, text).run({}, 0, split, text.size());
+    worker.join();
+    if (first_end.program_seen == assumed.program_seen && first_end.ended == assumed.ended) {
+        append_tree(tree, second);
+        return;
+    }
+    if (!first_end.ended) {
+        Driver(tree, rules, text).run(first_end, split, text.size(), text.size());
+        return;
+    }
+    // The tape closed in the first half: what follows is one tail block (see Driver::run).
+    if (tree.blocks.back().kind != BlockKind::tail) {
+        ast::Block tail;
+        tail.begin = static_cast<std::uint32_t>(split);
+        tail.first_token = static_cast<std::uint32_t>(tree.tokens.size());
+        tail.kind = BlockKind::tail;
+        tree.blocks.push_back(tail);
+    }
+}
+
+}  // namespace
+
+unsigned parse_threads() {
+    return std::clamp(std::thread::hardware_concurrency(), 1u, 2u);
+}
+
+ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules, unsigned threads) {
     ast::SyntaxTree tree;
     if (text.size() >= 0xFFFFFFF0u) {
         // Offsets are 32-bit; a 4 GiB NC program is not a program.
@@ -297,7 +404,15 @@ ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules) {
         return tree;
     }
     tree.text = std::move(text);
-    Driver(tree, rules).run({});
+    const std::size_t size = tree.text.size();
+    if (threads >= 2 && size >= kTwoThreadsMin) {
+        const std::size_t split = ast::last_line_end_before(tree.text, size / 2);
+        if (split != std::string_view::npos && split > 0 && split < size) {
+            parse_on_two_threads(tree, rules, split);
+            return tree;
+        }
+    }
+    Driver(tree, rules, tree.text).run({}, 0, size, size);
     return tree;
 }
 
@@ -316,7 +431,7 @@ ParseState parse_into(ast::SyntaxTree& tree, std::string_view text, const dialec
         tree.diagnostics.push_back({{0, 0}, ast::Severity::error, ast::diagnostic_id::file_too_large, "piece too large (4 GiB or more)", "split the file"});
         return {false, start.program_seen, true};
     }
-    return Driver(tree, rules).run(start);
+    return Driver(tree, rules, tree.text).run(start, 0, tree.text.size(), tree.text.size());
 }
 
 }  // namespace kerf::grammar

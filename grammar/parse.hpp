@@ -11,8 +11,12 @@
 namespace kerf::grammar {
 
 // `rules` are the dialect's lexical switches (what ';' means, line comments, comma words,
-// decimal comma, macro B). The text is moved into the tree, which owns it.
-ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules);
+// decimal comma, macro B). The text is moved into the tree, which owns it. With `threads` >= 2 a
+// long text (8 MiB or more) is parsed in two halves side by side; the tree is the same.
+ast::SyntaxTree parse(std::string text, const dialects::LexicalRules& rules, unsigned threads = 1);
+
+// The threads a parse of one long file may use on this machine (at most 2: what the halves gain).
+unsigned parse_threads();
 
 // A letter other than O, an optional sign, digits with at most one point (X1., M99, g-0.5): the
 // words an O word may follow to start the next program on the same line (`M99O0810`). The program

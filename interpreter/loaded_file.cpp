@@ -29,7 +29,7 @@ struct LoadedFile::Held {
 LoadedFile::LoadedFile(std::string name, std::string text, const dialects::Dialect& dialect)
     : name_(std::move(name)), dialect_(dialect) {
     auto held = std::make_unique<Held>();
-    held->tree = grammar::parse(std::move(text), dialect.lexical);
+    held->tree = grammar::parse(std::move(text), dialect.lexical, grammar::parse_threads());
     // The line index reads only the text: for a long file it is built on a second core while the
     // tree is bound (kerf check of 100 MB: both about 0.1 s, bench/RESULTS.md).
     constexpr std::size_t kLinesBesideBindMin = std::size_t{4} << 20;
