@@ -422,14 +422,16 @@ private:
     bool is_kind(const Piece& p, TokenKind kind) const { return p.token < kNewEob && tree_.tokens[p.token].kind == kind; }
 
     void separator(const Piece& a, const Piece& b) {
-        if (b.token == kNewEob || is_kind(b, TokenKind::eob) || is_kind(a, TokenKind::bom) ||
-            is_kind(a, TokenKind::block_delete))
-            return;
+        if (b.token == kNewEob || is_kind(b, TokenKind::eob)) return;
+        // spacing = keep keeps the blanks after a byte order mark or a '/' too: a BOM line dropped by
+        // blank_lines joins the next line with its leading blanks, which the next pass must keep
+        // (fuzz_formatter, not idempotent).
         if (style_.spacing == Spacing::keep && a.token < kNewEob && b.token < kNewEob && b.token == a.token + 1) {
             out_.append(tree_.text, tree_.tokens[a.token].begin + tree_.tokens[a.token].length,
                         tree_.tokens[b.token].begin - tree_.tokens[a.token].begin - tree_.tokens[a.token].length);
             return;
         }
+        if (is_kind(a, TokenKind::bom) || is_kind(a, TokenKind::block_delete)) return;
         if (is_kind(b, TokenKind::comment) && !is_kind(a, TokenKind::comment) && style_.comment_gap != CommentGap::spacing) {
             if (style_.comment_gap == CommentGap::one) out_ += ' ';
             return;
