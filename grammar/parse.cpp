@@ -306,10 +306,12 @@ constexpr std::size_t kTwoThreadsMin = std::size_t{8} << 20;
 // chunk's pages of `second` released behind the copy and those of `tree` mapped ahead of it, so
 // that the two trees together hold little more than the one tree (bench/RESULTS.md: a two-thread
 // parse that copied the whole second tree peaked at 5.6x the text instead of 4.1x).
-template <typename T, typename Adjust>
-void append_released(ast::LargeVector<T>& to, ast::LargeVector<T>& from, Adjust adjust) {
+template <typename Vector, typename Adjust>
+void append_released(Vector& to, Vector& from, Adjust adjust) {
+    using T = typename Vector::value_type;
     constexpr std::size_t kChunk = std::size_t{1} << 16;
-    const bool mapped = from.capacity() * sizeof(T) >= ast::LargeAllocator<T>::kThreshold;
+    // Only a large array's pages go back early (a small one is not worth a system call).
+    const bool large = from.capacity() * sizeof(T) >= ast::LargeAllocator<T>::kThreshold;
     for (std::size_t at = 0; at < from.size(); at += kChunk) {
         const std::size_t end = std::min(from.size(), at + kChunk);
         if (to.size() + (end - at) <= to.capacity()) ast::prefault(to.data() + to.size(), (end - at) * sizeof(T));
@@ -318,7 +320,7 @@ void append_released(ast::LargeVector<T>& to, ast::LargeVector<T>& from, Adjust 
             adjust(item);
             to.push_back(item);
         }
-        if (mapped) ast::release(from.data() + at, (end - at) * sizeof(T));
+        if (large) ast::release(from.data() + at, (end - at) * sizeof(T));
     }
 }
 
@@ -336,22 +338,22 @@ void append_tree(ast::SyntaxTree& tree, ast::SyntaxTree& second) {
     const auto shift = [](std::int32_t& index, std::int32_t by) {
         if (index >= 0) index += by;
     };
-    for (ast::Expr e : second.exprs) {
+    // Macro B text has as many expression nodes as tokens (gen_program.py's macro kind: 480 MB of
+    // them in 100 MB): released as they go too.
+    append_released(tree.exprs, second.exprs, [&](ast::Expr& e) {
         if (e.kind == ast::ExprKind::number) {
             if (e.flags & ast::token_flags::value_big) e.a += big;
         } else {
             shift(e.a, exprs);
             shift(e.b, exprs);
         }
-        tree.exprs.push_back(e);
-    }
-    for (ast::Statement st : second.statements) {
+    });
+    append_released(tree.statements, second.statements, [&](ast::Statement& st) {
         shift(st.target, exprs);
         shift(st.value, exprs);
         shift(st.label, exprs);
         shift(st.then_statement, statements);
-        tree.statements.push_back(st);
-    }
+    });
     tree.big_numbers.insert(tree.big_numbers.end(), second.big_numbers.begin(), second.big_numbers.end());
     tree.diagnostics.insert(tree.diagnostics.end(), second.diagnostics.begin(), second.diagnostics.end());
 }
