@@ -208,6 +208,12 @@ private:
             blank(tokens.empty() ? tree_.slice(range) : trailing, eob);
             return;
         }
+        if (plan_.blocks.find(static_cast<std::uint32_t>(b)) == plan_.blocks.end() && has_inner_program_word(tree_, tokens)) {
+            blank_run_ = 0;
+            out_.append(tree_.text, range.begin, content_end - range.begin);   // exactly as it was
+            end_line(trailing);
+            return;
+        }
         collect(b, block, b + 1 == tree_.block_count() || !line_break_of(trailing).empty() || only_dropped_blocks_follow(b));
         // A block of nothing but a removed N word goes, line and all; one left with only its ';'
         // is an empty block, which the grammar reads as a blank line: both are printed as they will

@@ -84,6 +84,11 @@ private:
                        "fix the syntax errors first (kerf parse lists them)");
                 return false;
             }
+            if (has_inner_program_word(tree_, tree_.block_tokens(b))) {
+                refuse(b, tree_.block_range(b), "the block has an O word after its first word, which reprinting could make a program start",
+                       "put the O word on a line of its own, or remove it");
+                return false;
+            }
             const auto words = file_.block(b).words_with_role(ast::Role::sequence);
             if (words.size() > 1) {
                 refuse(b, tree_.tokens[words[1]].range(), "the block has a second N word",
@@ -267,6 +272,25 @@ private:
 };
 
 }  // namespace
+
+bool has_inner_program_word(const ast::SyntaxTree& tree, std::span<const ast::Token> tokens) {
+    // program_word_after_first without its test that the words before are plain: a percent sign, a
+    // statement or an error before the O means no reading ever starts a program there.
+    bool words_before = false;
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const ast::Token& t = tokens[i];
+        if (t.kind == ast::TokenKind::comment || t.kind == ast::TokenKind::bom ||
+            (i == 0 && t.kind == ast::TokenKind::block_delete))
+            continue;
+        if (t.kind != ast::TokenKind::word) return false;
+        if (t.letter == 'O') {
+            const std::string_view value = tree.value_spelling(t);
+            if (!value.empty() && value.front() >= '0' && value.front() <= '9') return words_before;
+        }
+        words_before = true;
+    }
+    return false;
+}
 
 std::variant<Renumbering, std::vector<ast::Diagnostic>> plan_renumbering(const ast::TypedFile& file, const Style& style) {
     if (style.block_numbers == BlockNumbers::keep) return Renumbering{};

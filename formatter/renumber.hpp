@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <unordered_map>
 #include <variant>
 #include <vector>
@@ -37,6 +38,13 @@ struct Renumbering {
 };
 
 // The plan for `style.block_numbers` (empty for keep), or the reasons it cannot be done.
+// An O word with digits that is not its block's first word (`X9 D 2O 3`): the grammar starts a new
+// program there only after plain words (grammar/parse.cpp, program_word_after_first), and `D 2` is
+// not one, so the O is a word of this block. Reprinted (`D2O3`), the words before it would become
+// plain and the next reading would start a program at `O3` (fuzz_formatter, not idempotent): the
+// formatter leaves such a block as written, and renumbering, which would have to change it, refuses.
+bool has_inner_program_word(const ast::SyntaxTree& tree, std::span<const ast::Token> tokens);
+
 std::variant<Renumbering, std::vector<ast::Diagnostic>> plan_renumbering(const ast::TypedFile& file, const Style& style);
 
 }  // namespace kerf::formatter

@@ -87,6 +87,18 @@ TEST_CASE("renumbering refuses what it cannot follow") {
         const ast::Diagnostic d = refusal("O1\nN10 G0 X1.2.3\nM30\n", "fanuc-mill", renumbering(10, 10));
         CHECK(d.message.find("syntax error") != std::string::npos);
     }
+    SECTION("a block with an O word after its words, which a reprint could make a program start") {
+        // `D 2` is no plain word, so `O 3` is a word of the block; renumbered, `D2O3` would start O0003
+        // (fuzz/regressions/formatter/inner-o-word-becomes-program-start.nc).
+        const ast::Diagnostic d = refusal("O1\nN10 X9 D 2O 3\nM30\n", "fanuc-mill", renumbering(10, 10));
+        CHECK(d.message.find("an O word after its first word") != std::string::npos);
+        CHECK(d.hint == "put the O word on a line of its own, or remove it");
+        // A '%' before the O (`%O0003(...)`) is not such a block: no reading starts a program there.
+        const formatter::FormatResult framed =
+            test::format_text("%O0003(FIXTURE)\nN5 G0 X1\nM30\n%\n", test::fmt_dialect("fanuc-mill"), renumbering(10, 10));
+        REQUIRE(framed.text.has_value());
+        CHECK(*framed.text == "% O0003 (FIXTURE)\nN10 G0 X1\nN20 M30\n%\n");
+    }
     SECTION("a block with a second N word") {
         const ast::Diagnostic d = refusal("O1\nN10 G0 N30 X1\nM30\n", "fanuc-mill", renumbering(10, 10));
         CHECK(d.message.find("second N word") != std::string::npos);
