@@ -191,7 +191,9 @@ private:
             out_.append(tree_.text, range.begin, range.size());
             return;
         }
-        if (block.has(ast::block_flags::has_error)) {
+        // A block with a syntax error, or with an O word a reprint could make a program start
+        // (renumber.hpp: renumbering refuses such a file, so no new N is lost here).
+        if (block.has(ast::block_flags::has_error) || has_inner_program_word(tree_, tokens)) {
             blank_run_ = 0;
             out_.append(tree_.text, range.begin, content_end - range.begin);   // exactly as it was
             end_line(trailing);
@@ -206,12 +208,6 @@ private:
                 eob = eob || t.kind == TokenKind::eob;
             }
             blank(tokens.empty() ? tree_.slice(range) : trailing, eob);
-            return;
-        }
-        if (plan_.blocks.find(static_cast<std::uint32_t>(b)) == plan_.blocks.end() && has_inner_program_word(tree_, tokens)) {
-            blank_run_ = 0;
-            out_.append(tree_.text, range.begin, content_end - range.begin);   // exactly as it was
-            end_line(trailing);
             return;
         }
         collect(b, block, b + 1 == tree_.block_count() || !line_break_of(trailing).empty() || only_dropped_blocks_follow(b));
