@@ -3,6 +3,10 @@
 // UTF-8).
 #include <catch2/catch.hpp>
 
+#include <random>
+#include <string>
+#include <vector>
+
 #include "ast/display.hpp"
 #include "ast/input.hpp"
 #include "ast/source.hpp"
@@ -159,6 +163,73 @@ TEST_CASE("line breaks: LF, CRLF and a lone CR each end a line") {
     CHECK(last_line_end_before("AB\r\nCD", 3) == std::string::npos);
     CHECK(last_line_end_before("AB\r\nCD", 4) == 4);
     CHECK(last_line_end_before("AB\rCD", 4) == 3);
+}
+
+// The lines as the rule of LineBreaks says, one byte at a time: '\n' ends a line, so does a '\r'
+// not followed by '\n' (the '\r' of "\r\n" stays in its line as trivia before the '\n').
+namespace {
+
+std::vector<std::string> naive_lines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::string line;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\n' || (c == '\r' && (i + 1 == text.size() || text[i + 1] != '\n'))) {
+            lines.push_back(line);
+            line.clear();
+            continue;
+        }
+        line += c;
+    }
+    if (!line.empty()) lines.push_back(line);
+    return lines;
+}
+
+}  // namespace
+
+TEST_CASE("line breaks: the scanner cuts every mix of CR, LF and CRLF as a byte-by-byte reading does") {
+    // Texts without any '\r', with '\r' only at the end, with '\r' here and there, CRLF and
+    // CR CR LF: every mix must cut as the rule says.
+    std::mt19937 random(20261128);
+    const std::string alphabet = "G1\r\n\n X";
+    for (int round = 0; round < 2000; ++round) {
+        std::string text;
+        const std::size_t length = random() % 40;
+        for (std::size_t i = 0; i < length; ++i) text += alphabet[random() % alphabet.size()];
+        LineBreaks breaks(text);
+        std::vector<std::string> lines;
+        for (std::size_t pos = 0; pos < text.size();) {
+            const LineBreaks::Line l = breaks.line_from(pos);
+            lines.push_back(text.substr(pos, l.end - pos));
+            pos = l.next;
+        }
+        INFO(printable(text));
+        CHECK(lines == naive_lines(text));
+    }
+}
+
+TEST_CASE("line breaks: long texts with a few CRs far apart cut as a byte-by-byte reading does") {
+    // Long texts of short lines with a few lone CRs and CRLFs tens of kilobytes apart, and lines
+    // longer than 64 KiB ended by a lone CR: the searches for '\r' and '\n' go far ahead.
+    std::mt19937 random(7);
+    for (int round = 0; round < 20; ++round) {
+        std::string text;
+        while (text.size() < 300000) {
+            const unsigned pick = random() % 5000;
+            if (pick == 0) text += "G1 X1\r";
+            else if (pick == 1) text += "G1 X1\r\n";
+            else if (pick == 2) text += std::string(70000 + random() % 1000, 'X') + "\r";
+            else text += "G1 X1\n";
+        }
+        LineBreaks breaks(text);
+        std::vector<std::string> lines;
+        for (std::size_t pos = 0; pos < text.size();) {
+            const LineBreaks::Line l = breaks.line_from(pos);
+            lines.push_back(text.substr(pos, l.end - pos));
+            pos = l.next;
+        }
+        CHECK(lines == naive_lines(text));
+    }
 }
 
 TEST_CASE("display: control bytes and invalid UTF-8 are escaped, characters kept") {
