@@ -11,6 +11,52 @@
 #include "grammar/parse.hpp"
 
 namespace kerf::grammar {
+
+namespace detail {
+
+std::vector<std::uint32_t> line_clue_offsets(std::string_view text, std::string_view pattern, bool prefix) {
+    std::vector<std::uint32_t> out;
+    constexpr std::string_view kBreaks = "\r\n";
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    if (pattern.find_first_of(kBreaks) != std::string_view::npos) return out;   // no line holds a break
+    const auto line_start = [&](std::size_t at) {
+        const std::size_t before = at == 0 ? std::string_view::npos : text.find_last_of(kBreaks, at - 1);
+        std::size_t begin = before == std::string_view::npos ? 0 : before + 1;
+        while (begin < text.size() && blank(text[begin])) ++begin;
+        return begin;
+    };
+    const auto line_end = [&](std::size_t at) {
+        const std::size_t end = text.find_first_of(kBreaks, at);
+        return end == std::string_view::npos ? text.size() : end;
+    };
+    if (pattern.empty()) {   // every line that is not blank
+        for (std::size_t at = 0; at < text.size(); at = line_end(at) + 1) {
+            std::size_t begin = at;
+            while (begin < text.size() && blank(text[begin])) ++begin;
+            if (begin < line_end(at)) out.push_back(static_cast<std::uint32_t>(begin));
+        }
+        return out;
+    }
+    // One search of the whole text per clue: a search per line and clue was most of weighing the
+    // clues of a small file (bench/RESULTS.md, the folder of 10,000 programs).
+    for (std::size_t from = 0;;) {
+        const std::size_t hit = text.find(pattern, from);
+        if (hit == std::string_view::npos) break;
+        const std::size_t begin = line_start(hit);
+        if (prefix ? hit == begin : hit >= begin) {
+            out.push_back(static_cast<std::uint32_t>(begin));
+            from = line_end(hit);   // a line counts once
+        } else {
+            // A prefix clue: the line's start came first in the search and did not match. A
+            // contained one: the hit lay in the blanks before the line's first character.
+            from = prefix ? line_end(hit) : hit + 1;
+        }
+    }
+    return out;
+}
+
+}  // namespace detail
+
 namespace {
 
 using dialects::DetectClue;
@@ -43,10 +89,10 @@ struct Facts {
     std::vector<std::pair<char, double>> block_words;
     std::vector<std::uint32_t> word_start;
     std::vector<std::pair<std::string_view, std::uint32_t>> comments;    // text, offset
-    std::vector<std::pair<std::string_view, std::uint32_t>> header;      // comments before the first code
+    std::vector<std::pair<std::string, std::uint32_t>> header;           // comments before the first code, upper case
     std::vector<std::pair<double, std::uint32_t>> variables;             // #n with a plain number n
     std::vector<std::uint32_t> prose_after_semicolon;                    // offsets
-    std::vector<std::pair<std::string_view, std::uint32_t>> lines;       // source lines without leading blanks, offset
+    std::string_view text;                                                // the source, for the line clues
     // The G and M words with a code key, by key, then text order (index into words[letter]): every
     // dialect's code clues look their code up here (a scan of the words per clue and dialect was a
     // fifth of a small file's check).
@@ -57,6 +103,13 @@ struct Facts {
 };
 
 bool letter_ok(char L) { return L >= 'A' && L <= 'Z'; }
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return out;
+}
+
 
 Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
     Facts f;
@@ -70,7 +123,7 @@ Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
         for (const ast::Token& t : tree.block_tokens(bi)) {
             if (t.kind == ast::TokenKind::comment) {
                 f.comments.emplace_back(tree.spelling(t), t.begin);
-                if (in_header) f.header.emplace_back(tree.spelling(t), t.begin);
+                if (in_header) f.header.emplace_back(upper(tree.spelling(t)), t.begin);
             }
             // Text after ';' on the same line that does not read as a block: ';' starts a comment.
             if (t.kind == ast::TokenKind::error && bi > 0 && tree.blocks[bi - 1].has(ast::block_flags::has_eob) &&
@@ -86,15 +139,7 @@ Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
             f.block_words.emplace_back(t.letter, value);
         }
     }
-    const std::string_view text = tree.text;
-    for (std::size_t at = 0; at < text.size();) {
-        std::size_t end = text.find_first_of("\r\n", at);
-        if (end == std::string_view::npos) end = text.size();
-        std::size_t begin = at;
-        while (begin < end && (text[begin] == ' ' || text[begin] == '\t')) ++begin;
-        if (begin < end) f.lines.emplace_back(text.substr(begin, end - begin), static_cast<std::uint32_t>(begin));
-        at = end + 1;
-    }
+    f.text = tree.text;
     for (const ast::Expr& e : tree.exprs) {
         if (e.kind != ast::ExprKind::variable || e.a < 0) continue;
         const ast::Expr& n = tree.exprs[static_cast<std::size_t>(e.a)];
@@ -131,12 +176,6 @@ bool block_has(const Facts& f, std::uint32_t block, char letter, std::optional<d
 
 bool block_has_any(const Facts& f, std::uint32_t block, std::string_view letters) {
     return std::any_of(letters.begin(), letters.end(), [&](char L) { return block_has(f, block, L); });
-}
-
-std::string upper(std::string_view s) {
-    std::string out(s);
-    for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return out;
 }
 
 // The offsets where a clue holds (text order); one entry at offset ~0u for a clue about the whole file.
@@ -177,10 +216,12 @@ std::vector<std::uint32_t> occurrences(const DetectClue& c, const Facts& f, cons
             for (const auto& [text, offset] : f.comments)
                 if (text.starts_with(c.text)) at.push_back(offset);
             break;
-        case DetectClue::Kind::header:
+        case DetectClue::Kind::header: {
+            const std::string wanted = upper(c.text);
             for (const auto& [text, offset] : f.header)
-                if (upper(text).find(upper(c.text)) != std::string::npos) at.push_back(offset);
+                if (text.find(wanted) != std::string::npos) at.push_back(offset);
             break;
+        }
         case DetectClue::Kind::variable:
             for (const auto& [n, offset] : f.variables)
                 if (n >= static_cast<double>(c.from) && n <= static_cast<double>(c.to)) at.push_back(offset);
@@ -189,8 +230,7 @@ std::vector<std::uint32_t> occurrences(const DetectClue& c, const Facts& f, cons
             at = f.prose_after_semicolon;   // the one observation the schema knows
             break;
         case DetectClue::Kind::line:
-            for (const auto& [line, offset] : f.lines)
-                if (c.line_prefix ? line.starts_with(c.text) : line.find(c.text) != std::string_view::npos) at.push_back(offset);
+            at = detail::line_clue_offsets(f.text, c.text, c.line_prefix);
             break;
     }
     return at;
@@ -208,7 +248,11 @@ struct Score {
 
 Score weigh(const dialects::Dialect& d, const Facts& f, const ast::LineIndex& lines) {
     Score s{&d, 0, 0, {}};
-    const std::vector<bool> macro_calls = macro_call_blocks(f, d);
+    // Only the word clues ask which blocks are macro calls: no table for a dialect without any.
+    const bool word_clues = std::any_of(d.detect.clues.begin(), d.detect.clues.end(), [](const DetectClue& c) {
+        return c.kind == DetectClue::Kind::word || c.kind == DetectClue::Kind::absent_word;
+    });
+    const std::vector<bool> macro_calls = word_clues ? macro_call_blocks(f, d) : std::vector<bool>{};
     for (const DetectClue& c : d.detect.clues) {
         const std::vector<std::uint32_t> at = occurrences(c, f, macro_calls);
         if (at.empty()) continue;

@@ -4,6 +4,7 @@
 // so a wrong guess can be argued with and overridden.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -59,5 +60,12 @@ Detection detect_dialect(std::string_view text);
 // The folder rule for a file without evidence: the dialect most of the other files' detections
 // (those with evidence) chose, with "N of M programs in its folder"; nullopt when none had evidence.
 std::optional<std::pair<std::string, std::string>> folder_majority(std::span<const Detection> others);
+
+namespace detail {
+// Where a `line` clue holds (dialects/SCHEMA.md [detect] lines): the offset of the first character
+// that is not a blank of each line that starts with (`prefix`) or contains `pattern`, in text
+// order, once per line. Lines end at '\n' or '\r'; leading spaces and tabs are not part of a line.
+std::vector<std::uint32_t> line_clue_offsets(std::string_view text, std::string_view pattern, bool prefix);
+}  // namespace detail
 
 }  // namespace kerf::grammar

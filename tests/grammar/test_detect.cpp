@@ -1,6 +1,11 @@
 // Dialect detection (reference/dialects.md §10): the evidence table, one case per dialect.
 #include <catch2/catch.hpp>
 
+#include <random>
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "grammar/detect.hpp"
 
 using kerf::grammar::detect_dialect;
@@ -108,4 +113,45 @@ TEST_CASE("a DIALECT comment that is no header, or names no known id, is not dec
     CHECK(detect_dialect("G0 X1 Y2\n(DIALECT: fanuc-lathe-a)\nM30\n").dialect == "fanuc-mill");
     // The tag must lead the comment.
     CHECK(detect_dialect("(NOT DIALECT: fanuc-lathe-a)\nG0 X1 Y2\n").dialect == "fanuc-mill");
+}
+
+namespace {
+
+// The rule of a `line` clue read line by line, as the SCHEMA says it: lines end at '\n' or '\r',
+// leading spaces and tabs are not part of a line, each line counts once.
+std::vector<std::uint32_t> naive_line_clue(std::string_view text, std::string_view pattern, bool prefix) {
+    std::vector<std::uint32_t> out;
+    for (std::size_t at = 0; at < text.size();) {
+        std::size_t end = text.find_first_of("\r\n", at);
+        if (end == std::string_view::npos) end = text.size();
+        std::size_t begin = at;
+        while (begin < end && (text[begin] == ' ' || text[begin] == '\t')) ++begin;
+        const std::string_view line = text.substr(begin, end - begin);
+        if (!line.empty() && (prefix ? line.starts_with(pattern) : line.find(pattern) != std::string_view::npos))
+            out.push_back(static_cast<std::uint32_t>(begin));
+        at = end + 1;
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("detection: a line clue holds on the lines a line-by-line reading finds, once per line") {
+    // The clues search the whole text once; random texts of the patterns' pieces, blanks and every
+    // kind of line break must give the offsets the line-by-line rule gives.
+    const std::vector<std::string> patterns = {"%@", ":=", "//", "N ", " X", "G1", "", "A", "::", "\tB"};
+    const std::string alphabet = ":=/%@NG1AB X\t \r\n\n";
+    std::mt19937 random(11);
+    for (int round = 0; round < 3000; ++round) {
+        std::string text;
+        const std::size_t length = random() % 48;
+        for (std::size_t i = 0; i < length; ++i) text += alphabet[random() % alphabet.size()];
+        for (const std::string& pattern : patterns)
+            for (const bool prefix : {true, false}) {
+                INFO("text '" << text << "' pattern '" << pattern << "' prefix " << prefix);
+                CHECK(kerf::grammar::detail::line_clue_offsets(text, pattern, prefix) == naive_line_clue(text, pattern, prefix));
+            }
+    }
+    CHECK(kerf::grammar::detail::line_clue_offsets("  %@MACRO\n%@ x %@\nA %@\n", "%@", true) == std::vector<std::uint32_t>{2, 10});
+    CHECK(kerf::grammar::detail::line_clue_offsets("  %@MACRO\n%@ x %@\nA %@\n", "%@", false) == std::vector<std::uint32_t>{2, 10, 18});
 }
