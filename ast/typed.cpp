@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <thread>
 
 #include "ast/diagnostic_ids.hpp"
 #include "dialects/functions.hpp"
@@ -64,6 +65,7 @@ struct BindContext {
 struct BlockFacts {
     bool calls = false;            // an M code that calls a subprogram (checked further in bind())
     std::uint32_t second_n = 0;    // token index of a second N word, 0 if none
+    bool motion = false;           // a motion-group code (it set BindContext::linear)
 };
 
 std::uint32_t letter_bit(char L) { return std::uint32_t{1} << (L - 'A'); }
@@ -85,7 +87,10 @@ BlockFacts bind_block(SyntaxTree& tree, const dialects::Dialect& d, std::size_t 
         traits |= info->traits;
         data_letters |= info->parameter_mask;
         facts.calls |= info->has(dialects::traits::calls_subprogram);
-        if (info->has(dialects::traits::motion_group)) context.linear = info->has(dialects::traits::linear);
+        if (info->has(dialects::traits::motion_group)) {
+            context.linear = info->has(dialects::traits::linear);
+            facts.motion = true;
+        }
     }
     if (traits & dialects::traits::takes_arguments) {
         // G65/G66: every other word is an argument, M too (`M13` → #13, dialects.md §3.7).
@@ -214,17 +219,64 @@ void TypedFile::check_call_forms(const std::vector<std::size_t>& call_blocks) {
     }
 }
 
-TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start) {
-    TypedFile file(tree, dialect);
+namespace {
+
+// What binding a range of blocks found besides the roles it set: the blocks with a subprogram call
+// (checked further by check_call_forms), the second N words, the G01 reading at its end.
+struct BoundRange {
+    std::vector<std::size_t> call_blocks;
+    std::vector<std::uint32_t> second_n;   // token indices
+    bool linear = false;
+    bool motion_seen = false;              // a motion-group code was in the range
+};
+
+BoundRange bind_range(SyntaxTree& tree, const dialects::Dialect& dialect, std::size_t first, std::size_t end,
+                      bool linear_at_start) {
+    BoundRange out;
     BindContext context(dialect.lexical);
     context.linear = linear_at_start;
-    std::vector<std::size_t> call_blocks;
-    for (std::size_t i = 0; i < tree.block_count(); ++i) {
+    for (std::size_t i = first; i < end; ++i) {
         const BlockFacts facts = bind_block(tree, dialect, i, context);
-        if (facts.calls) call_blocks.push_back(i);
-        if (facts.second_n) file.diagnostics_.push_back(second_n_diagnostic(tree, facts.second_n));
+        if (facts.calls) out.call_blocks.push_back(i);
+        if (facts.second_n) out.second_n.push_back(facts.second_n);
+        out.motion_seen |= facts.motion;
     }
-    file.linear_at_end_ = context.linear;
+    out.linear = context.linear;
+    return out;
+}
+
+// Below this many blocks a second thread costs more than half the binding saves.
+constexpr std::size_t kTwoThreadBindBlocks = 200000;
+
+}  // namespace
+
+TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start) {
+    return bind(tree, dialect, linear_at_start, 1);
+}
+
+TypedFile TypedFile::bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start, unsigned threads) {
+    TypedFile file(tree, dialect);
+    const std::size_t blocks = tree.block_count();
+    std::vector<BoundRange> ranges;
+    if (threads >= 2 && !dialect.lexical.plain_direct_drawing && blocks >= kTwoThreadBindBlocks) {
+        // Each block's roles depend only on the block (plain direct drawing excepted), and each
+        // half writes only its own blocks' tokens: the halves bind side by side.
+        const std::size_t half = blocks / 2;
+        BoundRange second;
+        std::thread worker([&] { second = bind_range(tree, dialect, half, blocks, false); });
+        ranges.push_back(bind_range(tree, dialect, 0, half, linear_at_start));
+        worker.join();
+        ranges.push_back(std::move(second));
+    } else {
+        ranges.push_back(bind_range(tree, dialect, 0, blocks, linear_at_start));
+    }
+    std::vector<std::size_t> call_blocks;
+    file.linear_at_end_ = linear_at_start;
+    for (const BoundRange& r : ranges) {
+        call_blocks.insert(call_blocks.end(), r.call_blocks.begin(), r.call_blocks.end());
+        for (const std::uint32_t token : r.second_n) file.diagnostics_.push_back(second_n_diagnostic(tree, token));
+        if (r.motion_seen) file.linear_at_end_ = r.linear;
+    }
     file.split_programs();
     file.check_call_forms(call_blocks);
     return file;

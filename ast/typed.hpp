@@ -120,6 +120,10 @@ public:
     // Binds `tree` (sets token roles in place) against `dialect`. Both must outlive the result.
     // `linear_at_start`: the static G01 reading the previous piece of a long file ended with.
     static TypedFile bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start = false);
+    // The same on `threads` cores (at most 2): a long tree is bound in two halves at once. A
+    // dialect where plain A/R read as direct drawing after G01 (the one role that depends on the
+    // blocks before) and a short tree are bound on one. The result is the one-core result.
+    static TypedFile bind(SyntaxTree& tree, const dialects::Dialect& dialect, bool linear_at_start, unsigned threads);
     bool linear_at_end() const { return linear_at_end_; }
 
     const SyntaxTree& tree() const { return *tree_; }

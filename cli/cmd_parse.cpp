@@ -78,7 +78,7 @@ int run_parse(const ParseOptions& o) {
 
     const auto start = std::chrono::steady_clock::now();
     ast::SyntaxTree tree = grammar::parse(std::move(*text), dialect->lexical, grammar::parse_threads());
-    const ast::TypedFile typed = ast::TypedFile::bind(tree, *dialect);
+    const ast::TypedFile typed = ast::TypedFile::bind(tree, *dialect, false, grammar::parse_threads());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (o.stats) {
         std::size_t errors = 0;

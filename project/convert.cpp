@@ -24,7 +24,7 @@ struct Bound {
 std::unique_ptr<Bound> bind(std::string text, const dialects::Dialect& dialect) {
     auto b = std::make_unique<Bound>();
     b->tree = grammar::parse(std::move(text), dialect.lexical, grammar::parse_threads());
-    b->typed.emplace(ast::TypedFile::bind(b->tree, dialect));
+    b->typed.emplace(ast::TypedFile::bind(b->tree, dialect, false, grammar::parse_threads()));
     return b;
 }
 

@@ -65,7 +65,7 @@ void verify_result(Workspace& workspace, const fs::path& file, std::string text,
 void format_tree(const std::string& name, std::string text, const Resolved& resolved, const formatter::Style& style,
                  FormatOutcome& r) {
     ast::SyntaxTree tree = grammar::parse(std::move(text), resolved.dialect->lexical, grammar::parse_threads());
-    const ast::TypedFile typed = ast::TypedFile::bind(tree, *resolved.dialect);
+    const ast::TypedFile typed = ast::TypedFile::bind(tree, *resolved.dialect, false, grammar::parse_threads());
     const ast::LineIndex lines(tree.text);
     if (refuse_syntax_errors(name, tree, lines, r)) return;
     formatter::FormatResult f = formatter::format(typed, style, {resolved.setup->calculator_decimal});
