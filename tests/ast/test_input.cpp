@@ -109,6 +109,34 @@ TEST_CASE("input: size limits refuse a file or a line past them, with the limit 
     CHECK_FALSE(check_file_size(100, {100, 10}).has_value());
 }
 
+TEST_CASE("input: a long text scanned in two halves finds the longest line and its number as one pass does") {
+    // From 8 MiB the lines are scanned in two halves on two threads (ast/input.cpp): the number of
+    // a line in the second half counts the first half's lines; of two equally long lines the first
+    // is reported; a CRLF at the cut is not split.
+    const std::string short_line = "G1 X1. Y2.\r\n";   // 10 bytes and a CRLF
+    std::string text;
+    std::uint64_t lines = 0;
+    while (text.size() < (std::size_t{9} << 20)) text += short_line, ++lines;
+    const auto refused_at = [](const std::string& t) {
+        InputLimits limits;
+        limits.max_line_bytes = 12;
+        const DecodedInput d = decode_input(t, limits);
+        return d.refused() ? d.problems[0].line : 0u;
+    };
+    CHECK(refused_at(text) == 0);
+    // One long line near the end (the second half), one near the start (the first half).
+    std::string late = text + "G1 X1. Y2. Z3.\r\n" + short_line;
+    CHECK(refused_at(late) == lines + 1);
+    std::string early = short_line + "G1 X1. Y2. Z3.\r\n" + text;
+    CHECK(refused_at(early) == 2);
+    // Two lines of the same length, one in each half: the first one.
+    std::string both = short_line + "G1 X1. Y2. Z3.\r\n" + text + "G1 X1. Y2. Z4.\r\n";
+    CHECK(refused_at(both) == 2);
+    // A longer one in the second half wins over a shorter one in the first.
+    std::string longer = short_line + "G1 X1. Y2. Z3.\r\n" + text + "G1 X1. Y2. Z3.5\r\n";
+    CHECK(refused_at(longer) == lines + 3);
+}
+
 TEST_CASE("input: an empty or blank file gets a note") {
     const DecodedInput empty = decode_input("");
     REQUIRE(empty.problems.size() == 1);
