@@ -521,16 +521,21 @@ std::shared_ptr<const JumpTargets> FileContext::shared_jump_targets() const {
 const JumpTargets& FileContext::jump_targets() const { return *shared_jump_targets(); }
 
 std::optional<LabelTable::Entry> LabelTable::entry_of(const ast::TypedFile& typed, std::uint32_t block) {
-    const ast::BlockView view = typed.block(block);
-    const auto label = view.sequence_label();
+    // The N value read once (sequence_label() reads it again to truncate it).
+    const std::optional<double> value = typed.block(block).sequence_number();
+    if (!value) return std::nullopt;
+    const std::optional<std::int64_t> label = ast::truncated_integer(*value);
     if (!label) return std::nullopt;
-    return Entry{*label, *view.sequence_number(), block};
+    return Entry{*label, *value, block};
 }
 
 const LabelTable& FileContext::labels(std::size_t program) const {
     if (const auto it = labels_.find(program); it != labels_.end()) return it->second;
     std::vector<LabelTable::Entry> entries;
     const ast::Program& p = typed.programs()[program];
+    // At most one entry per block: reserved once, not grown by copies (a CAM program numbers
+    // every block: 5.9 million entries for 100 MB). Pages never written are never touched.
+    entries.reserve(p.end_block - p.first_block);
     for (std::uint32_t b = p.first_block; b < p.end_block; ++b)
         if (const auto e = LabelTable::entry_of(typed, b)) entries.push_back(*e);
     return labels_.emplace(program, LabelTable(std::move(entries))).first->second;
