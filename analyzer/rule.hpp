@@ -75,6 +75,10 @@ private:
 class LabelTable {
 public:
     struct Entry {
+        // Left unset on purpose: the sort writes a table of millions of entries once, and a
+        // value-initialised one would be written twice (zeros first).
+        Entry() {}   // NOLINT: no member initialisers
+        Entry(std::int64_t n, double v, std::uint32_t b) : number(n), value(v), block(b) {}
         std::int64_t number;   // the N value as an integer label (what count() compares)
         double value;          // the N value as written (N10.5 is not label 10 for blocks())
         std::uint32_t block;
