@@ -15,6 +15,18 @@ using namespace kerf::ast;
 
 namespace {
 
+// The lines of `text` as LineBreaks cuts them (without their breaks).
+std::vector<std::string> scanner_lines(const std::string& text) {
+    LineBreaks breaks(text);
+    std::vector<std::string> lines;
+    for (std::size_t pos = 0; pos < text.size();) {
+        const LineBreaks::Line l = breaks.line_from(pos);
+        lines.push_back(text.substr(pos, l.end - pos));
+        pos = l.next;
+    }
+    return lines;
+}
+
 bool has(const DecodedInput& d, InputProblemKind kind) {
     for (const InputProblem& p : d.problems)
         if (p.kind == kind) return true;
@@ -174,13 +186,7 @@ TEST_CASE("input: the scanner over pieces decides as decode_input does") {
 
 TEST_CASE("line breaks: LF, CRLF and a lone CR each end a line") {
     const std::string text = "A\nB\r\nC\rD\r\rE";
-    LineBreaks breaks(text);
-    std::vector<std::string> lines;
-    for (std::size_t pos = 0; pos < text.size();) {
-        const LineBreaks::Line l = breaks.line_from(pos);
-        lines.push_back(text.substr(pos, l.end - pos));
-        pos = l.next;
-    }
+    const std::vector<std::string> lines = scanner_lines(text);
     // "B\r" keeps the CR of its CRLF (trivia before the LF); "D\r\r" is D, then an empty line.
     CHECK(lines == std::vector<std::string>{"A", "B\r", "C", "D", "", "E"});
     CHECK(count_line_breaks(text) == 5);
@@ -224,13 +230,7 @@ TEST_CASE("line breaks: the scanner cuts every mix of CR, LF and CRLF as a byte-
         std::string text;
         const std::size_t length = random() % 40;
         for (std::size_t i = 0; i < length; ++i) text += alphabet[random() % alphabet.size()];
-        LineBreaks breaks(text);
-        std::vector<std::string> lines;
-        for (std::size_t pos = 0; pos < text.size();) {
-            const LineBreaks::Line l = breaks.line_from(pos);
-            lines.push_back(text.substr(pos, l.end - pos));
-            pos = l.next;
-        }
+        const std::vector<std::string> lines = scanner_lines(text);
         INFO(printable(text));
         CHECK(lines == naive_lines(text));
     }
@@ -249,13 +249,7 @@ TEST_CASE("line breaks: long texts with a few CRs far apart cut as a byte-by-byt
             else if (pick == 2) text += std::string(70000 + random() % 1000, 'X') + "\r";
             else text += "G1 X1\n";
         }
-        LineBreaks breaks(text);
-        std::vector<std::string> lines;
-        for (std::size_t pos = 0; pos < text.size();) {
-            const LineBreaks::Line l = breaks.line_from(pos);
-            lines.push_back(text.substr(pos, l.end - pos));
-            pos = l.next;
-        }
+        const std::vector<std::string> lines = scanner_lines(text);
         CHECK(lines == naive_lines(text));
     }
 }
