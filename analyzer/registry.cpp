@@ -77,6 +77,14 @@ namespace {
 constexpr std::size_t kMaxMessageChars = 400;
 }  // namespace
 
+bool Reporter::drop_if_full(ast::Range range) {
+    if (!tally_ || tally_->limit == 0 || tally_->kept < tally_->limit) return false;
+    const bool counted = !(tally_->suppressions && suppressed(*tally_->suppressions, range.begin, rule_->id, rule_->name)) &&
+                         tally_->positions.insert(range.begin).second;
+    if (counted) ++tally_->dropped;
+    return true;
+}
+
 Finding& Reporter::report(ast::Range range, std::string message, std::string hint) {
     Finding f;
     f.range = range;

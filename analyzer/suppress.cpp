@@ -64,12 +64,16 @@ std::vector<Suppression> find_suppressions(const ast::SyntaxTree& tree) {
     return out;
 }
 
-bool suppressed(const std::vector<Suppression>& suppressions, const Finding& f) {
+bool suppressed(const std::vector<Suppression>& suppressions, std::uint32_t at, std::string_view rule, std::string_view name) {
     return std::any_of(suppressions.begin(), suppressions.end(), [&](const Suppression& s) {
-        if (!s.block.contains(f.range.begin)) return false;
-        return s.rules.empty() || std::find(s.rules.begin(), s.rules.end(), f.rule) != s.rules.end() ||
-               std::find(s.rules.begin(), s.rules.end(), f.name) != s.rules.end();
+        if (!s.block.contains(at)) return false;
+        return s.rules.empty() || std::find(s.rules.begin(), s.rules.end(), rule) != s.rules.end() ||
+               std::find(s.rules.begin(), s.rules.end(), name) != s.rules.end();
     });
+}
+
+bool suppressed(const std::vector<Suppression>& suppressions, const Finding& f) {
+    return suppressed(suppressions, f.range.begin, f.rule, f.name);
 }
 
 }  // namespace kerf::analyzer

@@ -3,7 +3,9 @@
 // block (the header, the O line) it silences them in the whole file.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "analyzer/finding.hpp"
@@ -20,5 +22,7 @@ std::vector<Suppression> find_suppressions(const ast::SyntaxTree& tree);
 
 // True when a suppression covers the start of the finding and names its rule (or names none).
 bool suppressed(const std::vector<Suppression>& suppressions, const Finding& finding);
+// The same for a finding of rule `rule` (id) / `name` that starts at `at`, before it is built.
+bool suppressed(const std::vector<Suppression>& suppressions, std::uint32_t at, std::string_view rule, std::string_view name);
 
 }  // namespace kerf::analyzer

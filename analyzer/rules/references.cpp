@@ -56,7 +56,7 @@ class LabelNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (labels(b).count(t.label) == 0)
+            if (labels(b).count(t.label) == 0 && !out.drop_if_full(b.token(t.token).range()))
                 out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
                            fmt::format("add N{} to the block meant, or correct the number", t.label));
     }
@@ -72,6 +72,7 @@ public:
         if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
         for (const Target& t : local_targets(b))
             if (const int n = labels(b).count(t.label); n > 1) {
+                if (out.drop_if_full(b.token(t.token).range())) continue;
                 Finding& f = out.report(b.token(t.token).range(),
                                         fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                                         "give each target block a number of its own");

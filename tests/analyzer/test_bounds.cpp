@@ -73,3 +73,17 @@ TEST_CASE("analyzer bounds: a finding's message is cut, and the human excerpt is
     // The repeated X at column 8,012 is underlined where it is shown.
     CHECK(human.find("test.nc:2:8012: warning K1021") != std::string::npos);
 }
+
+TEST_CASE("analyzer bounds: past the cap a jump to a repeated label is counted without being built, suppressions kept") {
+    // K3002 (ambiguous-label) counts its findings past the cap without formatting them
+    // (Reporter::drop_if_full): the count of "and N more" must be what report() would count.
+    std::string text = "O1000\nN5 G01 X1. F100.\nN5 G01 X2.\n";
+    for (int i = 0; i < 130; ++i) text += "GOTO 5\n";
+    for (int i = 0; i < 20; ++i) text += "GOTO 5 (kerf: ignore K3002)\n";
+    for (int i = 0; i < 30; ++i) text += "GOTO 5\n";
+    text += "M30\n";
+    const Checked c = check(text, "fanuc-mill", analyzer::CheckOptions{});
+    CHECK(count_rule(c, "K3002", ast::Severity::warning) == 100);
+    REQUIRE(and_more(c, "K3002"));
+    CHECK(and_more(c, "K3002")->message == "and 60 more findings of K3002 in this file, not shown");
+}
