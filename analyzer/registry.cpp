@@ -80,7 +80,7 @@ constexpr std::size_t kMaxMessageChars = 400;
 bool Reporter::drop_if_full(ast::Range range) {
     if (!tally_ || tally_->limit == 0 || tally_->kept < tally_->limit) return false;
     const bool counted = !(tally_->suppressions && suppressed(*tally_->suppressions, range.begin, rule_->id, rule_->name)) &&
-                         tally_->positions.insert(range.begin).second;
+                         tally_->positions.insert(range.begin);
     if (counted) ++tally_->dropped;
     return true;
 }
@@ -95,7 +95,7 @@ Finding& Reporter::report(ast::Range range, std::string message, std::string hin
     f.hint = hint.size() > kMaxMessageChars ? ast::shorten(hint, kMaxMessageChars) : std::move(hint);
     if (tally_) {
         const bool kept = !(tally_->suppressions && suppressed(*tally_->suppressions, f)) &&
-                          tally_->positions.insert(range.begin).second &&
+                          tally_->positions.insert(range.begin) &&
                           (tally_->limit == 0 || tally_->kept < tally_->limit || (++tally_->dropped, false));
         if (!kept) {
             scratch_ = std::move(f);

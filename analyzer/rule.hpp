@@ -6,6 +6,8 @@
 // by the rules that list their codes, so a defect the grammar already found is not detected twice.
 #pragma once
 
+#include <algorithm>
+
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -44,10 +46,30 @@ struct Suppression;
 // What one rule reported in one file so far (bounded resources, ARCHITECTURE.md): one finding per
 // position, suppressed ones not kept, and at most `limit` kept; the rest are only counted, so a
 // rule firing on every word of a huge file, or on every turn of an endless loop, holds no memory.
+// The positions a rule has reported, to count each once. Static rules report in text order: a
+// position past every earlier one is appended to a sorted array (no hashing); one before the
+// last (a dynamic rule in a loop, a rule that looks back) is looked up there, then in a set.
+class PositionSet {
+public:
+    // True when `at` was not in the set (it is now).
+    bool insert(std::uint32_t at) {
+        if (ascending_.empty() || at > ascending_.back()) {
+            ascending_.push_back(at);
+            return true;
+        }
+        if (std::binary_search(ascending_.begin(), ascending_.end(), at)) return false;
+        return others_.insert(at).second;
+    }
+
+private:
+    std::vector<std::uint32_t> ascending_;
+    std::unordered_set<std::uint32_t> others_;
+};
+
 struct RuleTally {
     std::size_t limit = 0;                                   // 0 = no cap
     const std::vector<Suppression>* suppressions = nullptr;  // the file's inline suppressions
-    std::unordered_set<std::uint32_t> positions;             // range starts reported
+    PositionSet positions;                                   // range starts reported
     std::size_t kept = 0;
     std::size_t dropped = 0;                                 // distinct positions over the cap
 };

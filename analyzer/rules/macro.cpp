@@ -60,15 +60,17 @@ private:
     }
     // A main program ends with M30/M02 (it has no arguments); G65 arguments (callers, or the
     // header's `G65 P9994 A B C`) are set when the macro runs.
+    // The M30/M02 is searched from the end (where it stands), and the arguments (a walk of the
+    // program and of the file's callers) are asked only of a main program: nothing else reads them.
     void learn_program(const FileContext& file, std::size_t program) {
         known_ = true;
-        arguments_ = program_arguments(file.typed, program, file.caller_arguments).locals;
         const ast::Program& p = file.typed.programs()[program];
         main_ = false;
-        for (std::uint32_t b = p.first_block; b < p.end_block && !main_; ++b) {
-            const ast::BlockView v = file.typed.block(b);
+        for (std::uint32_t b = p.end_block; b > p.first_block && !main_; --b) {
+            const ast::BlockView v = file.typed.block(b - 1);
             main_ = v.has_code('M', fn::program_end) || v.has_code('M', fn::program_end_rewind);
         }
+        arguments_ = main_ ? program_arguments(file.typed, program, file.caller_arguments).locals : LocalSet{};
     }
 
     std::bitset<34> assigned_;

@@ -3,6 +3,10 @@
 // findings do not count; a dynamic rule in an endless loop reports each position once.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
+#include <vector>
+
+#include "analyzer/rule.hpp"
 #include "tests/analyzer/check_fixture.hpp"
 
 using namespace kerf;
@@ -86,4 +90,15 @@ TEST_CASE("analyzer bounds: past the cap a jump to a repeated label is counted w
     CHECK(count_rule(c, "K3002", ast::Severity::warning) == 100);
     REQUIRE(and_more(c, "K3002"));
     CHECK(and_more(c, "K3002")->message == "and 60 more findings of K3002 in this file, not shown");
+}
+
+TEST_CASE("analyzer bounds: the positions a rule reported count each once, in any order") {
+    // Static rules report in text order (the sorted array), dynamic ones may come back (the set).
+    analyzer::PositionSet set;
+    const std::vector<std::uint32_t> order = {5, 9, 9, 12, 3, 5, 7, 3, 40, 12, 7, 41, 0, 0};
+    const std::vector<bool> expected = {true, true, false, true, true, false, true, false, true, false, false, true, true, false};
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        INFO("insert " << order[i] << " (#" << i << ")");
+        CHECK(set.insert(order[i]) == expected[i]);
+    }
 }
