@@ -7,7 +7,6 @@
 #pragma once
 
 #include <algorithm>
-
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -43,9 +42,6 @@ struct RuleDocs {
 struct Rule;
 struct Suppression;
 
-// What one rule reported in one file so far (bounded resources, ARCHITECTURE.md): one finding per
-// position, suppressed ones not kept, and at most `limit` kept; the rest are only counted, so a
-// rule firing on every word of a huge file, or on every turn of an endless loop, holds no memory.
 // The positions a rule has reported, to count each once. Static rules report in text order: a
 // position past every earlier one is appended to a sorted array (no hashing); one before the
 // last (a dynamic rule in a loop, a rule that looks back) is looked up there, then in a set.
@@ -66,6 +62,9 @@ private:
     std::unordered_set<std::uint32_t> others_;
 };
 
+// What one rule reported in one file so far (bounded resources, ARCHITECTURE.md): one finding per
+// position, suppressed ones not kept, and at most `limit` kept; the rest are only counted, so a
+// rule firing on every word of a huge file, or on every turn of an endless loop, holds no memory.
 struct RuleTally {
     std::size_t limit = 0;                                   // 0 = no cap
     const std::vector<Suppression>* suppressions = nullptr;  // the file's inline suppressions

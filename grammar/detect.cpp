@@ -110,7 +110,6 @@ std::string upper(std::string_view s) {
     return out;
 }
 
-
 Facts read_facts(const ast::SyntaxTree& tree, const ast::LineIndex& lines) {
     Facts f;
     bool in_header = true;
