@@ -93,10 +93,12 @@ Finding& Reporter::report(ast::Range range, std::string message, std::string hin
     f.name = rule_->name;
     f.message = message.size() > kMaxMessageChars ? ast::shorten(message, kMaxMessageChars) : std::move(message);
     f.hint = hint.size() > kMaxMessageChars ? ast::shorten(hint, kMaxMessageChars) : std::move(hint);
+    if (drop_if_full(range)) {   // past the cap: counted there, kept nowhere
+        scratch_ = std::move(f);
+        return scratch_;
+    }
     if (tally_) {
-        const bool kept = !(tally_->suppressions && suppressed(*tally_->suppressions, f)) &&
-                          tally_->positions.insert(range.begin) &&
-                          (tally_->limit == 0 || tally_->kept < tally_->limit || (++tally_->dropped, false));
+        const bool kept = !(tally_->suppressions && suppressed(*tally_->suppressions, f)) && tally_->positions.insert(range.begin);
         if (!kept) {
             scratch_ = std::move(f);
             return scratch_;
