@@ -1,5 +1,7 @@
 #include "project/files.hpp"
 
+#include "ast/large_allocator.hpp"
+
 #include <fcntl.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
@@ -8,9 +10,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <fstream>
+#include <functional>
 #include <mutex>
 #include <sstream>
+#include <thread>
 
 namespace kerf::project {
 
@@ -43,26 +49,52 @@ ReadResult decode_head(ReadResult r) {
     return r;
 }
 
-// A regular file of `size` bytes, copied from its mapping: a string sized first is filled with
-// zeros and then overwritten by read(), two passes over the memory where this makes one (a
-// 100 MB program: 0.06-0.14 s to 0.06 s, bench/RESULTS.md). nullopt when it cannot be mapped.
-std::optional<std::string> copy_of_mapping(const fs::path& path, std::size_t size) {
+// Calls work(from, to) on [0, size) in two halves, the second on another thread when the size
+// pays for one (a thread costs tens of microseconds; a megabyte takes about as long to copy).
+void in_halves(std::size_t size, const std::function<void(std::size_t, std::size_t)>& work) {
+    constexpr std::size_t kTwoThreadsAtLeast = std::size_t{8} << 20;
+    if (size < kTwoThreadsAtLeast) return work(0, size);
+    const std::size_t half = size / 2;
+    std::thread second([&] { work(half, size); });
+    work(0, half);
+    second.join();
+}
+
+// A regular file of exactly `size` bytes: its string's pages mapped in one system call per half
+// (a fault per page was half the time), zeroed once by resize, then filled by pread from the page
+// cache, each half on its own core. A 100 MB program: 0.075 s -> 0.03 s before the decoder starts
+// (bench/RESULTS.md, 2026-11-28 third session). nullopt when the file changed size or a read fails.
+std::optional<std::string> read_regular_file(const fs::path& path, std::size_t size) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return std::nullopt;
     struct stat st {};
-    void* p = fstat(fd, &st) == 0 && static_cast<std::size_t>(st.st_size) == size
-                  ? mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0)
-                  : MAP_FAILED;
+    if (fstat(fd, &st) != 0 || static_cast<std::size_t>(st.st_size) != size) {
+        ::close(fd);
+        return std::nullopt;
+    }
+    std::string text;
+    text.reserve(size);
+    in_halves(size, [&](std::size_t from, std::size_t to) { ast::prefault(text.data() + from, to - from); });
+    text.resize(size);
+    std::atomic<bool> complete{true};
+    in_halves(size, [&](std::size_t from, std::size_t to) {
+        while (from < to) {
+            const ssize_t n = ::pread(fd, text.data() + from, to - from, static_cast<off_t>(from));
+            if (n <= 0) {
+                if (n < 0 && errno == EINTR) continue;
+                complete = false;
+                return;
+            }
+            from += static_cast<std::size_t>(n);
+        }
+    });
     ::close(fd);
-    if (p == MAP_FAILED) return std::nullopt;
-    madvise(p, size, MADV_SEQUENTIAL);
-    std::string text(static_cast<const char*>(p), size);
-    munmap(p, size);
+    if (!complete) return std::nullopt;
     return text;
 }
 
-// Below this a file is read as usual: mapping costs more than it saves.
-constexpr std::uintmax_t kMapAtLeast = std::uintmax_t{1} << 20;
+// Below this a file is read through a stream as usual.
+constexpr std::uintmax_t kDirectReadAtLeast = std::uintmax_t{1} << 20;
 
 }  // namespace
 
@@ -98,8 +130,8 @@ ReadResult DiskFileSystem::read(const fs::path& path, const ast::InputLimits& li
         const std::uintmax_t size = fs::file_size(path, ec);
         if (!ec) {
             if (auto too_large = ast::check_file_size(size, limits)) return refusal(path, std::move(*too_large));
-            if (size >= kMapAtLeast)
-                if (std::optional<std::string> text = copy_of_mapping(path, static_cast<std::size_t>(size)))
+            if (size >= kDirectReadAtLeast)
+                if (std::optional<std::string> text = read_regular_file(path, static_cast<std::size_t>(size)))
                     return decode_file(path, std::move(*text), limits);
         }
     }

@@ -119,30 +119,48 @@ TEST_CASE("run_parallel runs every index once and reports the end") {
     }
 }
 
-// DiskFileSystem::read copies a file of 1 MiB or more from its mapping (project/files.cpp) and reads
-// smaller ones as a stream: both give the file's bytes, and the decoder's checks apply to both.
-TEST_CASE("DiskFileSystem reads a large file from its mapping byte for byte, under the same limits") {
+namespace {
+
+// A program of at least `bytes` bytes whose lines all differ (N numbers count up), so that a part
+// read into the wrong place cannot pass for the file.
+std::string numbered_program(std::size_t bytes) {
+    std::string text;
+    for (int i = 0; text.size() < bytes; ++i) {   // appended piecewise: GCC 12 warns falsely on "N" + string
+        text += 'N';
+        text += std::to_string(i);
+        text += " G01 X1.5 Y-2.25\r\n";
+    }
+    text += "M30";   // no line break at the end
+    return text;
+}
+
+}  // namespace
+
+// DiskFileSystem::read reads a file of 1 MiB or more straight into its string (project/files.cpp;
+// from 8 MiB on, each half on its own thread) and smaller ones as a stream: all give the file's
+// bytes, and the decoder's checks apply to all.
+TEST_CASE("DiskFileSystem reads a large file byte for byte, in halves too, under the same limits") {
     const fs::path root = fs::temp_directory_path() / "kerf_test_read_mapped";
     fs::remove_all(root);
     fs::create_directories(root);
-    std::string big;
-    for (int i = 0; big.size() < (std::size_t{3} << 19); ++i) {   // appended piecewise: GCC 12 warns falsely on "N" + string
-        big += 'N';
-        big += std::to_string(i);
-        big += " G01 X1.5 Y-2.25\r\n";
-    }
-    big += "M30";   // no line break at the end
+    const std::string big = numbered_program(std::size_t{3} << 19);
+    const std::string halves = numbered_program((std::size_t{9} << 20) + 12345);   // two threads, odd halves
     write_text(root / "big.nc", big);
+    write_text(root / "halves.nc", halves);
     write_text(root / "small.nc", "G00 X1.\n");
     const DiskFileSystem disk;
     const ReadResult read = disk.read(root / "big.nc", kerf::ast::InputLimits{});
     REQUIRE(read.text);
     CHECK(*read.text == big);
     CHECK(read.problems.empty());
+    const ReadResult read_halves = disk.read(root / "halves.nc", kerf::ast::InputLimits{});
+    REQUIRE(read_halves.text);
+    CHECK(read_halves.text->size() == halves.size());
+    CHECK(*read_halves.text == halves);
     const ReadResult small = disk.read(root / "small.nc", kerf::ast::InputLimits{});
     REQUIRE(small.text);
     CHECK(*small.text == "G00 X1.\n");
-    // The limits hold for the mapped path: a line over max_line_bytes is refused, the file too big too.
+    // The limits hold for the direct path: a line over max_line_bytes is refused, the file too big too.
     const ReadResult long_lines = disk.read(root / "big.nc", kerf::ast::InputLimits{0, 16});
     CHECK_FALSE(long_lines.text);
     CHECK(long_lines.error.find("line") != std::string::npos);
