@@ -367,6 +367,20 @@ void InputScanner::feed(std::string_view piece) {
     }
 }
 
+void InputScanner::append(const InputScanner& later) {
+    if (head_.size() < kHeadBytes) head_.append(later.head_.substr(0, kHeadBytes - head_.size()));
+    size_ += later.size_;
+    const std::uint64_t lines_before = line_ - 1;   // this part ends at a line break: its lines are complete
+    if (later.longest_line_ > longest_line_) {       // the first longest line counts, as in one pass
+        longest_line_ = later.longest_line_;
+        longest_at_ = lines_before + later.longest_at_;
+    }
+    line_ = lines_before + later.line_;
+    line_length_ = later.line_length_;
+    pending_cr_ = later.pending_cr_;
+    only_blank_ = only_blank_ && later.only_blank_;
+}
+
 DecodedInput InputScanner::finish() {
     DecodedInput out;
     if (line_length_ > longest_line_) {

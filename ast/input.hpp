@@ -76,6 +76,9 @@ class InputScanner {
 public:
     explicit InputScanner(const InputLimits& limits = {}) : limits_(limits) {}
     void feed(std::string_view piece);   // the next bytes of the input, in order
+    // Takes over a scanner that was fed the bytes right after this one's, which end at a line
+    // break: one text scanned in two parts (on two threads) reads as if scanned in one.
+    void append(const InputScanner& later);
     DecodedInput finish();
 
 private:

@@ -8,7 +8,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <thread>
 
+#include "ast/source.hpp"
 #include "project/files.hpp"
 
 namespace kerf::project {
@@ -17,6 +19,8 @@ namespace {
 
 // The decoder reads a mapped file in windows of this size, dropping each behind it.
 constexpr std::size_t kScanWindow = std::size_t{16} << 20;
+// From this size the decoder reads the file in two parts on two threads.
+constexpr std::size_t kTwoPartsFrom = std::size_t{8} << 20;
 
 }  // namespace
 
@@ -37,13 +41,7 @@ std::optional<MappedFile> MappedFile::open(const std::filesystem::path& path, co
             madvise(p, static_cast<std::size_t>(st.st_size), MADV_SEQUENTIAL);
             file.mapped_ = static_cast<const char*>(p);
             file.size_ = static_cast<std::size_t>(st.st_size);
-            ast::InputScanner scanner(limits);
-            for (std::size_t at = 0; at < file.size_; at += kScanWindow) {
-                const std::size_t end = std::min(file.size_, at + kScanWindow);
-                scanner.feed(std::string_view(file.mapped_ + at, end - at));
-                file.release(at, end);
-            }
-            file.input_ = scanner.finish();
+            file.input_ = file.scan(limits);
             if (file.input_.encoding == ast::Encoding::utf8) {
                 if (!file.input_.refused()) return file;
                 for (const ast::InputProblem& problem : file.input_.problems)
@@ -68,6 +66,31 @@ std::optional<MappedFile> MappedFile::open(const std::filesystem::path& path, co
     file.input_.bom = read.bom;
     file.input_.problems = std::move(read.problems);
     return file;
+}
+
+ast::DecodedInput MappedFile::scan(const ast::InputLimits& limits) const {
+    const std::string_view text(mapped_, size_);
+    const auto scan_part = [&](ast::InputScanner& scanner, std::size_t from, std::size_t to) {
+        for (std::size_t at = from; at < to; at += kScanWindow) {
+            const std::size_t end = std::min(to, at + kScanWindow);
+            scanner.feed(text.substr(at, end - at));
+            release(at, end);
+        }
+    };
+    ast::InputScanner scanner(limits);
+    // A long file in two parts cut at a line break, the second on another thread: the scan was
+    // 0.05 s of a 100 MB program's dry run before its first block ran, one core idle.
+    const std::size_t cut = size_ >= kTwoPartsFrom ? ast::last_line_end_before(text, size_ / 2) : std::string_view::npos;
+    if (cut == std::string_view::npos || cut == 0) {
+        scan_part(scanner, 0, size_);
+        return scanner.finish();
+    }
+    ast::InputScanner second(limits);
+    std::thread worker([&] { scan_part(second, cut, size_); });
+    scan_part(scanner, 0, cut);
+    worker.join();
+    scanner.append(second);
+    return scanner.finish();
 }
 
 MappedFile::MappedFile(MappedFile&& other) noexcept

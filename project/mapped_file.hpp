@@ -36,6 +36,8 @@ public:
 
 private:
     MappedFile() = default;
+    // The decoder's reading of the mapped bytes, their pages dropped behind it.
+    ast::DecodedInput scan(const ast::InputLimits& limits) const;
     const char* mapped_ = nullptr;
     std::size_t size_ = 0;
     std::string copy_;

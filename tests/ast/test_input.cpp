@@ -184,6 +184,36 @@ TEST_CASE("input: the scanner over pieces decides as decode_input does") {
     }
 }
 
+TEST_CASE("input: two scanners of a text cut at a line end, appended, decide as one") {
+    InputLimits limits;
+    limits.max_line_bytes = 8;
+    // The longest line in the first part, in the second, tied across the cut, blank parts,
+    // a lone CR before the cut, no break at the end.
+    for (const std::string& text :
+         {std::string("G0 X1. Y2. Z3.\r\nG1\nG2\n"), std::string("G1\nG2\r\nG0 X1. Y2. Z3.\nG3"),
+          std::string("G0 X1. Y2. Z3.\nG0 X1. Y2. Z4.\n"), std::string(" \n\t\r\n \n"), std::string("\n\nG1 X123456789\n"),
+          std::string("G0\rG1 X1. Y2.\rG2\r"), std::string("G0 X1.\nG1 X2. Y3. Z4."),
+          std::string("G1\n \n\t\n")}) {
+        INFO(text);
+        const DecodedInput whole = decode_input(text, limits);
+        for (std::size_t cut = 1; cut < text.size(); ++cut) {
+            if (last_line_end_before(text, cut) != cut) continue;   // only cuts right after a line break
+            INFO(cut);
+            InputScanner first(limits), second(limits);
+            first.feed(std::string_view(text).substr(0, cut));
+            second.feed(std::string_view(text).substr(cut));
+            first.append(second);
+            const DecodedInput scanned = first.finish();
+            REQUIRE(scanned.problems.size() == whole.problems.size());
+            for (std::size_t i = 0; i < scanned.problems.size(); ++i) {
+                CHECK(scanned.problems[i].kind == whole.problems[i].kind);
+                CHECK(scanned.problems[i].line == whole.problems[i].line);
+                CHECK(scanned.problems[i].message == whole.problems[i].message);
+            }
+        }
+    }
+}
+
 TEST_CASE("line breaks: LF, CRLF and a lone CR each end a line") {
     const std::string text = "A\nB\r\nC\rD\r\rE";
     const std::vector<std::string> lines = scanner_lines(text);
