@@ -76,7 +76,10 @@ Position Executor::target_position(const MachineState& s, const Position& from, 
         moves = true;
     }
     if (s.polar_command && moves) polar_target(s, words, start, to);   // [transforms] G16 (executor_transforms.cpp)
-    return from_program(s, to);
+    // Without G68/G51/G51.1 (nearly every block) `to` is the result as it stands, built in the
+    // caller's place: copied out just after its per-axis stores, it stalled store forwarding.
+    if (!s.program_frame().identity()) to = from_program(s, to);
+    return to;
 }
 
 // Stored stroke check 1 (alarms OT500/OT501 [FANUC]): checked before the move, which does not

@@ -173,16 +173,15 @@ Position Executor::machine_offset(const MachineState& s) const {
     // and on lathes the tool offset (geometry + wear) of the active T (dialects.md §3.5).
     const Position tool = tool_offset(s);
     const Position& work = active_work_offset(s);
-    // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp). Added inside the loop:
-    // a store to p[2] after the loop's vector stores made every caller's read of the result wait
-    // for it (a store-forwarding stall was the most expensive instruction of a dry run's move).
-    Position length;
-    length.fill(-0.0);   // x + -0.0 is x for every x (+0.0 would turn -0.0 into +0.0)
-    length[2] = s.length_applied_mm;
+    // [length offsets] G43/G44 H on Z, once taken up (executor_length.cpp). Added inside the loop,
+    // in registers: a store to p[2] after the loop's vector stores (or to an array of lengths) and
+    // a vector read across it stalled store forwarding, the most expensive instruction of a dry
+    // run's move. x + -0.0 is x for every x (+0.0 would turn -0.0 into +0.0).
+    const double length = s.length_applied_mm;
     Position p{};
     for (std::size_t a = 0; a < kAxisCount; ++a)
         p[a] = work[a] + s.external_offset[a] + setup_.work_shift_sign * s.work_shift[a] + s.local_shift[a] +
-               s.setting_shift[a] + tool[a] + length[a];
+               s.setting_shift[a] + tool[a] + (a == 2 ? length : -0.0);
     return p;
 }
 
