@@ -40,8 +40,6 @@ const dialects::CodeInfo* code_info(const SyntaxTree& tree, const dialects::Dial
     return key ? d.fast_code(t.letter, *key) : nullptr;
 }
 
-// What the binder carries from block to block: the static reading of the motion group, used only
-// to recognise plain A/R direct-drawing words (dialects.md §11.4). The interpreter keeps the real state.
 // What the binder carries from block to block: the letter table of the dialect, and the static
 // reading of the motion group, used only to recognise plain A/R direct-drawing words
 // (dialects.md §11.4). The interpreter keeps the real state.
