@@ -383,27 +383,14 @@ void Executor::note_not_modelled(const BlockContext& ctx) {
 }
 
 void Executor::scan_block(const Frame& frame, const ast::BlockView& view, BlockScan& scan) const {
-    view.collect_codes(scan.g, scan.m);
-    scan.data_letters = 0;
-    scan.macro_call = false;
-    scan.classes = 0;
-    for (const std::vector<ast::CodeRef>* codes : {&scan.g, &scan.m})
-        for (const ast::CodeRef& c : *codes) {
-            if (!c.info) continue;
-            scan.classes |= code_class_of(*c.info);
-            scan.data_letters |= c.info->parameter_mask;
-            scan.macro_call |= c.info->has(dialects::traits::takes_arguments);
-        }
-    scan.statements = scan.comma_words = scan.direct_drawing = false;
-    scan.sequence.reset();
-    const ast::SyntaxTree& tree = view.tree();
-    for (const ast::Token& t : view.tokens()) {
-        if (t.kind == ast::TokenKind::word && t.letter == 'N' && t.is_number() && !scan.sequence)
-            scan.sequence = tree.number_value(t);
-        scan.statements |= t.kind == ast::TokenKind::statement;
-        scan.comma_words |= t.kind == ast::TokenKind::comma_word;
-        scan.direct_drawing |= t.kind == ast::TokenKind::word && t.role() == ast::Role::direct_drawing;
+    // A piece of a streamed file brings its blocks scanned by the thread that parsed it.
+    if (file_of(frame).scanned(view, scan)) {
+        scan.source.file = frame.program.file;
+        line_hint_file_ = frame.program.file;
+        line_hint_ = scan.source.line - 1;
+        return;
     }
+    scan_tokens(view, scan);
     scan.source = source(frame, view);
 }
 

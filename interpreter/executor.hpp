@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "interpreter/block_scan.hpp"
 #include "interpreter/compensation/radius_compensation.hpp"
 #include "interpreter/cycles/context.hpp"
 #include "interpreter/direct_drawing.hpp"
@@ -102,21 +103,6 @@ struct BlockWords {
         words.clear();
         incremental.clear();
     }
-};
-
-// What the executor reads of a block's tokens, collected once per block (executor.cpp scan_block).
-struct BlockScan {
-    std::vector<ast::CodeRef> g;   // reused from block to block
-    std::vector<ast::CodeRef> m;
-    std::uint32_t data_letters = 0;   // union of the codes' parameter letters
-    bool statements = false;
-    bool comma_words = false;
-    bool direct_drawing = false;
-    bool macro_call = false;          // G65/G66
-    std::uint32_t classes = 0;        // the union of its codes' classes (Executor::kCycleCode ...)
-    std::optional<double> sequence;   // N
-    std::uint32_t block = 0;          // its index in the file
-    SourceRef source;
 };
 
 class Executor;
@@ -303,10 +289,8 @@ private:
     Outcome apply_motion(const BlockContext& ctx);   // step 7: moved, done (no motion) or stopped
     void thread_move(const BlockContext& ctx, const Position& to);
     bool is_cycle(const dialects::CodeInfo& code) const;
-    // What a code of the dialect is, as bits: its traits, computed once when the dialect is indexed
-    // (dialects/functions.hpp `traits`, each with a bit of its own). A block ORs its codes' classes
-    // into scan_.classes and skips whole families of checks with one test.
-    static std::uint32_t code_class_of(const dialects::CodeInfo& code) { return code.traits; }
+    // What a code of the dialect is, as bits: code_class_of (block_scan.hpp). A block ORs its
+    // codes' classes into scan.classes and skips whole families of checks with one test.
     static constexpr std::uint32_t kCycleCode = dialects::traits::cycle,
                                   kIncrementalCode = dialects::traits::incremental,
                                   kPerRevolutionCode = dialects::traits::per_revolution,

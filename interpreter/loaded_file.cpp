@@ -15,6 +15,7 @@ struct LoadedFile::Held {
     ast::SyntaxTree tree;
     std::unique_ptr<ast::TypedFile> typed;
     std::unique_ptr<ast::LineIndex> lines;
+    PieceScans scans;   // of a streamed piece: its blocks scanned where it was parsed (empty for a whole file)
     std::uint64_t last_use = 0;
     // A file parsed by its owner (the language server's document): read there, not copied.
     std::shared_ptr<const void> owner;
@@ -111,6 +112,8 @@ LoadedFile::Piece LoadedFile::parse_piece(Cursor& cursor, Held& held) const {
     cursor.state = grammar::parse_into(held.tree, text, dialect_.lexical, piece.start.state);
     held.typed = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(held.tree, dialect_, piece.start.linear));
     held.lines = std::make_unique<ast::LineIndex>(held.tree.text);
+    // Scanned here, on the read-ahead thread when there is one: the run's thread only copies.
+    held.scans.build(*held.typed, *held.lines, piece.text_begin(), piece.start.first_line);
     piece.end_block = piece.first_block() + static_cast<std::uint32_t>(held.tree.block_count());
     cursor.text_begin = end;
     cursor.first_block = piece.end_block;
@@ -329,6 +332,13 @@ const LoadedFile::Held* LoadedFile::owner(const ast::BlockView& view) const {
     for (const auto& h : held_)
         if (&h->the_tree() == &view.tree()) return h.get();
     return nullptr;
+}
+
+bool LoadedFile::scanned(const ast::BlockView& view, BlockScan& scan) const {
+    const Held* held = owner(view);
+    if (!held || held->scans.empty()) return false;
+    held->scans.fill(view.index(), scan);
+    return true;
 }
 
 ast::Range LoadedFile::file_range(const ast::BlockView& view) const {

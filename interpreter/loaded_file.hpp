@@ -22,6 +22,7 @@
 #include "ast/source.hpp"
 #include "ast/typed.hpp"
 #include "grammar/parse.hpp"
+#include "interpreter/block_scan.hpp"
 
 namespace kerf::interpreter {
 
@@ -57,6 +58,9 @@ public:
     // (has_block).
     ast::BlockView block(std::uint32_t index) const;
     bool has_block(std::uint32_t index) const;
+    // The scan of `view`'s block made when its piece was parsed (all of it but `block` and
+    // `source.file`); false for a file parsed whole, whose blocks the executor scans itself.
+    bool scanned(const ast::BlockView& view, BlockScan& scan) const;
     // Keeps the piece of `index` held until the next pin (the executor pins the running block).
     void pin(std::uint32_t index) const;
 
