@@ -22,12 +22,12 @@ std::string refusal(std::string_view text) {
 void Document::parse_whole() {
     refused_ = refusal(text_);
     if (refused_.empty()) {
-        tree_ = grammar::parse(std::move(text_), dialect().lexical);
+        tree_ = grammar::parse(std::move(text_), dialect().lexical, grammar::parse_threads());   // two cores for a long file
         text_.clear();
     } else {
         tree_ = grammar::parse(std::string(), dialect().lexical);
     }
-    typed_ = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(tree_, dialect()));
+    typed_ = std::make_unique<ast::TypedFile>(ast::TypedFile::bind(tree_, dialect(), false, grammar::parse_threads()));
     lines_ = std::make_unique<ast::LineIndex>(text());
     reparsed_blocks_ = static_cast<std::uint32_t>(tree_.block_count());
 }
@@ -155,7 +155,7 @@ std::shared_ptr<const Document> Document::edit(std::int64_t version, const std::
                 ast::BlockSplice splice;
                 next->tree_ = reparse(current->tree_, {begin, end, c.text}, current->dialect().lexical, splice);
                 next->typed_ = std::make_unique<ast::TypedFile>(
-                    splice.old_end == kWholeText ? ast::TypedFile::bind(next->tree_, next->dialect())
+                    splice.old_end == kWholeText ? ast::TypedFile::bind(next->tree_, next->dialect(), false, grammar::parse_threads())
                                                  : ast::TypedFile::bind_edited(next->tree_, *current->typed_, splice));
                 next->lines_ = std::make_unique<ast::LineIndex>(*current->lines_);
                 next->lines_->edit(next->tree_.text, begin, end, static_cast<std::uint32_t>(begin + c.text.size()));
@@ -183,7 +183,7 @@ bool Document::change_in_place(const ContentChange& c, std::size_t index, std::v
     std::optional<Replaced> old;
     reparse_in_place(tree_, {bytes->first, bytes->second, c.text}, dialect().lexical, splice,
                      [&](const ast::SyntaxTree& tree, std::uint32_t first, std::uint32_t end) { old = replaced(tree, first, end); });
-    auto typed = std::make_unique<ast::TypedFile>(splice.old_end == kWholeText ? ast::TypedFile::bind(tree_, dialect())
+    auto typed = std::make_unique<ast::TypedFile>(splice.old_end == kWholeText ? ast::TypedFile::bind(tree_, dialect(), false, grammar::parse_threads())
                                                                                 : ast::TypedFile::bind_edited(tree_, *typed_, splice));
     typed_ = std::move(typed);
     lines_->edit(tree_.text, bytes->first, bytes->second, static_cast<std::uint32_t>(bytes->first + c.text.size()));

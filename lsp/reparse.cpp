@@ -254,7 +254,7 @@ ast::SyntaxTree reparse(const ast::SyntaxTree& old, const ByteEdit& edit, const 
     new_text.reserve(old.text.size() - (edit.end - edit.begin) + edit.text.size());
     new_text.append(old.text, 0, edit.begin).append(edit.text).append(old.text, edit.end, std::string::npos);
     if (p.full) {
-        ast::SyntaxTree tree = grammar::parse(std::move(new_text), rules);
+        ast::SyntaxTree tree = grammar::parse(std::move(new_text), rules, grammar::parse_threads());
         full_splice(old.block_count(), tree.block_count(), splice);
         return tree;
     }
@@ -299,7 +299,7 @@ void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialect
     tree.text.replace(edit.begin, edit.end - edit.begin, edit.text);
     if (p.full) {
         const std::size_t old_blocks = tree.block_count();
-        tree = grammar::parse(std::move(tree.text), rules);
+        tree = grammar::parse(std::move(tree.text), rules, grammar::parse_threads());
         full_splice(old_blocks, tree.block_count(), splice);
         return;
     }
