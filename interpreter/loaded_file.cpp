@@ -143,8 +143,13 @@ public:
         changed_.notify_all();
         thread_.join();
     }
+    struct Ready {
+        Piece piece;
+        std::unique_ptr<Held> held;
+        ProgramsAfter programs;
+    };
     // The next piece in file order, waiting for it; nullopt after the last.
-    std::optional<std::pair<Piece, std::unique_ptr<Held>>> take() {
+    std::optional<Ready> take() {
         std::unique_lock lock(mutex_);
         changed_.wait(lock, [&] { return !ready_.empty() || finished_; });
         if (ready_.empty()) return std::nullopt;
@@ -175,9 +180,10 @@ private:
             }
             if (!slot) slot = std::make_unique<Held>();
             Piece piece = file_.parse_piece(cursor, *slot);
+            ProgramsAfter programs = split_programs(splitter_, slot->tree, piece);
             {
                 std::lock_guard lock(mutex_);
-                ready_.emplace_back(piece, std::move(slot));
+                ready_.push_back({piece, std::move(slot), std::move(programs)});
             }
             changed_.notify_all();
         }
@@ -189,7 +195,8 @@ private:
     const LoadedFile& file_;
     std::mutex mutex_;
     std::condition_variable changed_;
-    std::deque<std::pair<Piece, std::unique_ptr<Held>>> ready_;
+    std::deque<Ready> ready_;
+    ast::ProgramSplitter splitter_;   // this thread reads the pieces in order
     std::vector<std::unique_ptr<Held>> spare_;
     bool stop_ = false;
     bool finished_ = false;
@@ -204,36 +211,47 @@ bool LoadedFile::read_next_piece() const {
     const std::size_t slot = slot_index();
     if (slot == held_.size()) held_.emplace_back();
     Piece piece;
+    ProgramsAfter programs;
     if (read_ahead_) {
         auto next = read_ahead_->take();
         if (!next) {   // the last piece sets `complete_`: not reached
             complete_ = true;
             return false;
         }
-        piece = next->first;
+        piece = next->piece;
         if (held_[slot]) read_ahead_->give_back(std::move(held_[slot]));
-        held_[slot] = std::move(next->second);
+        held_[slot] = std::move(next->held);
+        programs = std::move(next->programs);
     } else {
         if (!held_[slot]) held_[slot] = std::make_unique<Held>();
         piece = parse_piece(cursor_, *held_[slot]);
+        programs = split_programs(splitter_, held_[slot]->tree, piece);
     }
     Held& held = *held_[slot];
     pieces_.push_back(piece);
     held.piece = pieces_.size() - 1;
     held.last_use = ++clock_;
-    for (std::uint32_t b = 0; b < held.tree.block_count(); ++b) splitter_.feed(held.tree, b, piece.first_block() + b);
-    if (piece.last) {
-        complete_ = true;
-        splitter_.finish(piece.end_block);
-    }
-    publish_programs();
+    if (piece.last) complete_ = true;
+    publish_programs(std::move(programs));
     return true;
 }
 
-void LoadedFile::publish_programs() const {
-    programs_ = splitter_.programs();
-    if (const auto open = splitter_.open_program()) {
-        programs_.push_back(*open);
+LoadedFile::ProgramsAfter LoadedFile::split_programs(ast::ProgramSplitter& splitter, const ast::SyntaxTree& tree,
+                                                     const Piece& piece) {
+    const std::size_t closed_before = splitter.programs().size();
+    for (std::uint32_t b = 0; b < tree.block_count(); ++b) splitter.feed(tree, b, piece.first_block() + b);
+    if (piece.last) splitter.finish(piece.end_block);
+    ProgramsAfter after;
+    after.closed.assign(splitter.programs().begin() + static_cast<std::ptrdiff_t>(closed_before), splitter.programs().end());
+    after.open = splitter.open_program();
+    return after;
+}
+
+void LoadedFile::publish_programs(ProgramsAfter after) const {
+    closed_programs_.insert(closed_programs_.end(), after.closed.begin(), after.closed.end());
+    programs_ = closed_programs_;
+    if (after.open) {
+        programs_.push_back(*after.open);
         programs_.back().end_block = kOpenEnd;
     }
 }

@@ -105,6 +105,14 @@ private:
     };
     struct Held;              // a parsed piece: tree, typed file, line index
     class ReadAhead;          // the second thread (loaded_file.cpp)
+    // What a piece read in file order adds to the programs: those it closed, and the one still
+    // open after it. Split by the thread that reads the pieces in order (the read-ahead thread
+    // when there is one).
+    struct ProgramsAfter {
+        std::vector<ast::Program> closed;
+        std::optional<ast::Program> open;
+    };
+    static ProgramsAfter split_programs(ast::ProgramSplitter& splitter, const ast::SyntaxTree& tree, const Piece& piece);
 
     // Parses the piece at `cursor` into `held` and moves the cursor past it. Touches only the
     // immutable text, dialect and options: safe on the read-ahead thread.
@@ -117,7 +125,7 @@ private:
     std::size_t piece_of(std::uint32_t block) const;
     const Held* owner(const ast::BlockView& view) const;   // the held piece a view belongs to
     bool read_next_piece() const;   // false at the end of the file
-    void publish_programs() const;
+    void publish_programs(ProgramsAfter after) const;
 
     std::string name_;
     bool owned_whole_ = false;      // given as a string: one piece, always held
@@ -135,8 +143,9 @@ private:
     mutable Cursor cursor_;          // the next piece, when read on this thread
     mutable std::unique_ptr<ReadAhead> read_ahead_;
     mutable bool complete_ = false;
-    mutable ast::ProgramSplitter splitter_;
-    mutable std::vector<ast::Program> programs_;
+    mutable ast::ProgramSplitter splitter_;   // when the pieces are read on this thread
+    mutable std::vector<ast::Program> closed_programs_;
+    mutable std::vector<ast::Program> programs_;   // closed_programs_ and the open one (end kOpenEnd)
     std::uint32_t total_blocks() const { return pieces_.empty() ? 0 : pieces_.back().end_block; }
 };
 
