@@ -36,23 +36,16 @@ void PieceScans::build(const ast::TypedFile& typed, const ast::LineIndex& lines,
         const ast::BlockView view = typed.block(b);
         scan_tokens(view, scan);
         Facts f;
+        f.tokens = static_cast<const TokenFacts&>(scan);
         f.first_code = static_cast<std::uint32_t>(codes_.size());
         f.g_codes = static_cast<std::uint32_t>(scan.g.size());
         f.m_codes = static_cast<std::uint32_t>(scan.m.size());
         codes_.insert(codes_.end(), scan.g.begin(), scan.g.end());
         codes_.insert(codes_.end(), scan.m.begin(), scan.m.end());
-        f.data_letters = scan.data_letters;
-        f.classes = scan.classes;
         const ast::Range local = view.range();
         line = lines.line_near(local.begin, line);
         f.line = first_line + line;
         f.range = {static_cast<std::uint32_t>(local.begin + text_begin), static_cast<std::uint32_t>(local.end + text_begin)};
-        f.has_sequence = scan.sequence.has_value();
-        f.sequence = scan.sequence.value_or(0.0);
-        f.statements = scan.statements;
-        f.comma_words = scan.comma_words;
-        f.direct_drawing = scan.direct_drawing;
-        f.macro_call = scan.macro_call;
         blocks_.push_back(f);
     }
 }
@@ -67,13 +60,7 @@ void PieceScans::fill(std::size_t index, BlockScan& scan) const {
     const auto first = codes_.begin() + f.first_code;
     scan.g.assign(first, first + f.g_codes);
     scan.m.assign(first + f.g_codes, first + f.g_codes + f.m_codes);
-    scan.data_letters = f.data_letters;
-    scan.classes = f.classes;
-    scan.statements = f.statements;
-    scan.comma_words = f.comma_words;
-    scan.direct_drawing = f.direct_drawing;
-    scan.macro_call = f.macro_call;
-    scan.sequence = f.has_sequence ? std::optional<double>(f.sequence) : std::nullopt;
+    static_cast<TokenFacts&>(scan) = f.tokens;
     scan.source.range = f.range;
     scan.source.line = f.line + 1;   // SourceRef lines are 1-based
 }

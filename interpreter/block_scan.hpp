@@ -14,10 +14,8 @@
 
 namespace kerf::interpreter {
 
-// One block as scanned (executor.cpp scan_block).
-struct BlockScan {
-    std::vector<ast::CodeRef> g;   // reused from block to block
-    std::vector<ast::CodeRef> m;
+// What a block's tokens say besides its codes and place: kept as it is for a block scanned ahead.
+struct TokenFacts {
     std::uint32_t data_letters = 0;   // union of the codes' parameter letters
     bool statements = false;
     bool comma_words = false;
@@ -25,7 +23,13 @@ struct BlockScan {
     bool macro_call = false;          // G65/G66
     std::uint32_t classes = 0;        // the union of its codes' classes (Executor::kCycleCode ...)
     std::optional<double> sequence;   // N
-    std::uint32_t block = 0;          // its index in the file
+};
+
+// One block as scanned (executor.cpp scan_block).
+struct BlockScan : TokenFacts {
+    std::vector<ast::CodeRef> g;   // reused from block to block
+    std::vector<ast::CodeRef> m;
+    std::uint32_t block = 0;       // its index in the file
     SourceRef source;
 };
 
@@ -51,19 +55,12 @@ public:
 
 private:
     struct Facts {
+        TokenFacts tokens;
         std::uint32_t first_code = 0;   // into codes_: the G codes, then the M codes
         std::uint32_t g_codes = 0;
         std::uint32_t m_codes = 0;
-        std::uint32_t data_letters = 0;
-        std::uint32_t classes = 0;
         std::uint32_t line = 0;         // 0-based line of the file
         ast::Range range;               // in the file
-        double sequence = 0;
-        bool has_sequence = false;
-        bool statements = false;
-        bool comma_words = false;
-        bool direct_drawing = false;
-        bool macro_call = false;
     };
     std::vector<Facts> blocks_;
     std::vector<ast::CodeRef> codes_;
