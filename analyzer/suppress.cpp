@@ -51,7 +51,7 @@ std::vector<Suppression> find_suppressions(const ast::SyntaxTree& tree) {
         if (block == tree.blocks.begin()) continue;
         const auto b = static_cast<std::size_t>(block - tree.blocks.begin() - 1);
         for (const ast::Token& t : tree.block_tokens(b)) {
-            if (t.kind != ast::TokenKind::comment || !t.range().contains(static_cast<std::uint32_t>(at))) continue;
+            if (t.kind != ast::TokenKind::comment || !tree.range(t).contains(static_cast<std::uint32_t>(at))) continue;
             // The first marker of the comment decides (parse), once.
             if (tree.spelling(t).find(kMarker) != at - t.begin) break;
             if (auto ids = parse(tree.spelling(t))) {

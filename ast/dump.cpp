@@ -166,7 +166,7 @@ json::object word_json(const TypedFile& file, std::uint32_t index, const LineInd
     const Token& t = tree.tokens[index];
     json::object o{{"letter", std::string(1, t.letter)},
                    {"spelling", tree.spelling(t)},
-                   {"range", range_json(t.range(), lines)}};
+                   {"range", range_json(tree.range(t), lines)}};
     if (t.has(token_flags::value_none)) {
         o["value"] = nullptr;
     } else if (t.has(token_flags::value_expr)) {
@@ -217,7 +217,7 @@ json::object block_json(const TypedFile& file, std::size_t i, const LineIndex& l
     for (const std::uint32_t c : v.comma_words()) commas.push_back(word_json(file, c, lines));
     for (const std::uint32_t c : v.comments()) {
         const Token& t = tree.tokens[c];
-        json::object co{{"text", tree.spelling(t)}, {"range", range_json(t.range(), lines)}};
+        json::object co{{"text", tree.spelling(t)}, {"range", range_json(tree.range(t), lines)}};
         if (t.has(token_flags::unclosed)) co["unclosed"] = true;
         comments.push_back(std::move(co));
     }

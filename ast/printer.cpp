@@ -1,5 +1,7 @@
 #include "ast/printer.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace kerf::ast {
@@ -12,8 +14,8 @@ std::string print(const SyntaxTree& tree) {
         std::uint32_t at = range.begin;
         for (const Token& t : tree.block_tokens(i)) {
             out.append(tree.text, at, t.begin - at);   // trivia before the token
-            out.append(tree.text, t.begin, t.length);  // the token
-            at = t.begin + t.length;
+            out.append(tree.text, t.begin, tree.length(t));  // the token
+            at = tree.end(t);
         }
         out.append(tree.text, at, range.end - at);     // trivia up to the next block (line break)
     }
@@ -22,6 +24,23 @@ std::string print(const SyntaxTree& tree) {
 
 namespace {
 bool is_trivia(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+}  // namespace
+
+namespace {
+// Every token too long for its 8 bits has one entry in long_tokens, sorted, and no other entry is there.
+std::optional<InvariantViolation> check_long_tokens(const SyntaxTree& tree) {
+    std::size_t long_ones = 0;
+    for (const Token& t : tree.tokens) {
+        if (t.short_length != Token::kLongLength) continue;
+        ++long_ones;
+        const auto it = std::lower_bound(tree.long_tokens.begin(), tree.long_tokens.end(), t.begin,
+                                         [](const LongToken& l, std::uint32_t b) { return l.begin < b; });
+        if (it == tree.long_tokens.end() || it->begin != t.begin || it->length < Token::kLongLength)
+            return InvariantViolation{t.begin, "a long token without its length in long_tokens"};
+    }
+    if (long_ones != tree.long_tokens.size()) return InvariantViolation{0, "long_tokens holds lengths of no token"};
+    return std::nullopt;
+}
 }  // namespace
 
 std::optional<InvariantViolation> check_lossless(const SyntaxTree& tree) {
@@ -33,18 +52,18 @@ std::optional<InvariantViolation> check_lossless(const SyntaxTree& tree) {
         if (tree.blocks[i].kind == BlockKind::tail) continue;
         std::uint32_t at = range.begin;
         for (const Token& t : tree.block_tokens(i)) {
-            if (t.begin < at || t.begin + t.length > range.end)
+            if (t.begin < at || tree.end(t) > range.end)
                 return InvariantViolation{t.begin, fmt::format("token outside block {} or out of order", i)};
             for (std::uint32_t p = at; p < t.begin; ++p)
                 if (!is_trivia(tree.text[p]))
                     return InvariantViolation{p, fmt::format("byte 0x{:02x} belongs to no token", static_cast<unsigned char>(tree.text[p]))};
-            at = t.begin + t.length;
+            at = tree.end(t);
         }
         for (std::uint32_t p = at; p < range.end; ++p)
             if (!is_trivia(tree.text[p]))
                 return InvariantViolation{p, fmt::format("byte 0x{:02x} belongs to no token", static_cast<unsigned char>(tree.text[p]))};
     }
-    return std::nullopt;
+    return check_long_tokens(tree);
 }
 
 }  // namespace kerf::ast

@@ -1,5 +1,6 @@
 #include "ast/syntax.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace kerf::ast {
@@ -86,6 +87,26 @@ const char* to_string(StatementKind k) {
     return "?";
 }
 
+std::uint32_t SyntaxTree::long_length(std::uint32_t begin) const {
+    const auto it = std::lower_bound(long_tokens.begin(), long_tokens.end(), begin,
+                                     [](const LongToken& l, std::uint32_t b) { return l.begin < b; });
+    return it != long_tokens.end() && it->begin == begin ? it->length : Token::kLongLength;
+}
+
+void SyntaxTree::set_length(Token& t, std::uint32_t length) {
+    const auto it = std::lower_bound(long_tokens.begin(), long_tokens.end(), t.begin,
+                                     [](const LongToken& l, std::uint32_t b) { return l.begin < b; });
+    const bool recorded = it != long_tokens.end() && it->begin == t.begin;
+    if (length < Token::kLongLength) {
+        if (recorded) long_tokens.erase(it);
+        t.short_length = static_cast<std::uint8_t>(length);
+        return;
+    }
+    t.short_length = Token::kLongLength;
+    if (recorded) it->length = length;
+    else long_tokens.insert(it, LongToken{t.begin, length});
+}
+
 std::string_view SyntaxTree::value_spelling(const Token& t) const {
     std::string_view s = spelling(t);
     const std::size_t skip = t.kind == TokenKind::comma_word ? 2 : 1;
@@ -93,6 +114,11 @@ std::string_view SyntaxTree::value_spelling(const Token& t) const {
     s.remove_prefix(skip);
     while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
     return s;
+}
+
+Range SyntaxTree::value_range(const Token& t) const {
+    const std::uint32_t e = end(t);
+    return {e - static_cast<std::uint32_t>(value_spelling(t).size()), e};
 }
 
 namespace {
@@ -108,7 +134,8 @@ double decimal_value(std::int32_t mantissa, int scale, std::uint8_t flags, const
 
 double SyntaxTree::number_value(const Token& t) const {
     if (!t.is_number()) return std::nan("");
-    return decimal_value(t.payload, t.scale(), t.flags, big_numbers);
+    if (t.has(token_flags::value_big)) return big_numbers[static_cast<std::size_t>(t.payload)];
+    return decimal_value(t.mantissa(), t.scale(), t.flags, big_numbers);
 }
 
 double SyntaxTree::number_value(const Expr& e) const {

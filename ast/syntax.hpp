@@ -57,23 +57,39 @@ inline constexpr std::uint8_t negative = 1 << 6;       // value written with '-'
 inline constexpr std::uint8_t unclosed = 1 << 7;       // comment without ')'
 }  // namespace token_flags
 
+// A token is 12 bytes (the bulk of a tree: 2.4 tokens a line of CAM output, bench/RESULTS.md). Its
+// length is kept in 8 bits; a token of kLongLength bytes or more (a long comment or macro expression)
+// has its length in SyntaxTree::long_tokens: ask the tree (SyntaxTree::length, range, end).
+// A number's payload holds mantissa * 16 + scale, so mantissas are 28-bit (bigger ones go to
+// big_numbers, like any number that does not fit).
 struct Token {
-    std::uint32_t begin = 0;
-    std::uint32_t length = 0;
-    TokenKind kind = TokenKind::error;
-    char letter = 0;               // upper-case address letter of words and comma words; '/' level digit
-    std::uint8_t flags = 0;
-    std::uint8_t scale_role = 0;   // low 4 bits: digits after the point; high 4 bits: Role
-    std::int32_t payload = 0;      // mantissa, or an index (see flags and kind)
+    static constexpr std::uint8_t kLongLength = 255;
+    static constexpr std::int32_t kMaxMantissa = (1 << 27) - 1;
 
-    Range range() const { return {begin, begin + length}; }
+    std::uint32_t begin = 0;
+    std::int32_t payload = 0;          // a number: mantissa * 16 + scale; else an index (see flags and kind)
+    std::uint8_t short_length = 0;     // the length, or kLongLength (the tree has it)
+    char letter = 0;                   // upper-case address letter of words and comma words; '/' level digit
+    std::uint8_t flags = 0;
+    TokenKind kind : 4 = TokenKind::error;
+    Role role_bits : 4 = Role::none;
+
     bool has(std::uint8_t flag) const { return (flags & flag) != 0; }
-    int scale() const { return scale_role & 0x0F; }
-    Role role() const { return static_cast<Role>(scale_role >> 4); }
-    void set_role(Role r) { scale_role = static_cast<std::uint8_t>((scale_role & 0x0F) | (static_cast<int>(r) << 4)); }
+    // Numbers (is_number()) only: the exact decimal mantissa / 10^scale.
+    std::int32_t mantissa() const { return payload >> 4; }
+    int scale() const { return payload & 0x0F; }
+    void set_number(std::int32_t mantissa, int scale) { payload = static_cast<std::int32_t>(static_cast<std::uint32_t>(mantissa) << 4) | (scale & 0x0F); }
+    Role role() const { return role_bits; }
+    void set_role(Role r) { role_bits = r; }
     bool is_number() const { return (kind == TokenKind::word || kind == TokenKind::comma_word) && !(flags & (token_flags::value_expr | token_flags::value_none)); }
 };
-static_assert(sizeof(Token) == 16, "tokens are the bulk of the tree; keep them at 16 bytes");
+static_assert(sizeof(Token) == 12, "tokens are the bulk of the tree; keep them at 12 bytes");
+
+// The length of a token of Token::kLongLength bytes or more, by the token's begin.
+struct LongToken {
+    std::uint32_t begin = 0;
+    std::uint32_t length = 0;
+};
 
 enum class BlockKind : std::uint8_t {
     code,          // words and/or statements
@@ -160,6 +176,7 @@ struct SyntaxTree {
     std::vector<Expr> exprs;
     std::vector<Statement> statements;
     std::vector<double> big_numbers;   // numbers that do not fit mantissa/scale
+    std::vector<LongToken> long_tokens;  // sorted by begin: the tokens too long for Token::short_length
     std::vector<Diagnostic> diagnostics;
 
     // Inline: the analyzer's rules, the binder and the formatter ask these for every block, several
@@ -178,11 +195,21 @@ struct SyntaxTree {
         return i + 1 < blocks.size() ? blocks[i + 1].first_token : static_cast<std::uint32_t>(tokens.size());
     }
     std::string_view slice(Range r) const { return std::string_view(text).substr(r.begin, r.size()); }
-    std::string_view spelling(const Token& t) const { return slice(t.range()); }
+    std::uint32_t length(const Token& t) const { return t.short_length != Token::kLongLength ? t.short_length : long_length(t.begin); }
+    std::uint32_t end(const Token& t) const { return t.begin + length(t); }
+    Range range(const Token& t) const { return {t.begin, end(t)}; }
+    // Sets a token's length (the builder, when it makes or widens a token); a long one is recorded
+    // in long_tokens, which stays sorted.
+    void set_length(Token& t, std::uint32_t length);
+    std::string_view spelling(const Token& t) const { return slice(range(t)); }
     // The text of a word's value ("-12.5" of "X-12.5"), after the letter and any spaces.
     std::string_view value_spelling(const Token& t) const;
+    Range value_range(const Token& t) const;   // where value_spelling is: "P1000" -> "1000"
     double number_value(const Token& t) const;   // words with a numeric value
     double number_value(const Expr& e) const;    // number nodes
+
+private:
+    std::uint32_t long_length(std::uint32_t begin) const;
 };
 
 }  // namespace kerf::ast

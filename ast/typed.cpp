@@ -24,12 +24,13 @@ namespace {
 std::optional<dialects::CodeKey> code_key_of(const SyntaxTree& tree, const Token& t) {
     if (!t.is_number() || t.has(token_flags::negative)) return std::nullopt;
     // Exact decimal: G01 is 1/10^0, G12.1 is 121/10^1, G01.0 is 10/10^1.
-    if (!t.has(token_flags::value_big) && t.payload >= 0 && t.payload < 100000) {
+    const std::int32_t mantissa = t.mantissa();
+    if (!t.has(token_flags::value_big) && mantissa >= 0 && mantissa < 100000) {
         const int scale = t.scale();
-        if (scale == 0) return t.payload * 10;
-        if (scale == 1) return t.payload;
+        if (scale == 0) return mantissa * 10;
+        if (scale == 1) return mantissa;
         static constexpr int kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000};
-        if (scale < 10 && t.payload % kPow10[scale - 1] == 0) return t.payload / kPow10[scale - 1];
+        if (scale < 10 && mantissa % kPow10[scale - 1] == 0) return mantissa / kPow10[scale - 1];
         return std::nullopt;
     }
     return dialects::code_key(tree.number_value(t));
@@ -189,7 +190,7 @@ void ProgramSplitter::feed(const SyntaxTree& tree, std::uint32_t local, std::uin
 namespace {
 Diagnostic second_n_diagnostic(const SyntaxTree& tree, std::uint32_t token) {
     const Token& n = tree.tokens[token];
-    return {n.range(), Severity::error, ast::diagnostic_id::second_sequence_number, fmt::format("second sequence number '{}' in one block", tree.spelling(n)),
+    return {tree.range(n), Severity::error, ast::diagnostic_id::second_sequence_number, fmt::format("second sequence number '{}' in one block", tree.spelling(n)),
             "a block has one N word, at its start; remove this one or split the block"};
 }
 }  // namespace
@@ -210,7 +211,7 @@ void TypedFile::check_call_forms(const std::vector<std::size_t>& call_blocks) {
         if (call && call->packed && l) {
             const Token& p = tree_->tokens[call->p_token];
             diagnostics_.push_back(
-                {p.range(), Severity::error, ast::diagnostic_id::packed_p_with_l,
+                {tree_->range(p), Severity::error, ast::diagnostic_id::packed_p_with_l,
                  fmt::format("M98 '{}' packs the repeat count into P and also has L", tree_->spelling(p)),
                  "use one form: M98 P<repeats><4-digit program> or M98 P<program> L<repeats>"});
         }

@@ -225,7 +225,7 @@ void Converter::insert_code(std::span<const Token> tokens, const CodeInfo& code_
     }
     if (at == tokens.size()) return;
     const Token& t = tokens[at];
-    const bool compact = at > 0 && tokens[at - 1].begin + tokens[at - 1].length == t.begin &&
+    const bool compact = at > 0 && tree_.end(tokens[at - 1]) == t.begin &&
                          tokens[at - 1].kind == TokenKind::word;
     std::string code = target->spelling;
     if (lower) code[0] = static_cast<char>(std::tolower(code[0]));

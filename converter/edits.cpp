@@ -39,7 +39,7 @@ void Converter::edit(std::uint32_t begin, std::uint32_t end, std::string text) {
 // inserting "G91 " and removing it again give back the same bytes.
 void Converter::remove_token(std::uint32_t index) {
     const Token& t = tree_.tokens[index];
-    std::uint32_t begin = t.begin, end = t.begin + t.length;
+    std::uint32_t begin = t.begin, end = tree_.end(t);
     const std::string_view text = tree_.text;
     std::uint32_t after = end;
     while (after < text.size() && (text[after] == ' ' || text[after] == '\t')) ++after;
@@ -58,7 +58,7 @@ void Converter::report(ast::Range range, ReportKind kind, std::string construct,
 }
 
 void Converter::report_token(const Token& t, ReportKind kind, std::string reason) {
-    report(t.range(), kind, std::string(spelling(t)), std::move(reason));
+    report(tree_.range(t), kind, std::string(spelling(t)), std::move(reason));
 }
 
 Converter::Rewrite& Converter::rewrite(std::uint32_t token) {

@@ -81,7 +81,7 @@ void Converter::rename_header(const Token& t, std::string_view text) {
 void Converter::convert_eob(const Token& t) {
     if (to_.lexical.semicolon != dialects::SemicolonRole::comment) return;
     const std::string_view text = tree_.text;
-    std::uint32_t after = t.begin + t.length;
+    std::uint32_t after = tree_.end(t);
     while (after < text.size() && (text[after] == ' ' || text[after] == '\t')) ++after;
     const bool line_end = after >= text.size() || text[after] == '\n' || text[after] == '\r';
     replace_token(t, line_end ? std::string() : line_ending_);
@@ -116,7 +116,7 @@ void Converter::convert_call(const ast::BlockView& view) {
         replace_token(p, letter_part(p) + fmt::format("{}", call->program));
         // Compact blocks ("M98P41001") stay compact.
         const std::string gap = p.begin > 0 && (tree_.text[p.begin - 1] == ' ' || tree_.text[p.begin - 1] == '\t') ? " " : "";
-        edit(p.begin + p.length, p.begin + p.length,
+        edit(tree_.end(p), tree_.end(p),
              fmt::format("{}{}{}", gap, p.has(ast::token_flags::lower_case) ? 'l' : 'L', call->repeats));
         return;
     }

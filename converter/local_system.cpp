@@ -83,7 +83,7 @@ void Converter::write_cancel_code(const Token& code, const CodeInfo& cancel_code
     for (std::size_t k = 0; k < words.size(); ++k) contiguous = contiguous && words[k].first == code_index + 1 + k;
     if (contiguous) {
         const Token& last = tree_.tokens[words.back().first];
-        edit(code.begin + code.length, last.begin + last.length, {});
+        edit(tree_.end(code), tree_.end(last), {});
         return;
     }
     for (const auto& [ti, axis] : words) remove_token(ti);
@@ -122,7 +122,7 @@ void Converter::write_g52_values(const Token& code, const CodeInfo& g52, const a
         if (written.count(a) || std::fabs(run.local_after[a] - run.local_before[a]) < 1e-9) continue;
         extra += fmt::format(" {}{}", interpreter::kAxisLetters[a], format_value(vector ? run.local_after[a] : run.after[a], digits));
     }
-    if (!extra.empty()) edit(code.begin + code.length, code.begin + code.length, extra);
+    if (!extra.empty()) edit(tree_.end(code), tree_.end(code), extra);
     if (rt_.g52 != LocalSystem::current_point || cancel) return;
     bool zeros = true;
     for (const auto& [ti, axis] : words) zeros = zeros && std::fabs(run.after[axis]) < 0.5 * std::pow(10.0, -digits);

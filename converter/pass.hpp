@@ -121,7 +121,7 @@ private:
 
     std::string_view spelling(const Token& t) const { return tree_.spelling(t); }
 
-    void replace_token(const Token& t, std::string text) { edit(t.begin, t.begin + t.length, std::move(text)); }
+    void replace_token(const Token& t, std::string text) { edit(t.begin, tree_.end(t), std::move(text)); }
 
     enum class CommentForm { paren, semicolon, line };
 

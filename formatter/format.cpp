@@ -185,7 +185,7 @@ private:
         const ast::Range range = tree_.block_range(b);
         const auto tokens = tree_.block_tokens(b);
         const std::uint32_t content_begin = tokens.empty() ? range.end : tokens.front().begin;
-        const std::uint32_t content_end = tokens.empty() ? range.end : tokens.back().begin + tokens.back().length;
+        const std::uint32_t content_end = tokens.empty() ? range.end : tree_.end(tokens.back());
         const std::string_view trailing = tree_.slice({content_end, range.end});
         if (block.kind == ast::BlockKind::tail) {
             out_.append(tree_.text, range.begin, range.size());
@@ -250,7 +250,7 @@ private:
                 return false;
             }
             const ast::Range range = tree_.block_range(next);
-            const std::uint32_t content_end = tokens.empty() ? range.end : tokens.back().begin + tokens.back().length;
+            const std::uint32_t content_end = tokens.empty() ? range.end : tree_.end(tokens.back());
             if (!line_break_of(tree_.slice({content_end, range.end})).empty()) return true;
         }
         return true;
@@ -429,8 +429,8 @@ private:
         // blank_lines joins the next line with its leading blanks, which the next pass must keep
         // (fuzz_formatter, not idempotent).
         if (style_.spacing == Spacing::keep && a.token < kNewEob && b.token < kNewEob && b.token == a.token + 1) {
-            out_.append(tree_.text, tree_.tokens[a.token].begin + tree_.tokens[a.token].length,
-                        tree_.tokens[b.token].begin - tree_.tokens[a.token].begin - tree_.tokens[a.token].length);
+            const std::uint32_t gap = tree_.end(tree_.tokens[a.token]);
+            out_.append(tree_.text, gap, tree_.tokens[b.token].begin - gap);
             return;
         }
         if (is_kind(a, TokenKind::bom) || is_kind(a, TokenKind::block_delete)) return;
@@ -530,7 +530,7 @@ private:
             fmt::format_to(std::back_inserter(out_), "{}", e.value);
             at = e.range.end;
         }
-        out_.append(tree_.text, at, t.begin + t.length - at);
+        out_.append(tree_.text, at, tree_.end(t) - at);
     }
 };
 
@@ -555,7 +555,7 @@ bool ends_in_loose_blanks(const ast::SyntaxTree& tree) {
     if (blanks == 0) return false;
     if (tree.tokens.empty()) return true;
     const ast::Token& last = tree.tokens[tree.tokens.size() - 1];
-    return last.begin + last.length <= text.size() - blanks;
+    return tree.end(last) <= text.size() - blanks;
 }
 
 struct Framing {

@@ -66,7 +66,7 @@ private:
     std::string quote(std::uint32_t block) const {
         const auto tokens = tree_.block_tokens(block);
         if (tokens.empty()) return {};
-        std::string_view s = tree_.slice({tokens.front().begin, tokens.back().begin + tokens.back().length});
+        std::string_view s = tree_.slice({tokens.front().begin, tree_.end(tokens.back())});
         return std::string(s.substr(0, 60)) + (s.size() > 60 ? "..." : "");
     }
 
@@ -91,7 +91,7 @@ private:
             }
             const auto words = file_.block(b).words_with_role(ast::Role::sequence);
             if (words.size() > 1) {
-                refuse(b, tree_.tokens[words[1]].range(), "the block has a second N word",
+                refuse(b, tree_.range(tree_.tokens[words[1]]), "the block has a second N word",
                        "a block has one N word, at its start; remove the second one (or make it the address it was meant to be)");
                 return false;
             }
@@ -112,7 +112,7 @@ private:
                 // Which of two P (or Q) words a code takes is not certain (the control may raise an
                 // alarm; kerf's dry run takes the last, its references the first): renumbering one
                 // of them could change the jump.
-                refuse(r.block, tree_.tokens[*second].range(),
+                refuse(r.block, tree_.range(tree_.tokens[*second]),
                        fmt::format("{} is given twice ('{}' and '{}')", what(r), tree_.spelling(tree_.tokens[r.token]),
                                    tree_.spelling(tree_.tokens[*second])),
                        fmt::format("keep one {} word in the block (K1021)", r.letter));
@@ -156,11 +156,11 @@ private:
         }
         const ast::Token& t = tree_.tokens[r.token];
         if (r.kind == references::Kind::call_label && ast::integer_value(tree_, t)) {
-            refuse(r.block, t.range(), fmt::format("M98 Q '{}' is a label of the program P names, and P is computed", tree_.spelling(t)),
+            refuse(r.block, tree_.range(t), fmt::format("M98 Q '{}' is a label of the program P names, and P is computed", tree_.spelling(t)),
                    "write P as a plain program number, or keep the block numbers (block_numbers = \"keep\")");
             return;
         }
-        refuse(r.block, t.range(), fmt::format("{} '{}' is not a plain sequence number", what(r), tree_.spelling(t)),
+        refuse(r.block, tree_.range(t), fmt::format("{} '{}' is not a plain sequence number", what(r), tree_.spelling(t)),
                "write the sequence number as a plain integer, or keep the block numbers (block_numbers = \"keep\")");
     }
 
@@ -252,13 +252,13 @@ private:
                 mapped = it != plan_.blocks.end() && it->second != Renumbering::kRemove ? it->second : r.value;
             }
             if (!mapped && numbers[p].created.count(r.value)) {
-                refuse(r.block, tree_.tokens[r.token].range(),
+                refuse(r.block, tree_.range(tree_.tokens[r.token]),
                        fmt::format("it refers to N{}, which no block has, and renumbering would create N{}", r.value, r.value),
                        "fix the reference, or pick number_start/number_step that avoid it");
                 return;
             }
             if (mapped && value && *value != *mapped) {
-                refuse(r.block, tree_.tokens[r.token].range(),
+                refuse(r.block, tree_.range(tree_.tokens[r.token]),
                        fmt::format("N{} is in several programs that it may return to, and they are renumbered differently", r.value),
                        "put the subprogram in its own file, or keep the block numbers");
                 return;

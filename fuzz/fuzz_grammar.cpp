@@ -82,20 +82,20 @@ void check_tree(const ast::SyntaxTree& tree) {
         // Tokens of a non-tail block lie inside it (check_lossless skips tail blocks' bytes, not tokens).
         const ast::Range br = tree.block_range(i);
         for (const ast::Token& t : tree.block_tokens(i)) {
-            KERF_CHECK(t.begin >= br.begin && static_cast<std::uint64_t>(t.begin) + t.length <= br.end, t.begin, i);
+            KERF_CHECK(t.begin >= br.begin && static_cast<std::uint64_t>(t.begin) + tree.length(t) <= br.end, t.begin, i);
         }
     }
 
     // Tokens.
     for (std::size_t i = 0; i < n_tokens; ++i) {
         const ast::Token& t = tree.tokens[i];
-        KERF_CHECK(static_cast<std::uint64_t>(t.begin) + t.length <= n_text, t.begin, t.length);
+        KERF_CHECK(static_cast<std::uint64_t>(t.begin) + tree.length(t) <= n_text, t.begin, tree.length(t));
         KERF_CHECK(static_cast<int>(t.kind) <= static_cast<int>(ast::TokenKind::error), i);
         KERF_CHECK(static_cast<int>(t.role()) <= static_cast<int>(ast::Role::direct_drawing), i);
-        KERF_CHECK(t.length > 0 || t.kind == ast::TokenKind::error, i, t.begin);
-        if (i + 1 < n_tokens) KERF_CHECK(t.begin + t.length <= tree.tokens[i + 1].begin, i, t.begin);
+        KERF_CHECK(tree.length(t) > 0 || t.kind == ast::TokenKind::error, i, t.begin);
+        if (i + 1 < n_tokens) KERF_CHECK(tree.end(t) <= tree.tokens[i + 1].begin, i, t.begin);
         const std::string_view spelling = tree.spelling(t);
-        KERF_CHECK(spelling.size() == t.length, i);
+        KERF_CHECK(spelling.size() == tree.length(t), i);
         switch (t.kind) {
             case ast::TokenKind::word:
             case ast::TokenKind::comma_word: {
@@ -103,7 +103,7 @@ void check_tree(const ast::SyntaxTree& tree) {
                 if (t.has(ast::token_flags::value_expr)) {
                     KERF_CHECK(in_range(t.payload, n_exprs), i, static_cast<std::uint64_t>(t.payload));
                     const ast::Expr& e = tree.exprs[static_cast<std::size_t>(t.payload)];
-                    KERF_CHECK(e.begin >= t.begin && e.end <= t.begin + t.length, i, e.begin);
+                    KERF_CHECK(e.begin >= t.begin && e.end <= tree.end(t), i, e.begin);
                 } else if (t.has(ast::token_flags::value_big)) {
                     KERF_CHECK(in_range(t.payload, n_big), i, static_cast<std::uint64_t>(t.payload));
                 } else if (!t.has(ast::token_flags::value_none)) {
@@ -117,14 +117,14 @@ void check_tree(const ast::SyntaxTree& tree) {
             case ast::TokenKind::statement: {
                 KERF_CHECK(in_range(t.payload, n_statements), i, static_cast<std::uint64_t>(t.payload));
                 const ast::Statement& s = tree.statements[static_cast<std::size_t>(t.payload)];
-                KERF_CHECK(s.range.begin >= t.begin && s.range.end <= t.begin + t.length, i, s.range.begin);
+                KERF_CHECK(s.range.begin >= t.begin && s.range.end <= tree.end(t), i, s.range.begin);
                 break;
             }
             case ast::TokenKind::block_delete:
                 KERF_CHECK(t.letter == 0 || (t.letter >= '1' && t.letter <= '9'), i, t.letter);
                 break;
             case ast::TokenKind::bom:
-                KERF_CHECK(t.begin == 0 && t.length == 3, t.begin, t.length);
+                KERF_CHECK(t.begin == 0 && tree.length(t) == 3, t.begin, tree.length(t));
                 break;
             default:
                 break;
@@ -245,7 +245,7 @@ void check_lines(const ast::SyntaxTree& tree) {
         const ast::Position p = lines.utf16(t.begin);
         KERF_CHECK(p.line < lines.line_count(), p.line, lines.line_count());
         KERF_CHECK(lines.offset_of_utf16(p) <= n, t.begin);
-        const ast::Position q = lines.utf8(t.begin + t.length);
+        const ast::Position q = lines.utf8(tree.end(t));
         KERF_CHECK(q.line < lines.line_count(), q.line, lines.line_count());
     }
 }

@@ -74,10 +74,7 @@ template <typename Ctx>
 void fill_value(Builder& b, ast::Token& t, std::string_view written) {
     if (b.pending == PendingValue::number) {
         const NumberLit& n = b.pending_number;
-        std::int32_t payload = 0;
-        b.store_number(n, payload, t.flags);
-        t.payload = payload;
-        t.scale_role = static_cast<std::uint8_t>(n.scale & 0x0F);
+        b.store_token_number(n, t);
         if (n.comma) {
             const bool lenient = b.rules.decimal_comma_lenient;
             std::string fixed(written);
@@ -143,15 +140,14 @@ inline bool plain_word(Builder& b, const char*& first, const char* last) {
         scale = static_cast<int>(p - fraction_begin);
         digits += scale;
     }
-    if (digits == 0 || digits > 9) return false;
+    if (digits == 0 || digits > 9 || mantissa > static_cast<std::uint32_t>(ast::Token::kMaxMantissa)) return false;
     if (p != last && (*p == '.' || *p == ',')) return false;   // and F0,25 take the long way
     ast::Token& t = b.add_token(TokenKind::word, first, p);
     t.letter = upper(address);
     t.flags = static_cast<std::uint8_t>((address != t.letter ? ast::token_flags::lower_case : 0) |
                                         (point ? ast::token_flags::has_point : 0) |
                                         (negative ? ast::token_flags::negative : 0));
-    t.payload = negative ? -static_cast<std::int32_t>(mantissa) : static_cast<std::int32_t>(mantissa);
-    t.scale_role = static_cast<std::uint8_t>(scale);
+    t.set_number(negative ? -static_cast<std::int32_t>(mantissa) : static_cast<std::int32_t>(mantissa), scale);
     b.last_error_mergeable = false;
     first = p;
     return true;
@@ -473,8 +469,9 @@ struct error_rules_parser : builder_primitive<error_rules_parser> {
             if (digits >= 3 && digits <= 5 && (s == end || !(*s == '.' || is_digit(*s) || is_letter(*s)))) {
                 ast::Token& t = b.add_token(TokenKind::word, begin, s);
                 t.letter = 'O';
-                t.payload = 0;
-                for (const char* d = p + 1; d < s; ++d) t.payload = t.payload * 10 + (*d - '0');
+                std::int32_t number = 0;
+                for (const char* d = p + 1; d < s; ++d) number = number * 10 + (*d - '0');
+                t.set_number(number, 0);
                 b.diagnose(begin, p + 1, Severity::warning, ast::diagnostic_id::zero_for_letter_o,
                            fmt::format("'{}' reads as program number O{}: the letter O was written as the digit 0",
                                        view(begin, s), view(p + 1, s)),

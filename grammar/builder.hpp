@@ -65,12 +65,12 @@ public:
     std::uint32_t offset(const char* p) const { return static_cast<std::uint32_t>(p - base); }
 
     struct Checkpoint {
-        std::size_t tokens, exprs, statements, stack, statement_stack, functions, operators, diagnostics, big;
+        std::size_t tokens, exprs, statements, stack, statement_stack, functions, operators, diagnostics, big, long_tokens;
     };
     Checkpoint save() const {
         return {tree.tokens.size(), tree.exprs.size(), tree.statements.size(), stack.size(),
                 statement_stack.size(), functions.size(), operators.size(), tree.diagnostics.size(),
-                tree.big_numbers.size()};
+                tree.big_numbers.size(), tree.long_tokens.size()};
     }
     void restore(const Checkpoint& c) {
         // Most rollbacks undo nothing; only shrink what grew.
@@ -83,6 +83,7 @@ public:
         shrink(operators, c.operators);
         shrink(tree.diagnostics, c.diagnostics);
         shrink(tree.big_numbers, c.big);
+        shrink(tree.long_tokens, c.long_tokens);
     }
     template <typename V>
     static void shrink(V& v, std::size_t size) {
@@ -102,6 +103,26 @@ public:
         } else {
             node = static_cast<std::int32_t>(n.negative ? -n.mantissa : n.mantissa);
         }
+    }
+
+    // A word's number: exact in the token (mantissa and scale) when the mantissa fits its 28 bits,
+    // else in big_numbers like any number too long for the exact form.
+    void store_token_number(const NumberLit& n, ast::Token& t) {
+        if (!n.big && n.mantissa > ast::Token::kMaxMantissa) {
+            NumberLit wide = n;
+            wide.big = true;
+            // mantissa and 10^scale are exact doubles: the quotient is the correctly rounded value, as
+            // from_chars gives for the spelling (ast/syntax.cpp decimal_value).
+            static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+            const double v = static_cast<double>(n.mantissa) / kPow10[n.scale];
+            wide.big_value = n.negative ? -v : v;
+            store_token_number(wide, t);
+            return;
+        }
+        std::int32_t payload = 0;
+        store_number(n, payload, t.flags);
+        if (n.big) t.payload = payload;
+        else t.set_number(payload, n.scale);
     }
 
     std::int32_t push_expr(const ast::Expr& e) {
@@ -125,9 +146,12 @@ public:
         ast::Token t;
         t.kind = kind;
         t.begin = offset(b);
-        t.length = static_cast<std::uint32_t>(e - b);
         tree.tokens.push_back(t);
-        return tree.tokens.back();
+        ast::Token& added = tree.tokens.back();
+        const auto length = static_cast<std::uint32_t>(e - b);
+        if (length < ast::Token::kLongLength) added.short_length = static_cast<std::uint8_t>(length);
+        else tree.set_length(added, length);
+        return added;
     }
 
     // Adds an error token; consecutive generic error pieces separated only by blanks merge into one

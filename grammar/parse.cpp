@@ -18,11 +18,11 @@ void Builder::add_error(const char* b, const char* e, const char* code, std::str
                         bool mergeable) {
     if (mergeable && last_error_mergeable && !tree.tokens.empty() && tree.tokens.size() > block_first_token) {
         ast::Token& last = tree.tokens.back();
-        const char* gap = base + last.begin + last.length;
+        const char* gap = base + tree.end(last);
         bool only_blanks = gap <= b;
         for (const char* p = gap; only_blanks && p < b; ++p) only_blanks = block_detail::is_blank(*p);
         if (last.kind == ast::TokenKind::error && only_blanks && !tree.diagnostics.empty()) {
-            last.length = offset(e) - last.begin;
+            tree.set_length(last, offset(e) - last.begin);
             tree.diagnostics.back().range.end = offset(e);
             if (merged_diagnostics.empty() || merged_diagnostics.back() != tree.diagnostics.size() - 1)
                 merged_diagnostics.push_back(tree.diagnostics.size() - 1);
@@ -267,7 +267,7 @@ private:
             if (t.kind == TokenKind::comment || t.kind == TokenKind::bom || (i == first && t.kind == TokenKind::block_delete)) continue;
             if (t.kind != TokenKind::word) return 0;
             if ((t.letter == 'O' || t.letter == 'o') && digits_follow(t)) return words_before ? i : 0;
-            if (!is_plain_word(slice(t.range()))) return 0;
+            if (!is_plain_word(slice(tree_.range(t)))) return 0;
             words_before = true;
         }
         return 0;
@@ -275,7 +275,7 @@ private:
 
     // O0810, O 810: a digit after the letter (and blanks) — the test project/scan.cpp makes too.
     bool digits_follow(const ast::Token& t) const {
-        const std::string_view s = slice(t.range());
+        const std::string_view s = slice(tree_.range(t));
         std::size_t i = 1;
         while (i < s.size() && block_detail::is_blank(s[i])) ++i;
         return i < s.size() && s[i] >= '0' && s[i] <= '9';
@@ -376,6 +376,7 @@ void append_tree(ast::SyntaxTree& tree, ast::SyntaxTree& second) {
         shift(st.then_statement, statements);
     });
     tree.big_numbers.insert(tree.big_numbers.end(), second.big_numbers.begin(), second.big_numbers.end());
+    tree.long_tokens.insert(tree.long_tokens.end(), second.long_tokens.begin(), second.long_tokens.end());
     tree.diagnostics.insert(tree.diagnostics.end(), second.diagnostics.begin(), second.diagnostics.end());
     token_mover.join();
 }

@@ -218,7 +218,7 @@ std::optional<std::uint32_t> Document::token_at(std::uint32_t offset) const {
     const std::uint32_t end = tree_.block_token_end(b);
     std::optional<std::uint32_t> touching;
     for (std::uint32_t t = first; t < end; ++t) {
-        const ast::Range r = tree_.tokens[t].range();
+        const ast::Range r = tree_.range(tree_.tokens[t]);
         if (r.contains(offset)) return t;
         if (r.end == offset) touching = t;   // the cursor right after a word ("G71|")
     }

@@ -234,6 +234,18 @@ std::vector<ast::Diagnostic> spliced_diagnostics(const std::vector<ast::Diagnost
     return out;
 }
 
+// The long tokens' lengths (ast/syntax.hpp LongToken), spliced like the diagnostics.
+std::vector<ast::LongToken> spliced_long_tokens(const std::vector<ast::LongToken>& old, const Plan& p) {
+    std::vector<ast::LongToken> out;
+    for (const ast::LongToken& l : old)
+        if (l.begin < p.line_begin) out.push_back(l);
+    for (const ast::LongToken& l : p.region.long_tokens) out.push_back({moved(l.begin, p.line_begin), l.length});
+    if (!p.tail)
+        for (const ast::LongToken& l : old)
+            if (l.begin >= p.old_end) out.push_back({moved(l.begin, p.delta), l.length});
+    return out;
+}
+
 // Replaces v[first, last) by `with` (each through `fresh`) and moves the elements after it through
 // `moved_tail`, in place: the tail is shifted once by memmove and once by the offset pass.
 template <class V, class W, class F, class G>
@@ -288,6 +300,7 @@ ast::SyntaxTree reparse(const ast::SyntaxTree& old, const ByteEdit& edit, const 
     tree.big_numbers = old.big_numbers;
     tree.big_numbers.insert(tree.big_numbers.end(), p.region.big_numbers.begin(), p.region.big_numbers.end());
     tree.diagnostics = spliced_diagnostics(old.diagnostics, p);
+    tree.long_tokens = spliced_long_tokens(old.long_tokens, p);
     fill_splice(p, splice);
     return tree;
 }
@@ -305,6 +318,7 @@ void reparse_in_place(ast::SyntaxTree& tree, const ByteEdit& edit, const dialect
     }
     fill_splice(p, splice);
     tree.diagnostics = spliced_diagnostics(tree.diagnostics, p);
+    tree.long_tokens = spliced_long_tokens(tree.long_tokens, p);
     if (p.tail) return;   // the tail block keeps its place; only the text changed
     replace_in_place(tree.blocks, p.first, p.last, p.region.blocks, [&](const ast::Block& b) { return shifted(b, p.in_region); },
                      [&](const ast::Block& b) { return shifted(b, p.after); });

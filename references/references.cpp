@@ -30,12 +30,6 @@ bool may_refer(std::span<const Token> tokens) {
     return false;
 }
 
-// The range of a word's value: "P1000" → "1000", "P #1" → "#1".
-ast::Range value_range(const ast::SyntaxTree& tree, const Token& t) {
-    const std::string_view value = tree.value_spelling(t);
-    return {t.begin + t.length - static_cast<std::uint32_t>(value.size()), t.begin + t.length};
-}
-
 std::optional<std::int64_t> plain_number(const ast::SyntaxTree& tree, const Token& t) {
     const auto v = ast::integer_value(tree, t);
     if (!v || *v < 0) return std::nullopt;
@@ -103,7 +97,7 @@ private:
         Reference r = base(kind, *w);
         r.code_token = static_cast<std::int32_t>(c.token);
         r.letter = letter;
-        r.range = value_range(tree_, t);
+        r.range = tree_.value_range(t);
         r.value = plain_number(tree_, t);
         return r;
     }

@@ -159,7 +159,7 @@ inline bool code_parameter(const BlockContext& b, char letter) {
 inline ast::Range block_text_range(const BlockContext& b) {
     const auto tokens = b.view.tokens();
     if (tokens.empty()) return b.view.range();
-    return {tokens.front().begin, tokens.back().begin + tokens.back().length};
+    return {tokens.front().begin, b.tree().end(tokens.back())};
 }
 
 // The constant value of an expression node (a number, or a bracket around one), if it is one.

@@ -27,7 +27,7 @@ public:
         for (const ast::CodeRef& c : b.g) {
             if (c.info || !c.key) continue;
             const ast::Token& t = b.token(c.token);
-            out.report(t.range(), fmt::format("{} is not a code of {} ({})", b.tree().spelling(t), b.file.dialect.id,
+            out.report(b.tree().range(t), fmt::format("{} is not a code of {} ({})", b.tree().spelling(t), b.file.dialect.id,
                                               b.file.dialect.alarms.name_of(alarms::improper_command)),
                        "check the code number, or choose the dialect of the machine (--dialect)");
         }
@@ -50,11 +50,11 @@ public:
             if (!number || std::find(seen_.begin(), seen_.end(), *number) != seen_.end()) continue;
             const ast::Token& t = b.token(c.token);
             if (!machine_list_) {
-                note(b.file, t.range(), out);
+                note(b.file, b.tree().range(t), out);
                 return;
             }
             seen_.push_back(*number);
-            out.report(t.range(), fmt::format("{} is neither in the table of {} nor among the machine's M codes (machine file m_codes)",
+            out.report(b.tree().range(t), fmt::format("{} is neither in the table of {} nor among the machine's M codes (machine file m_codes)",
                                               b.tree().spelling(t), b.file.dialect.id),
                        "check the code number, or add it to the machine file's m_codes");
         }
@@ -83,7 +83,7 @@ private:
             if (file.tree().blocks[i].kind != ast::BlockKind::code) continue;
             file.typed.block(i).collect_codes(g, m);
             for (const ast::CodeRef& c : m)
-                if (const auto number = unlisted(c, file.setup.m_codes)) first.try_emplace(*number, file.tree().tokens[c.token].range());
+                if (const auto number = unlisted(c, file.setup.m_codes)) first.try_emplace(*number, file.tree().range(file.tree().tokens[c.token]));
         }
         std::string codes;
         for (const auto& [number, where] : first) codes += fmt::format("{}M{:02}", codes.empty() ? "" : ", ", number);
@@ -113,7 +113,7 @@ public:
             const dialects::Availability a = c.info->availability;
             if (a != dialects::Availability::not_fitted && a != dialects::Availability::optional) return;
             const ast::Token& t = b.token(c.token);
-            out.report(t.range(), fmt::format("{} ({}) is {} on this control", b.tree().spelling(t), c.info->en,
+            out.report(b.tree().range(t), fmt::format("{} ({}) is {} on this control", b.tree().spelling(t), c.info->en,
                                               a == dialects::Availability::optional ? "an option" : "not fitted"),
                        c.info->availability_note.empty() ? "remove it or use a machine that has the option"
                                                          : c.info->availability_note);
@@ -149,7 +149,7 @@ public:
             if (t.kind != ast::TokenKind::word || t.role() != ast::Role::parameter) continue;
             if (kFreeLetters.find(t.letter) != std::string_view::npos || letters.count(t.letter)) continue;
             const ast::Token& code = b.token(b.g.front().token);
-            out.report(t.range(), fmt::format("{} does not take the word {}", b.tree().spelling(code), t.letter),
+            out.report(b.tree().range(t), fmt::format("{} does not take the word {}", b.tree().spelling(code), t.letter),
                        "remove the word or move it to a block of its own");
         }
     }
@@ -170,7 +170,7 @@ public:
             const ast::Token& t = b.token(c.token);
             for (const std::string& w : c.info->required)
                 if (w.size() == 1 && !block_has_letter(b, w[0]))
-                    out.report(t.range(), fmt::format("{} needs the word {}", b.tree().spelling(t), w),
+                    out.report(b.tree().range(t), fmt::format("{} needs the word {}", b.tree().spelling(t), w),
                                fmt::format("add {} to the block", w));
             for (const auto& any : c.info->required_one_of) {
                 bool found = false;
@@ -180,7 +180,7 @@ public:
                     names += (names.empty() ? "" : ", ") + w;
                 }
                 if (!found && !any.empty())
-                    out.report(t.range(), fmt::format("{} needs one of {}", b.tree().spelling(t), names),
+                    out.report(b.tree().range(t), fmt::format("{} needs one of {}", b.tree().spelling(t), names),
                                fmt::format("add one of {} to the block", names));
             }
         });
@@ -197,7 +197,7 @@ public:
                 const dialects::CodeInfo* y = b.g[j].info;
                 if (!x || !y || x == y || x->group.empty() || x->group == "00" || x->group != y->group) continue;
                 const ast::Token& t = b.token(b.g[i].token);
-                out.report(t.range(),
+                out.report(b.tree().range(t),
                            fmt::format("{} and {} are both in modal group {}: only the last one acts",
                                        b.tree().spelling(b.token(b.g[j].token)), b.tree().spelling(t), x->group),
                            "keep one of them");
@@ -215,7 +215,7 @@ public:
         // dialect's limit the machine's (issue 15).
         if (!b.file.setup.machine_given || limit <= 0 || static_cast<int>(b.m.size()) <= limit) return;
         const ast::Token& t = b.token(b.m[static_cast<std::size_t>(limit)].token);
-        out.report(t.range(), fmt::format("{} M codes in one block; this control takes {}", b.m.size(), limit),
+        out.report(b.tree().range(t), fmt::format("{} M codes in one block; this control takes {}", b.m.size(), limit),
                    "split the M codes over several blocks");
     }
 };
@@ -233,7 +233,7 @@ public:
 private:
     static ast::Range trim(const BlockContext& b) {
         const auto tokens = b.view.tokens();
-        return {tokens.front().begin, tokens.back().begin + tokens.back().length};
+        return {tokens.front().begin, b.tree().end(tokens.back())};
     }
 };
 
@@ -255,7 +255,7 @@ public:
             }
             if (others.empty()) continue;
             const ast::Token& t = b.token(c.token);
-            out.report(t.range(), fmt::format("{} is {} here but means something else elsewhere ({})",
+            out.report(b.tree().range(t), fmt::format("{} is {} here but means something else elsewhere ({})",
                                               b.tree().spelling(t), c.info->function, others),
                        "convert with kerf convert, which knows the tables");
         }

@@ -52,7 +52,7 @@ public:
             const bool inch = !rotary && inch_block(b);
             const char* unit = rotary ? "°" : inch ? " in" : " mm";
             const double increment = rotary ? b.file.setup.increment_deg() : b.file.setup.increment(inch);
-            out.report(t.range(),
+            out.report(b.tree().range(t),
                        fmt::format("'{}' has no decimal point: the control reads {} increments = {:g}{}, not {:g}{}",
                                    spelling, value, value * increment, unit, value, unit),
                        fmt::format("write '{}.' if {:g}{} is meant", spelling, value, unit))
@@ -90,16 +90,16 @@ public:
 
 private:
     static void report(const BlockContext& b, const ast::Token& a, const ast::Token& t, Reporter& out) {
-        Finding& f = out.report(t.range(),
+        Finding& f = out.report(b.tree().range(t),
                                 fmt::format("'{}' repeats address {} of '{}' in the same block", b.tree().spelling(t), t.letter,
                                             b.tree().spelling(a)),
                                 "keep one of the two words");
-        f.related.push_back({a.range(), fmt::format("the first {} word", t.letter)});
+        f.related.push_back({b.tree().range(a), fmt::format("the first {} word", t.letter)});
         if (!a.is_number() || !t.is_number() || b.tree().number_value(a) != b.tree().number_value(t)) return;
         // Same value twice: dropping the second word (and the blanks before it) changes nothing.
         std::uint32_t begin = t.begin;
-        while (begin > a.begin + a.length && (b.tree().text[begin - 1] == ' ' || b.tree().text[begin - 1] == '\t')) --begin;
-        f.fix = Fix{"remove the repeated word", {{{begin, t.begin + t.length}, ""}}};
+        while (begin > b.tree().end(a) && (b.tree().text[begin - 1] == ' ' || b.tree().text[begin - 1] == '\t')) --begin;
+        f.fix = Fix{"remove the repeated word", {{{begin, b.tree().end(t)}, ""}}};
     }
 };
 
@@ -123,10 +123,10 @@ public:
             const bool integer_address = std::string_view("MTNOLHD").find(t.letter) != std::string_view::npos &&
                                          t.role() != ast::Role::axis_incremental && !code_parameter(b, t.letter);
             if (!(integer_address || (t.letter == 'G' && spelling.ends_with('.')))) continue;
-            Finding& f = out.report(t.range(), fmt::format("'{}': address {} takes a whole number", spelling, t.letter),
+            Finding& f = out.report(b.tree().range(t), fmt::format("'{}': address {} takes a whole number", spelling, t.letter),
                                     "remove the decimal point");
             if (spelling.ends_with('.'))
-                f.fix = Fix{"remove the decimal point", {{{t.begin + t.length - 1, t.begin + t.length}, ""}}};
+                f.fix = Fix{"remove the decimal point", {{{b.tree().end(t) - 1, b.tree().end(t)}, ""}}};
         }
     }
 };
@@ -137,8 +137,8 @@ public:
         if (program != 0 || file.tree().tokens.empty()) return;
         const ast::Token& t = file.tree().tokens[0];
         if (t.kind != ast::TokenKind::bom) return;
-        out.report(t.range(), "the file starts with a UTF-8 byte order mark", "save the file without BOM")
-            .fix = Fix{"remove the byte order mark", {{t.range(), ""}}};
+        out.report(file.tree().range(t), "the file starts with a UTF-8 byte order mark", "save the file without BOM")
+            .fix = Fix{"remove the byte order mark", {{file.tree().range(t), ""}}};
     }
     void block(const BlockContext&, Reporter&) override {}
 };
@@ -161,7 +161,7 @@ public:
         for_each_comment(file, program, [&](const ast::Token& t) {
             std::string_view s = file.tree().spelling(t);
             if (s.find_first_not_of("() \t") != std::string_view::npos) return;
-            out.report(t.range(), "empty comment", "remove it").fix = Fix{"remove the empty comment", {{t.range(), ""}}};
+            out.report(file.tree().range(t), "empty comment", "remove it").fix = Fix{"remove the empty comment", {{file.tree().range(t), ""}}};
         });
     }
     void block(const BlockContext&, Reporter&) override {}
@@ -174,7 +174,7 @@ public:
             const std::string_view s = file.tree().spelling(t);
             for (const char c : s)
                 if (static_cast<unsigned char>(c) >= 0x80) {
-                    out.report(t.range(), "comment with characters outside ASCII",
+                    out.report(file.tree().range(t), "comment with characters outside ASCII",
                                "write comments in ASCII for controls that read ISO/EIA tape code");
                     return;
                 }

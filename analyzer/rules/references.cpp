@@ -45,7 +45,7 @@ std::vector<Target> local_targets(const BlockContext& b) {
 ast::Range block_range(const FileContext& file, std::uint32_t block) {
     const auto tokens = file.tree().block_tokens(block);
     if (tokens.empty()) return file.tree().block_range(block);
-    return {tokens.front().begin, tokens.back().begin + tokens.back().length};
+    return {tokens.front().begin, file.tree().end(tokens.back())};
 }
 
 // The labels of the block's program: built on the first jump that needs them (most CAM programs
@@ -56,8 +56,8 @@ class LabelNotFound : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         for (const Target& t : local_targets(b))
-            if (labels(b).count(t.label) == 0 && !out.drop_if_full(b.token(t.token).range()))
-                out.report(b.token(t.token).range(), fmt::format("no block N{} in this program", t.label),
+            if (labels(b).count(t.label) == 0 && !out.drop_if_full(b.tree().range(b.token(t.token))))
+                out.report(b.tree().range(b.token(t.token)), fmt::format("no block N{} in this program", t.label),
                            fmt::format("add N{} to the block meant, or correct the number", t.label));
     }
 };
@@ -72,8 +72,8 @@ public:
         if (b.file.dialect.lexical.label_search == dialects::LabelSearch::forward) return;
         for (const Target& t : local_targets(b))
             if (const int n = labels(b).count(t.label); n > 1) {
-                if (out.drop_if_full(b.token(t.token).range())) continue;
-                Finding& f = out.report(b.token(t.token).range(),
+                if (out.drop_if_full(b.tree().range(b.token(t.token)))) continue;
+                Finding& f = out.report(b.tree().range(b.token(t.token)),
                                         fmt::format("N{} is on {} blocks of this program: the control jumps to the first one", t.label, n),
                                         "give each target block a number of its own");
                 if (!out.kept(f)) continue;   // past the rule's cap: the related blocks would go nowhere
@@ -116,7 +116,7 @@ public:
             if (reported_.count(call.number) || b.file.program_exists(call.number)) continue;
             if (b.file.resident && b.file.resident(call.number)) continue;
             reported_.insert(call.number);
-            out.report(b.token(call.token).range(),
+            out.report(b.tree().range(b.token(call.token)),
                        fmt::format("program O{:04} is not in this file, the files of its folder or the library folders ({})", call.number,
                                    b.file.dialect.alarms.name_of(alarms::program_not_found)),
                        fmt::format("put O{:04} into a file of its folder, name the folder that holds it in .kerf.toml "
@@ -144,7 +144,7 @@ public:
             if (files.size() < 2) continue;
             std::string others;
             for (std::size_t i = 1; i < files.size(); ++i) others += (i > 1 ? ", " : "") + files[i];
-            out.report(b.token(call.token).range(),
+            out.report(b.tree().range(b.token(call.token)),
                        fmt::format("program O{:04} is in {} files: the dry run takes {}, also in {}", call.number, files.size(),
                                    files.front(), others),
                        "keep one copy of the program, or give the copies their own numbers");
@@ -181,31 +181,31 @@ public:
     void end_program(const FileContext& file, std::size_t, Reporter& out) override {
         if (depth_) return;
         for (const auto& [token, label] : open_)
-            out.report(file.tree().tokens[token].range(), fmt::format("DO {} has no END {} ({})", label, label, file.dialect.alarms.name_of(alarms::loop_nesting)),
+            out.report(file.tree().range(file.tree().tokens[token]), fmt::format("DO {} has no END {} ({})", label, label, file.dialect.alarms.name_of(alarms::loop_nesting)),
                        fmt::format("close the loop with END {}", label));
     }
 
 private:
     void open(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
         if (!depth_ && (label < 1 || label > 3))
-            out.report(b.token(s).range(), fmt::format("DO {}: the loop number must be 1, 2 or 3 ({})", label, b.file.dialect.alarms.name_of(alarms::loop_number)),
+            out.report(b.tree().range(b.token(s)), fmt::format("DO {}: the loop number must be 1, 2 or 3 ({})", label, b.file.dialect.alarms.name_of(alarms::loop_number)),
                        "number loops 1 to 3");
         open_.push_back({s, label});
         if (depth_ && open_.size() == 4)
-            out.report(b.token(s).range(), fmt::format("WHILE/DO nested deeper than 3 ({})", b.file.dialect.alarms.name_of(alarms::loop_nesting)),
+            out.report(b.tree().range(b.token(s)), fmt::format("WHILE/DO nested deeper than 3 ({})", b.file.dialect.alarms.name_of(alarms::loop_nesting)),
                        "move the inner loop into a macro (G65) or a subprogram");
     }
     void close(const BlockContext& b, std::uint32_t s, int label, Reporter& out) {
         for (std::size_t i = open_.size(); i-- > 0;)
             if (open_[i].second == label) {
                 if (!depth_ && i + 1 != open_.size())
-                    out.report(b.token(s).range(), fmt::format("END {} closes DO {} before the inner loops end", label, label),
+                    out.report(b.tree().range(b.token(s)), fmt::format("END {} closes DO {} before the inner loops end", label, label),
                                "close the inner loops first");
                 open_.resize(i);
                 return;
             }
         if (!depth_)
-            out.report(b.token(s).range(), fmt::format("END {} without its DO ({})", label, b.file.dialect.alarms.name_of(alarms::loop_nesting)),
+            out.report(b.tree().range(b.token(s)), fmt::format("END {} without its DO ({})", label, b.file.dialect.alarms.name_of(alarms::loop_nesting)),
                        fmt::format("add WHILE [...] DO {} before it, or remove it", label));
     }
     bool depth_;
@@ -240,7 +240,7 @@ public:
         const ast::Program& p = programs[program];
         if (ended_ || !code_ || (!p.number && program + 1 < programs.size())) return;   // a header before O
         if (fragment(file, p)) return;
-        const ast::Range at = p.o_token >= 0 ? file.tree().tokens[static_cast<std::size_t>(p.o_token)].range()
+        const ast::Range at = p.o_token >= 0 ? file.tree().range(file.tree().tokens[static_cast<std::size_t>(p.o_token)])
                                              : trimmed_block(file, p.first_block);
         out.report(at, p.number ? fmt::format("program O{:04} has no M30, M02 or M99", *p.number)
                                 : std::string("the program has no M30, M02 or M99"),
@@ -380,13 +380,13 @@ public:
     void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
         const ast::Program& p = file.typed.programs()[program];
         if (!p.number || p.o_token < 0) return;
-        const ast::Range at = file.tree().tokens[static_cast<std::size_t>(p.o_token)].range();
+        const ast::Range at = file.tree().range(file.tree().tokens[static_cast<std::size_t>(p.o_token)]);
         for (std::size_t i = 0; i < program; ++i)
             if (file.typed.programs()[i].number == p.number) {
                 Finding& f = out.report(at, fmt::format("program O{:04} is defined twice in this file: calls reach the first one", *p.number),
                                         "renumber one of them");
                 const std::int32_t first = file.typed.programs()[i].o_token;
-                if (first >= 0) f.related.push_back({file.tree().tokens[static_cast<std::size_t>(first)].range(), fmt::format("the first O{:04}", *p.number)});
+                if (first >= 0) f.related.push_back({file.tree().range(file.tree().tokens[static_cast<std::size_t>(first)]), fmt::format("the first O{:04}", *p.number)});
                 return;
             }
     }
@@ -398,7 +398,7 @@ public:
     void begin_program(const FileContext& file, std::size_t program, Reporter& out) override {
         const ast::Program& p = file.typed.programs()[program];
         if (!p.number || p.o_token < 0 || *p.number < 8000 || *p.number > 9999) return;
-        out.report(file.tree().tokens[static_cast<std::size_t>(p.o_token)].range(),
+        out.report(file.tree().range(file.tree().tokens[static_cast<std::size_t>(p.o_token)]),
                    fmt::format("O{:04} is in the range {} that the control can protect from editing and loading",
                                *p.number, *p.number < 9000 ? "O8000-O8999" : "O9000-O9999"),
                    "use a number below O8000 unless this is a protected macro on purpose");

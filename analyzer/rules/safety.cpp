@@ -31,7 +31,7 @@ public:
         if (b.has_function(fn::coordinate_system_setting) && number_word(b, 'S')) clamped_ = true;
         const ast::Token* css = code_with(b, fn::css_on);
         if (!css || clamped_ || b.has_function(fn::coordinate_system_setting)) return;
-        out.report(css->range(), "constant surface speed without a spindle clamp (G50 S) before it",
+        out.report(b.tree().range(*css), "constant surface speed without a spindle clamp (G50 S) before it",
                    "program G50 S<max rpm> in a block before G96: near X0 the rpm climbs to the machine limit");
         clamped_ = true;   // once per file
     }
@@ -45,7 +45,7 @@ class ThreadInCss : public StaticCheck {
 public:
     void block(const BlockContext& b, Reporter& out) override {
         if (!threading(b) || !active(b, fn::css_on) || b.has_function(fn::css_off)) return;
-        out.report(b.token(b.g.front().token).range(), "threading in constant surface speed mode (G96)",
+        out.report(b.tree().range(b.token(b.g.front().token)), "threading in constant surface speed mode (G96)",
                    "switch to G97 with a fixed rpm before threading: the lead needs a constant speed per pass");
     }
 };
@@ -59,7 +59,7 @@ public:
         for (const ast::CodeRef& c : b.g) {
             if (!c.info || !(function_.empty() ? comp_on(*c.info) : c.info->function == function_)) continue;
             if (!circular_motion(b)) return;
-            out.report(b.token(c.token).range(),
+            out.report(b.tree().range(b.token(c.token)),
                        fmt::format("{} in an arc block: compensation must start and end on G00 or G01",
                                    b.tree().spelling(b.token(c.token))),
                        "start or cancel the compensation on a straight move before or after the arc");
@@ -99,13 +99,13 @@ public:
         // T0000 written out in the mmnn form (corpus 1002.NC, MANIFEST): station 00, offset 00. A
         // short T0 is the usual offset cancel at the end of a program and is left alone.
         if (t->value == 0 && spelling.size() == 5) {
-            out.report(b.token(t->token).range(),
+            out.report(b.tree().range(b.token(t->token)),
                        fmt::format("{} selects no tool station and no offset: what follows runs without geometry or wear offset", spelling),
                        "write the tool and its offset (T0101); cancel an offset with T0 at the end only");
             return;
         }
         if (t->value < 100 || t->value > 9999 || static_cast<std::int64_t>(t->value) % 100 != 0) return;
-        out.report(b.token(t->token).range(),
+        out.report(b.tree().range(b.token(t->token)),
                    fmt::format("{} selects tool {} with offset 00: no geometry or wear offset", b.tree().spelling(b.token(t->token)),
                                static_cast<std::int64_t>(t->value) / 100),
                    fmt::format("write T{:02}{:02} (the offset of the tool)", static_cast<std::int64_t>(t->value) / 100,
@@ -138,7 +138,7 @@ public:
         const auto h = number_word(b, 'H');
         const std::optional<std::int64_t> length = h ? ast::truncated_integer(h->value) : std::nullopt;
         if (!length || !spindle_ || *length == *spindle_) return;
-        out.report(b.token(h->token).range(),
+        out.report(b.tree().range(b.token(h->token)),
                    fmt::format("H{} is not the length of the tool T{} in the spindle", *length, *spindle_),
                    fmt::format("write H{} unless the offset numbering differs on purpose", *spindle_));
     }
@@ -228,7 +228,7 @@ public:
             const ast::Token& t = b.token(a.token);
             // A table turning to B0 on its way home moves no tool through the part (O09994 "G28 B0.").
             if (const auto axis = interpreter::axis_of_letter(t.letter); axis && b.file.setup.rotary[static_cast<std::size_t>(*axis)]) continue;
-            out.report(t.range(),
+            out.report(b.tree().range(t),
                        fmt::format("G28 in absolute mode moves first to the work position {}: through the part if it is in the way",
                                    b.tree().spelling(t)),
                        b.file.dialect.lexical.incremental_letters.empty()
@@ -247,7 +247,7 @@ public:
         if (!b.file.setup.machine_given || limit <= 0) return;
         const auto s = number_word(b, 'S');   // first: most blocks have no S
         if (!s || s->value <= limit || active(b, fn::css_on) || b.has_function(fn::coordinate_system_setting)) return;
-        out.report(b.token(s->token).range(), fmt::format("S{:g} rpm is over the machine's spindle limit of {:g} rpm", s->value, limit),
+        out.report(b.tree().range(b.token(s->token)), fmt::format("S{:g} rpm is over the machine's spindle limit of {:g} rpm", s->value, limit),
                    "lower the speed; the control clamps it or alarms");
     }
 };
@@ -261,10 +261,10 @@ public:
             if (c.info->function == fn::dwell)
                 for (const char letter : {'X', 'U', 'P'})
                     if (const auto w = number_word(b, letter); w && w->value < 0)
-                        out.report(b.token(w->token).range(), "negative dwell time", "a dwell time is 0 or more");
+                        out.report(b.tree().range(b.token(w->token)), "negative dwell time", "a dwell time is 0 or more");
             if (c.info->has(dialects::traits::peck))
                 if (const auto q = number_word(b, 'Q'); q && q->value <= 0)
-                    out.report(b.token(q->token).range(), fmt::format("peck depth Q{:g}: must be more than 0", q->value),
+                    out.report(b.tree().range(b.token(q->token)), fmt::format("peck depth Q{:g}: must be more than 0", q->value),
                                "give the depth of one peck as a positive Q");
         }
     }

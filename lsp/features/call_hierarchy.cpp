@@ -17,7 +17,7 @@ json::object item(const ProgramTarget& t) {
     std::string comment;
     for (const IndexedProgram& i : ProjectSeam::programs_of(doc.path(), doc.typed()))
         if (i.program_index == t.program) comment = i.comment;
-    const ast::Range selection = p.o_token >= 0 ? doc.tree().tokens[static_cast<std::size_t>(p.o_token)].range() : words_range(doc.tree(), p.first_block);
+    const ast::Range selection = p.o_token >= 0 ? doc.tree().range(doc.tree().tokens[static_cast<std::size_t>(p.o_token)]) : words_range(doc.tree(), p.first_block);
     return {{"name", fmt::format("O{:04}", t.number)},
             {"kind", symbol_kind::function},
             {"detail", comment.empty() ? doc.path().filename().string() : comment},

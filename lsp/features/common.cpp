@@ -19,7 +19,7 @@ ast::Range words_range(const ast::SyntaxTree& tree, std::uint32_t block) {
         while (r.end > r.begin && (tree.text[r.end - 1] == '\n' || tree.text[r.end - 1] == '\r')) --r.end;
         return r;
     }
-    return {tokens.front().begin, tokens.back().begin + tokens.back().length};
+    return {tokens.front().begin, tree.end(tokens.back())};
 }
 
 ast::Range program_range(const Document& doc, std::uint32_t program) {
@@ -34,11 +34,6 @@ ast::Range program_range(const Document& doc, std::uint32_t program) {
         }
     }
     return {first.begin, std::max(first.begin, end)};
-}
-
-ast::Range value_range(const ast::SyntaxTree& tree, const ast::Token& t) {
-    const std::string_view value = tree.value_spelling(t);
-    return {t.begin + t.length - static_cast<std::uint32_t>(value.size()), t.begin + t.length};
 }
 
 std::optional<std::uint32_t> n_word(const ast::SyntaxTree& tree, std::uint32_t block) {
@@ -57,7 +52,7 @@ std::optional<Reference> reference_at(const Document& doc, std::uint32_t offset)
     const auto program = references::program_of_block(doc.typed(), block);
     if (!program) return std::nullopt;
     for (Reference& r : references::block_references(doc.typed(), *program, block)) {
-        const bool hit = r.kind == Kind::goto_label ? touches(r.range, offset) : touches(doc.tree().tokens[r.token].range(), offset);
+        const bool hit = r.kind == Kind::goto_label ? touches(r.range, offset) : touches(doc.tree().range(doc.tree().tokens[r.token]), offset);
         if (hit) return std::move(r);
     }
     return std::nullopt;

@@ -25,8 +25,6 @@ std::optional<references::Reference> reference_at(const Document& doc, std::uint
 std::optional<std::uint32_t> label_word_at(const Document& doc, std::uint32_t offset);
 // The O word the cursor is on: its program.
 std::optional<std::uint32_t> program_word_at(const Document& doc, std::uint32_t offset);
-// The value range of a word ("1000" of "P1000").
-ast::Range value_range(const ast::SyntaxTree& tree, const ast::Token& t);
 // The first N word of a block (its label), if any.
 std::optional<std::uint32_t> n_word(const ast::SyntaxTree& tree, std::uint32_t block);
 

@@ -9,12 +9,12 @@ namespace kerf::lsp {
 json::object label_location(const LabelTarget& t) {
     const ast::SyntaxTree& tree = t.doc->tree();
     const auto n = n_word(tree, t.block);
-    return location_json(*t.doc, n ? tree.tokens[*n].range() : words_range(tree, t.block));
+    return location_json(*t.doc, n ? tree.range(tree.tokens[*n]) : words_range(tree, t.block));
 }
 
 json::object program_location(const ProgramTarget& t) {
     const ast::Program& p = t.doc->typed().programs()[t.program];
-    const ast::Range r = p.o_token >= 0 ? t.doc->tree().tokens[static_cast<std::size_t>(p.o_token)].range()
+    const ast::Range r = p.o_token >= 0 ? t.doc->tree().range(t.doc->tree().tokens[static_cast<std::size_t>(p.o_token)])
                                         : words_range(t.doc->tree(), p.first_block);
     return location_json(*t.doc, r);
 }
@@ -33,7 +33,7 @@ json::value definition(const Snapshot& s, ast::Position at) {
         if (out.size() == 1) return out.front();
         return out;
     }
-    if (const auto block = label_word_at(doc, offset)) return location_json(doc, doc.tree().tokens[*n_word(doc.tree(), *block)].range());
+    if (const auto block = label_word_at(doc, offset)) return location_json(doc, doc.tree().range(doc.tree().tokens[*n_word(doc.tree(), *block)]));
     if (const auto p = program_word_at(doc, offset)) return program_location({s.doc, *p, doc.typed().programs()[*p].number.value_or(0)});
     return nullptr;
 }

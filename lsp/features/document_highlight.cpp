@@ -50,7 +50,7 @@ json::array codes(const Document& doc, std::uint32_t token) {
     for (std::uint32_t i = first; i < last && out.size() < kMaxHighlights; ++i) {
         const ast::Token& o = tree.tokens[i];
         if (o.kind == ast::TokenKind::word && o.letter == t.letter && o.role() == t.role() && o.is_number() && tree.number_value(o) == value)
-            out.push_back(highlight(doc, o.range(), kText));
+            out.push_back(highlight(doc, doc.tree().range(o), kText));
     }
     return out;
 }
@@ -66,7 +66,7 @@ json::value document_highlight(const Snapshot& s, ast::Position at) {
         const LabelTarget& t = *named.label;
         if (references::find_label(doc.typed(), t.program, t.label) == t.block) {
             const auto n = n_word(doc.tree(), t.block);
-            if (n) out.push_back(highlight(doc, doc.tree().tokens[*n].range(), kWrite));
+            if (n) out.push_back(highlight(doc, doc.tree().range(doc.tree().tokens[*n]), kWrite));
             for (const references::Reference& r : references::file_references(doc.typed())) {
                 if (!references::is_label(r.kind) || r.value != t.label) continue;
                 const auto scope = references::label_scope(doc.typed(), r);
@@ -80,7 +80,7 @@ json::value document_highlight(const Snapshot& s, ast::Position at) {
         const ProgramTarget& t = *named.program;
         if (t.doc->path() == doc.path()) {
             const ast::Program& p = doc.typed().programs()[t.program];
-            if (p.o_token >= 0) out.push_back(highlight(doc, doc.tree().tokens[static_cast<std::size_t>(p.o_token)].range(), kWrite));
+            if (p.o_token >= 0) out.push_back(highlight(doc, doc.tree().range(doc.tree().tokens[static_cast<std::size_t>(p.o_token)]), kWrite));
         }
         for (const references::Reference& r : references::file_references(doc.typed())) {
             if (references::is_label(r.kind) || r.value != t.number) continue;

@@ -187,7 +187,7 @@ json::value hover(const Snapshot& s, ast::Position at) {
         range = v->second;
     } else if (token) {
         const ast::Token& t = doc.tree().tokens[*token];
-        range = t.range();
+        range = doc.tree().range(t);
         if (const dialects::CodeInfo* info = code_of(doc, t)) {
             parts.push_back(code_text(doc.settings(), *info));
         } else if (t.kind == ast::TokenKind::word) {

@@ -61,7 +61,7 @@ void refuse_computed(const Document& doc, std::int64_t label) {
         if (!references::is_label(r.kind)) continue;
         if (!r.value)
             refuse(fmt::format("cannot rename N{}: '{}' at {} is computed, so the block it jumps to is known only at run time",
-                               label, doc.tree().slice(r.kind == references::Kind::goto_label ? r.range : doc.tree().tokens[r.token].range()),
+                               label, doc.tree().slice(r.kind == references::Kind::goto_label ? r.range : doc.tree().range(doc.tree().tokens[r.token])),
                                where(doc, r.range.begin)));
     }
 }
@@ -78,7 +78,7 @@ json::value rename_label(const Snapshot& s, const LabelTarget& t, std::int64_t n
     refuse_computed(doc, t.label);
     Edits edits;
     const ast::Token& n = doc.tree().tokens[*n_word(doc.tree(), t.block)];
-    add(edits, doc, value_range(doc.tree(), n), same_width(doc.tree().value_spelling(n), number));
+    add(edits, doc, doc.tree().value_range(n), same_width(doc.tree().value_spelling(n), number));
     for (const CallSite& c : label_references(s, t)) {
         if (c.ref.kind == references::Kind::return_label && references::label_scope(c.doc->typed(), c.ref).programs.size() > 1)
             refuse(fmt::format("cannot rename N{}: M99 P{} at {} returns to several programs of the file", t.label, t.label,
@@ -102,7 +102,7 @@ json::value rename_program(const Snapshot& s, const ProgramTarget& t, std::int64
     if (p.o_token < 0) refuse("the program has no O word to rename");
     Edits edits;
     const ast::Token& o = doc.tree().tokens[static_cast<std::size_t>(p.o_token)];
-    add(edits, doc, value_range(doc.tree(), o), same_width(doc.tree().value_spelling(o), number));
+    add(edits, doc, doc.tree().value_range(o), same_width(doc.tree().value_spelling(o), number));
     for (const CallSite& c : call_sites(s, t)) {
         const auto text = references::respell(c.doc->tree(), c.ref, number);
         if (!text)
@@ -126,11 +126,11 @@ json::value prepare_rename(const Snapshot& s, ast::Position at) {
         if (named.label) placeholder = std::to_string(named.label->label);
         else if (named.program) placeholder = std::to_string(named.program->number);
     } else if (named.label) {
-        range = value_range(doc.tree(), doc.tree().tokens[*n_word(doc.tree(), named.label->block)]);
+        range = doc.tree().value_range(doc.tree().tokens[*n_word(doc.tree(), named.label->block)]);
         placeholder = std::to_string(named.label->label);
     } else if (named.program) {
         const ast::Program& p = doc.typed().programs()[named.program->program];
-        range = value_range(doc.tree(), doc.tree().tokens[static_cast<std::size_t>(p.o_token)]);
+        range = doc.tree().value_range(doc.tree().tokens[static_cast<std::size_t>(p.o_token)]);
         placeholder = std::to_string(named.program->number);
     }
     if (placeholder.empty()) return nullptr;

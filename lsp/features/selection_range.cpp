@@ -13,7 +13,7 @@ json::value selection_ranges(const Snapshot& s, const std::vector<ast::Position>
         std::vector<ast::Range> chain;   // innermost first
         if (doc.refused().empty() && doc.tree().block_count() > 0) {
             const std::uint32_t block = doc.block_at(offset);
-            if (const auto t = doc.token_at(offset)) chain.push_back(doc.tree().tokens[*t].range());
+            if (const auto t = doc.token_at(offset)) chain.push_back(doc.tree().range(doc.tree().tokens[*t]));
             const ast::Range words = words_range(doc.tree(), block);
             if (chain.empty() || !(chain.back() == words)) chain.push_back(words);
             if (const auto program = references::program_of_block(doc.typed(), block)) {

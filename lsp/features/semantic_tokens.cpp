@@ -150,12 +150,12 @@ void block_tokens(const Document& doc, std::uint32_t block, Encoder& out) {
                     out.add(t.begin, t.begin + 1, type, modifiers);
                     scan_macro(out, tree.spelling(t).substr(1), t.begin + 1);
                 } else {
-                    out.add(t.begin, t.begin + t.length, type, modifiers);
+                    out.add(t.begin, tree.end(t), type, modifiers);
                 }
                 break;
             }
-            case ast::TokenKind::comma_word: out.add(t.begin, t.begin + t.length, parameter, base); break;
-            case ast::TokenKind::comment: out.add(t.begin, t.begin + t.length, comment, base); break;
+            case ast::TokenKind::comma_word: out.add(t.begin, tree.end(t), parameter, base); break;
+            case ast::TokenKind::comment: out.add(t.begin, tree.end(t), comment, base); break;
             case ast::TokenKind::statement: {
                 // DPRNT[...] / BPRNT[...] hold text and formats, not an expression.
                 std::string head(tree.spelling(t).substr(0, 5));
@@ -165,8 +165,8 @@ void block_tokens(const Document& doc, std::uint32_t block, Encoder& out) {
                 break;
             }
             case ast::TokenKind::block_delete:
-            case ast::TokenKind::percent: out.add(t.begin, t.begin + t.length, keyword, base); break;
-            case ast::TokenKind::eob: out.add(t.begin, t.begin + t.length, operator_, base); break;
+            case ast::TokenKind::percent: out.add(t.begin, tree.end(t), keyword, base); break;
+            case ast::TokenKind::eob: out.add(t.begin, tree.end(t), operator_, base); break;
             default: break;
         }
     }

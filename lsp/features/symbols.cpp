@@ -62,7 +62,7 @@ json::value document_symbols(const Snapshot& s) {
     for (std::uint32_t p = 0; p < programs.size(); ++p) {
         const ast::Program& prog = programs[p];
         const ast::Range range = program_range(doc, p);
-        const ast::Range selection = prog.o_token >= 0 ? tree.tokens[static_cast<std::size_t>(prog.o_token)].range() : words_range(tree, prog.first_block);
+        const ast::Range selection = prog.o_token >= 0 ? tree.range(tree.tokens[static_cast<std::size_t>(prog.o_token)]) : words_range(tree, prog.first_block);
         std::string comment;
         for (const IndexedProgram& i : indexed)
             if (i.program_index == p) comment = i.comment;
@@ -79,11 +79,11 @@ json::value document_symbols(const Snapshot& s) {
                 const auto v = ast::integer_value(tree, tree.tokens[*n]);
                 if (v && (labels <= kAllLabelsUpTo || jumped.count(*v)) && listed.insert(*v).second)
                     children.push_back(symbol(doc, fmt::format("N{}", *v), std::string(clip(tree.slice(words), 60)),
-                                              jumped.count(*v) ? symbol_kind::key : symbol_kind::number, words, tree.tokens[*n].range()));
+                                              jumped.count(*v) ? symbol_kind::key : symbol_kind::number, words, tree.range(tree.tokens[*n])));
             }
             if (tool_change(view)) {
                 const auto t = view.word('T');
-                const ast::Range name_range = t ? tree.tokens[*t].range() : words;
+                const ast::Range name_range = t ? tree.range(tree.tokens[*t]) : words;
                 std::string detail;
                 for (const std::uint32_t c : view.comments()) detail = std::string(tree.spelling(tree.tokens[c]));
                 children.push_back(symbol(doc, t ? std::string(tree.spelling(tree.tokens[*t])) : std::string("tool change"), detail,

@@ -92,7 +92,7 @@ void check_file(const fs::path& path, const Named& named, std::size_t& refused) 
     for (std::size_t b = 0; b < tree.block_count(); ++b) {
         if (!tree.blocks[b].has(ast::block_flags::has_error)) continue;
         const auto tokens = tree.block_tokens(b);
-        const std::string_view content = tree.slice({tree.blocks[b].begin, tokens.back().begin + tokens.back().length});
+        const std::string_view content = tree.slice({tree.blocks[b].begin, tree.end(tokens.back())});
         CHECK(out.find(content) != std::string::npos);
     }
 }

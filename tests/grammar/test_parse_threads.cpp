@@ -69,6 +69,9 @@ void require_same_tree(const std::string& text, const char* dialect) {
     CHECK(first_difference(one.statements, two.statements, same_statement) == -1);
     CHECK(first_difference(one.big_numbers, two.big_numbers, [](double x, double y) { return same_bytes(x, y); }) == -1);
     CHECK(first_difference(one.diagnostics, two.diagnostics, same_diagnostic) == -1);
+    CHECK(first_difference(one.long_tokens, two.long_tokens, [](const ast::LongToken& x, const ast::LongToken& y) {
+              return x.begin == y.begin && x.length == y.length;
+          }) == -1);
 }
 
 }  // namespace
@@ -94,6 +97,17 @@ TEST_CASE("two threads: macro statements, expressions, big numbers, comments and
             100 + i % 50, i, i, 100 + i % 50, i % 9000 + 1, i, i % 10, i % 9000 + 1, i);
     };
     require_same_tree(long_text("%\nO2000\n", body, "M30\n%\n"), "fanuc-lathe-a");
+}
+
+TEST_CASE("two threads: long tokens keep their lengths in both halves; mantissas past 28 bits are big numbers") {
+    const auto body = [](int i) {
+        return fmt::format("({}{})\nG01 X[{}+#1] Y13.4217728 Z-134217.727 ; #{}=[{}]\n", std::string(250 + i % 20, 'C'), i,
+                           std::string(260 + i % 7, '1'), 100 + i % 50, std::string(300, '2'));
+    };
+    const std::string text = long_text("%\nO3000\n", body, "M30\n%\n");
+    require_same_tree(text, "fanuc-mill");
+    const ast::SyntaxTree tree = grammar::parse(text, rules_of("fanuc-mill"), 2);
+    CHECK(tree.long_tokens.size() > 3 * 10000);
 }
 
 TEST_CASE("two threads: no code before the middle, so the second half is read again after the first") {

@@ -40,14 +40,15 @@ std::string difference(const ast::SyntaxTree& a, const ast::SyntaxTree& b) {
         KERF_SAME("block flags", a.blocks[i].flags, b.blocks[i].flags);
     }
     if (a.tokens.size() != b.tokens.size()) return "token count";
+    if (a.long_tokens.size() != b.long_tokens.size()) return "long token count";
     for (i = 0; i < a.tokens.size(); ++i) {
         const ast::Token &x = a.tokens[i], &y = b.tokens[i];
         KERF_SAME("token begin", x.begin, y.begin);
-        KERF_SAME("token length", x.length, y.length);
+        KERF_SAME("token length", a.length(x), b.length(y));
         KERF_SAME("token kind", x.kind, y.kind);
         KERF_SAME("token letter", x.letter, y.letter);
         KERF_SAME("token flags", x.flags, y.flags);
-        KERF_SAME("token role", x.scale_role, y.scale_role);   // the role the binder gave it
+        KERF_SAME("token role", x.role(), y.role());   // the role the binder gave it
         if (x.has(ast::token_flags::value_big)) KERF_SAME("token big value", token_number(a, x), token_number(b, y));
         else if (x.payload != y.payload)
             return "token payload " + std::to_string(i) + " '" + std::string(a.spelling(x)) + "' kind " + std::to_string(int(x.kind)) +
@@ -185,6 +186,25 @@ TEST_CASE("incremental re-parse: the cases that change how the rest of the file 
     run("G0 X1\n", 0, 6, "");
     run("", 0, 0, "G0 X1\n");
     run("G0 X#1\n#1=[1+2]*3\nIF [#1 GT 2] GOTO 10\n", 7, 11, "#2");   // expressions and statements renumbered
+}
+
+TEST_CASE("incremental re-parse: long tokens (their lengths in the tree) before, inside and after the edit") {
+    const dialects::Dialect& d = *dialects::builtin_registry().find("fanuc-mill");
+    const std::string comment = "(" + std::string(300, 'C') + ")";
+    const std::string expression = "X[" + std::string(150, '1') + "+#1*" + std::string(150, '2') + "]";
+    const std::string text = "%\nO1\n" + comment + "\nG1 " + expression + "\n#100=[" + std::string(280, '7') + "]\nG1 X2 " +
+                             comment + "\nM30\n%\n";
+    const auto at = [&](const std::string& what, std::size_t from = 0) { return static_cast<std::uint32_t>(text.find(what, from)); };
+    const Bound b = full(text, d);
+    REQUIRE(b.tree().long_tokens.size() == 4);
+    // An edit in the middle: the long tokens after it move, those before it stay.
+    Bound after = step(b, {at("G1 X2"), at("G1 X2") + 5, "G0 X12345"}, d);
+    CHECK(after.tree().long_tokens.size() == 4);
+    // The long expression shortened below the limit, then a comment made long by an insertion.
+    after = step(after, {at("+#1*") - 100, at("+#1*"), ""}, d);
+    CHECK(after.tree().long_tokens.size() == 3);
+    after = step(after, {at("("), at("("), "(" + std::string(260, 'y') + ")\n"}, d);
+    CHECK(after.tree().long_tokens.size() == 4);
 }
 
 TEST_CASE("Document::edit takes LSP positions in UTF-16 units and re-parses only the touched lines") {
