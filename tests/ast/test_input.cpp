@@ -184,6 +184,34 @@ TEST_CASE("input: the scanner over pieces decides as decode_input does") {
     }
 }
 
+TEST_CASE("input: the scanner finds the longest line as decode_input does, in every mix of breaks and pieces") {
+    // Lines long and short (the scanner compares sixteen bytes at a time), CR, LF, CRLF and CR CR LF,
+    // cut into two pieces anywhere: the longest line, its number and the blank-file note agree.
+    std::mt19937 random(20261128);
+    const std::vector<std::string> parts = {"G1 X1.", "G1 X12.345 Y-6.789 Z0.5 F1200.", " ", "\t", "\r", "\n", "\r\n", "\r\r\n",
+                                            std::string(40, 'X'), std::string(17, ' ')};
+    for (int round = 0; round < 400; ++round) {
+        std::string text;
+        const std::size_t count = random() % 24;
+        for (std::size_t i = 0; i < count; ++i) text += parts[random() % parts.size()];
+        InputLimits limits;
+        limits.max_line_bytes = 1 + random() % 60;
+        const DecodedInput decoded = decode_input(text, limits);
+        const std::size_t cut = text.empty() ? 0 : random() % (text.size() + 1);
+        InputScanner scanner(limits);
+        scanner.feed(std::string_view(text).substr(0, cut));
+        scanner.feed(std::string_view(text).substr(cut));
+        const DecodedInput scanned = scanner.finish();
+        INFO(printable(text) << " cut at " << cut << ", limit " << limits.max_line_bytes);
+        REQUIRE(scanned.problems.size() == decoded.problems.size());
+        for (std::size_t i = 0; i < scanned.problems.size(); ++i) {
+            CHECK(scanned.problems[i].kind == decoded.problems[i].kind);
+            CHECK(scanned.problems[i].line == decoded.problems[i].line);
+            CHECK(scanned.problems[i].message == decoded.problems[i].message);
+        }
+    }
+}
+
 TEST_CASE("input: two scanners of a text cut at a line end, appended, decide as one") {
     InputLimits limits;
     limits.max_line_bytes = 8;
