@@ -94,9 +94,14 @@ Project::Project(Config config, std::vector<Problem> problems, const Overrides& 
     : config_(std::move(config)), problems_(std::move(problems)), files_(files) {
     std::vector<fs::path> dialect_files = overrides.dialect_files;
     dialect_files.insert(dialect_files.end(), config_.dialect_files.begin(), config_.dialect_files.end());
-    DialectRegistry loaded = load_dialects(dialect_files, files);
-    registry_ = std::move(loaded.registry);
-    problems_.insert(problems_.end(), loaded.problems.begin(), loaded.problems.end());
+    if (dialect_files.empty()) {
+        registry_ = &dialects::builtin_registry();
+    } else {
+        DialectRegistry loaded = load_dialects(dialect_files, files);
+        own_registry_.emplace(std::move(loaded.registry));
+        registry_ = &*own_registry_;
+        problems_.insert(problems_.end(), loaded.problems.begin(), loaded.problems.end());
+    }
     machine_file_ = !overrides.machine.empty() ? overrides.machine : config_.machine.value_or(fs::path{});
     limits_ = resolve_limits(overrides.limits, config_.limits);
     run_ = config_.run;
