@@ -3,10 +3,13 @@
 // that names what is allowed (as the dialect and machine files do).
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <fstream>
 #include <string>
 
 #include "project/config.hpp"
+#include "project/workspace.hpp"
 #include "tests/shared_files.hpp"
 
 namespace fs = std::filesystem;
@@ -190,4 +193,26 @@ TEST_CASE("config: docs/config.md documents every key") {
         INFO("format." << o.key);
         CHECK(doc.find(std::string(o.key)) != std::string::npos);
     }
+}
+
+TEST_CASE("project: without dialect files it reads the built-in dialects themselves; with one, its own registry") {
+    const DiskFileSystem disk;
+    const Project plain(Config{}, {}, Overrides{}, disk);
+    CHECK(&plain.dialects() == &kerf::dialects::builtin_registry());
+    CHECK(plain.dialects().find("fanuc-mill") != nullptr);
+
+    const fs::path file = fs::temp_directory_path() / ("kerf-test-project-dialect-" + std::to_string(::getpid()) + ".toml");
+    {
+        std::ofstream out(file);
+        out << "id = \"shop-mill\"\nbase = \"fanuc-mill\"\nname = \"Shop mill\"\n";
+    }
+    Overrides overrides;
+    overrides.dialect_files = {file};
+    const Project shop(Config{}, {}, overrides, disk);
+    fs::remove(file);
+    CHECK(&shop.dialects() != &kerf::dialects::builtin_registry());
+    CHECK(shop.problems().empty());
+    CHECK(shop.dialects().find("shop-mill") != nullptr);
+    CHECK(shop.dialects().find("fanuc-mill") != nullptr);
+    CHECK(kerf::dialects::builtin_registry().find("shop-mill") == nullptr);
 }
