@@ -11,6 +11,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -167,15 +168,18 @@ struct FileContext {
     const LabelTable& labels(std::size_t program) const;
     // The tables computed so far, and tables computed by an earlier walk of the same labels
     // (incremental checking carries them over edits that change no N number: incremental.hpp).
-    LabelTables take_labels() const { return std::move(labels_); }
-    void adopt_labels(LabelTables labels) const { labels_ = std::move(labels); }
+    LabelTables take_labels() const;
+    void adopt_labels(LabelTables labels) const;
     // jump_targets(tree()), computed on first use; shared with incremental checking, which keeps it
     // while no edit changes a fact (a target is one: static_facts).
     const JumpTargets& jump_targets() const;
     std::shared_ptr<const JumpTargets> shared_jump_targets() const;
-    void adopt_jump_targets(std::shared_ptr<const JumpTargets> targets) const { targets_ = std::move(targets); }
+    void adopt_jump_targets(std::shared_ptr<const JumpTargets> targets) const;
 
 private:
+    // The caches are filled under a lock: a long file's program checks may run on the dry run's
+    // thread while the static rules still walk the blocks (analyze.cpp check_file).
+    mutable std::unique_ptr<std::mutex> cache_mutex_ = std::make_unique<std::mutex>();
     mutable LabelTables labels_;
     mutable std::shared_ptr<const JumpTargets> targets_;
 };
