@@ -464,7 +464,12 @@ void ModalState::set(const dialects::CodeInfo& code) {
 }
 
 namespace {
-bool number_before(const LabelTable::Entry& a, const LabelTable::Entry& b) { return a.number < b.number; }
+bool number_before(const LabelTable::Entry& a, const LabelTable::Entry& b) { return a.number() < b.number(); }
+// The entries of one label, by the integer itself (not a key entry: a double may not hold it).
+struct LabelOrder {
+    bool operator()(const LabelTable::Entry& e, std::int64_t n) const { return e.number() < n; }
+    bool operator()(std::int64_t n, const LabelTable::Entry& e) const { return n < e.number(); }
+};
 }  // namespace
 
 LabelTable::LabelTable(std::vector<Entry> entries) : sorted_(std::move(entries)) {
@@ -472,8 +477,8 @@ LabelTable::LabelTable(std::vector<Entry> entries) : sorted_(std::move(entries))
     // so the blocks of one number stay in block order.
     if (std::is_sorted(sorted_.begin(), sorted_.end(), number_before)) return;
     const auto [lo, hi] = std::minmax_element(sorted_.begin(), sorted_.end(), number_before);
-    const std::int64_t first = lo->number;
-    const std::uint64_t span = static_cast<std::uint64_t>(hi->number - first) + 1;
+    const std::int64_t first = lo->number();
+    const std::uint64_t span = static_cast<std::uint64_t>(hi->number() - first) + 1;
     if (span > 4 * sorted_.size() + 65536) {
         std::stable_sort(sorted_.begin(), sorted_.end(), number_before);
         return;
@@ -481,16 +486,16 @@ LabelTable::LabelTable(std::vector<Entry> entries) : sorted_(std::move(entries))
     // CAM output whose N numbers wrap (a million blocks, N10 to N99990 over and over): a counting
     // sort over the few numbers, stable, in two passes, instead of a merge sort of the entries.
     std::vector<std::uint32_t> start(span + 1, 0);
-    for (const Entry& e : sorted_) ++start[static_cast<std::size_t>(e.number - first) + 1];
+    for (const Entry& e : sorted_) ++start[static_cast<std::size_t>(e.number() - first) + 1];
     for (std::size_t i = 1; i <= span; ++i) start[i] += start[i - 1];
     std::vector<Entry> out(sorted_.size());
-    for (const Entry& e : sorted_) out[start[static_cast<std::size_t>(e.number - first)]++] = e;
+    for (const Entry& e : sorted_) out[start[static_cast<std::size_t>(e.number() - first)]++] = e;
     sorted_ = std::move(out);
 }
 
 std::pair<std::vector<LabelTable::Entry>::const_iterator, std::vector<LabelTable::Entry>::const_iterator>
 LabelTable::range(std::int64_t n) const {
-    return std::equal_range(sorted_.begin(), sorted_.end(), Entry{n, 0.0, 0}, number_before);
+    return std::equal_range(sorted_.begin(), sorted_.end(), n, LabelOrder{});
 }
 
 int LabelTable::count(std::int64_t n) const {
@@ -517,7 +522,7 @@ void LabelTable::replace(std::uint32_t first, std::uint32_t end, std::span<const
     for (const Entry& e : now) {
         // After the entries of its number in earlier blocks, before those in later ones.
         const auto at = std::upper_bound(sorted_.begin(), sorted_.end(), e, [](const Entry& a, const Entry& b) {
-            return a.number != b.number ? a.number < b.number : a.block < b.block;
+            return a.number() != b.number() ? a.number() < b.number() : a.block < b.block;
         });
         sorted_.insert(at, e);
     }
@@ -543,7 +548,7 @@ std::optional<LabelTable::Entry> LabelTable::entry_of(const ast::TypedFile& type
     if (!value) return std::nullopt;
     const std::optional<std::int64_t> label = ast::truncated_integer(*value);
     if (!label) return std::nullopt;
-    return Entry{*label, *value, block};
+    return Entry{*value, block};
 }
 
 void FileContext::adopt_jump_targets(std::shared_ptr<const JumpTargets> targets) const {

@@ -105,8 +105,10 @@ public:
         // Left unset on purpose: the sort writes a table of millions of entries once, and a
         // value-initialised one would be written twice (zeros first).
         Entry() {}   // NOLINT: no member initialisers
-        Entry(std::int64_t n, double v, std::uint32_t b) : number(n), value(v), block(b) {}
-        std::int64_t number;   // the N value as an integer label (what count() compares)
+        Entry(double v, std::uint32_t b) : value(v), block(b) {}
+        // The N value as an integer label (what count() compares): the value truncated, which
+        // entry_of made sure fits (16 bytes an entry, not 24: a CAM program has millions).
+        std::int64_t number() const { return static_cast<std::int64_t>(value); }
         double value;          // the N value as written (N10.5 is not label 10 for blocks())
         std::uint32_t block;
     };

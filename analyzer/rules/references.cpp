@@ -338,8 +338,8 @@ public:
         std::uint32_t at = std::numeric_limits<std::uint32_t>::max();   // the first block that repeats one
         const std::span<const LabelTable::Entry> entries = labels.entries();
         for (std::size_t lo = 0, hi = 0; lo < entries.size(); lo = hi) {
-            const std::int64_t n = entries[lo].number;
-            while (hi < entries.size() && entries[hi].number == n) ++hi;
+            const std::int64_t n = entries[lo].number();
+            while (hi < entries.size() && entries[hi].number() == n) ++hi;
             // A number on one block, or one a jump lands on (K3002's), is no finding. N10.5 counts
             // as a block of label 10 but is not N10 itself.
             if (hi - lo < 2 || targets.has(n)) continue;

@@ -18,7 +18,7 @@ std::vector<LabelTable::Entry> wrapped(std::uint32_t blocks, std::int64_t wrap, 
     std::vector<LabelTable::Entry> out;
     for (std::uint32_t b = 0; b < blocks; ++b) {
         const std::int64_t n = step * (1 + b % wrap);
-        out.push_back({n, static_cast<double>(n), b});
+        out.push_back({static_cast<double>(n), b});
     }
     return out;
 }
@@ -26,13 +26,13 @@ std::vector<LabelTable::Entry> wrapped(std::uint32_t blocks, std::int64_t wrap, 
 bool ordered(const LabelTable& t) {
     const auto e = t.entries();
     for (std::size_t i = 1; i < e.size(); ++i)
-        if (e[i - 1].number > e[i].number || (e[i - 1].number == e[i].number && e[i - 1].block >= e[i].block)) return false;
+        if (e[i - 1].number() > e[i].number() || (e[i - 1].number() == e[i].number() && e[i - 1].block >= e[i].block)) return false;
     return true;
 }
 
 std::vector<std::tuple<std::int64_t, double, std::uint32_t>> flat(const LabelTable& t) {
     std::vector<std::tuple<std::int64_t, double, std::uint32_t>> out;
-    for (const LabelTable::Entry& e : t.entries()) out.emplace_back(e.number, e.value, e.block);
+    for (const LabelTable::Entry& e : t.entries()) out.emplace_back(e.number(), e.value, e.block);
     return out;
 }
 
@@ -55,9 +55,14 @@ TEST_CASE("LabelTable sorts by number, then block, with both sorts") {
     const LabelTable ascending(wrapped(100, 1000, 5));
     CHECK(ordered(ascending));
     // N10.5 is a block of label 10 but not N10 itself.
-    const LabelTable fraction({{10, 10.5, 0}, {10, 10.0, 3}, {4, 4.0, 1}});
+    const LabelTable fraction({{10.5, 0}, {10.0, 3}, {4.0, 1}});
     CHECK(fraction.count(10) == 2);
     CHECK(fraction.blocks(10) == std::vector<std::uint32_t>{3});
+    // The label is the value truncated toward zero (N-10.5 is label -10), as truncated_integer says.
+    const LabelTable negative({{-10.5, 0}, {-10.0, 1}, {-11.0, 2}});
+    CHECK(negative.count(-10) == 2);
+    CHECK(negative.count(-11) == 1);
+    CHECK(ordered(negative));
 }
 
 TEST_CASE("LabelTable splice and replace give the table of the edited program") {
@@ -65,15 +70,15 @@ TEST_CASE("LabelTable splice and replace give the table of the edited program") 
     LabelTable table(before);
     // Blocks 500..502 (N20, N30, N40) become four blocks numbered N7, N30, none, N9999: later blocks move by one.
     table.splice(500, 503, 1);
-    table.replace(500, 504, std::vector<LabelTable::Entry>{{7, 7.0, 500}, {30, 30.0, 501}, {9999, 9999.0, 503}});
+    table.replace(500, 504, std::vector<LabelTable::Entry>{{7.0, 500}, {30.0, 501}, {9999.0, 503}});
     std::vector<LabelTable::Entry> after;
     for (const LabelTable::Entry& e : before) {
         if (e.block < 500) after.push_back(e);
-        else if (e.block >= 503) after.push_back({e.number, e.value, e.block + 1});
+        else if (e.block >= 503) after.push_back({e.value, e.block + 1});
     }
-    after.push_back({7, 7.0, 500});
-    after.push_back({30, 30.0, 501});
-    after.push_back({9999, 9999.0, 503});
+    after.push_back({7.0, 500});
+    after.push_back({30.0, 501});
+    after.push_back({9999.0, 503});
     // The constructor takes the entries in block order.
     std::sort(after.begin(), after.end(), [](const LabelTable::Entry& a, const LabelTable::Entry& b) { return a.block < b.block; });
     CHECK(ordered(table));
@@ -86,6 +91,6 @@ TEST_CASE("LabelTable splice and replace give the table of the edited program") 
     CHECK(table.count(7) == 1);
     CHECK(table.count(20) == 19);
     // replace() over a range whose entries are already there (a walk cancelled before) keeps one of each.
-    table.replace(500, 504, std::vector<LabelTable::Entry>{{7, 7.0, 500}, {30, 30.0, 501}, {9999, 9999.0, 503}});
+    table.replace(500, 504, std::vector<LabelTable::Entry>{{7.0, 500}, {30.0, 501}, {9999.0, 503}});
     CHECK(flat(table) == flat(LabelTable(after)));
 }

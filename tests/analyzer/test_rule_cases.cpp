@@ -79,7 +79,7 @@ TEST_CASE("K5018 tool-without-offset: T0000 in the mmnn form, not the short T0 c
 // kept true across an edit that replaces and moves blocks (the server's incremental check).
 TEST_CASE("label table: count, blocks in block order, splice after an edit") {
     using E = analyzer::LabelTable::Entry;
-    analyzer::LabelTable t({E{20, 20.0, 1}, E{10, 10.0, 2}, E{10, 10.5, 3}, E{30, 30.0, 4}, E{10, 10.0, 7}, E{20, 20.0, 9}});
+    analyzer::LabelTable t({E{20.0, 1}, E{10.0, 2}, E{10.5, 3}, E{30.0, 4}, E{10.0, 7}, E{20.0, 9}});
     CHECK(t.count(10) == 3);   // N10.5 counts as label 10, as before
     CHECK(t.blocks(10) == std::vector<std::uint32_t>{2, 7});
     CHECK(t.blocks(20) == std::vector<std::uint32_t>{1, 9});
