@@ -389,7 +389,6 @@ void InputScanner::feed(std::string_view piece) {
     // A line ends at a '\n' or at a '\r' that no '\n' follows (LineBreaks, ast/source.hpp); its
     // bytes are counted without the break, and without the '\r' of a "\r\n" (as decode_input counts).
     for_each_break_byte(piece, pos, [&](std::size_t b) {
-        if (b < pos) return;   // the '\n' of a "\r\n" split at the start of the piece
         const bool is_cr = piece[b] == '\r';
         if (is_cr && b + 1 < n && piece[b + 1] == '\n') return;   // the "\r" of "\r\n": the '\n' ends the line
         line_part(b, !is_cr && b > pos && piece[b - 1] == '\r' ? 1 : 0);

@@ -1,7 +1,5 @@
 #include "ast/printer.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 
 namespace kerf::ast {
@@ -27,18 +25,18 @@ bool is_trivia(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' 
 }  // namespace
 
 namespace {
-// Every token too long for its 8 bits has one entry in long_tokens, sorted, and no other entry is there.
+// Every token too long for its 8 bits has its entry in long_tokens, and no other entry is there:
+// both are in text order, so one walk over the two.
 std::optional<InvariantViolation> check_long_tokens(const SyntaxTree& tree) {
-    std::size_t long_ones = 0;
+    std::size_t next = 0;
     for (const Token& t : tree.tokens) {
         if (t.short_length != Token::kLongLength) continue;
-        ++long_ones;
-        const auto it = std::lower_bound(tree.long_tokens.begin(), tree.long_tokens.end(), t.begin,
-                                         [](const LongToken& l, std::uint32_t b) { return l.begin < b; });
-        if (it == tree.long_tokens.end() || it->begin != t.begin || it->length < Token::kLongLength)
+        if (next == tree.long_tokens.size() || tree.long_tokens[next].begin != t.begin ||
+            tree.long_tokens[next].length < Token::kLongLength)
             return InvariantViolation{t.begin, "a long token without its length in long_tokens"};
+        ++next;
     }
-    if (long_ones != tree.long_tokens.size()) return InvariantViolation{0, "long_tokens holds lengths of no token"};
+    if (next != tree.long_tokens.size()) return InvariantViolation{tree.long_tokens[next].begin, "long_tokens holds the length of no token"};
     return std::nullopt;
 }
 }  // namespace

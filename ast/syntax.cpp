@@ -87,15 +87,21 @@ const char* to_string(StatementKind k) {
     return "?";
 }
 
+namespace {
+// The first entry at or after `begin` (long_tokens is sorted by begin).
+template <typename Vector>
+auto long_entry(Vector& long_tokens, std::uint32_t begin) {
+    return std::lower_bound(long_tokens.begin(), long_tokens.end(), begin, [](const LongToken& l, std::uint32_t b) { return l.begin < b; });
+}
+}  // namespace
+
 std::uint32_t SyntaxTree::long_length(std::uint32_t begin) const {
-    const auto it = std::lower_bound(long_tokens.begin(), long_tokens.end(), begin,
-                                     [](const LongToken& l, std::uint32_t b) { return l.begin < b; });
+    const auto it = long_entry(long_tokens, begin);
     return it != long_tokens.end() && it->begin == begin ? it->length : Token::kLongLength;
 }
 
 void SyntaxTree::set_length(Token& t, std::uint32_t length) {
-    const auto it = std::lower_bound(long_tokens.begin(), long_tokens.end(), t.begin,
-                                     [](const LongToken& l, std::uint32_t b) { return l.begin < b; });
+    const auto it = long_entry(long_tokens, t.begin);
     const bool recorded = it != long_tokens.end() && it->begin == t.begin;
     if (length < Token::kLongLength) {
         if (recorded) long_tokens.erase(it);
@@ -121,13 +127,16 @@ Range SyntaxTree::value_range(const Token& t) const {
     return {e - static_cast<std::uint32_t>(value_spelling(t).size()), e};
 }
 
-namespace {
-constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+double exact_decimal(std::int64_t mantissa, int scale) {
+    static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    // mantissa and 10^scale are exact doubles, so the quotient is correctly rounded.
+    return static_cast<double>(mantissa) / kPow10[scale];
+}
 
+namespace {
 double decimal_value(std::int32_t mantissa, int scale, std::uint8_t flags, const std::vector<double>& big) {
     if (flags & token_flags::value_big) return big[static_cast<std::size_t>(mantissa)];
-    // mantissa and 10^scale are exact doubles, so the quotient is correctly rounded.
-    const double v = static_cast<double>(mantissa) / kPow10[scale];
+    const double v = exact_decimal(mantissa, scale);
     return (flags & token_flags::negative) && v == 0.0 ? -0.0 : v;
 }
 }  // namespace

@@ -85,6 +85,10 @@ struct Token {
 };
 static_assert(sizeof(Token) == 12, "tokens are the bulk of the tree; keep them at 12 bytes");
 
+// mantissa / 10^scale for |mantissa| < 2^53 and scale 0..15: the correctly rounded double, the one
+// the decimal's spelling reads as (from_chars, strtod).
+double exact_decimal(std::int64_t mantissa, int scale);
+
 // The length of a token of Token::kLongLength bytes or more, by the token's begin.
 struct LongToken {
     std::uint32_t begin = 0;

@@ -108,20 +108,14 @@ public:
     // A word's number: exact in the token (mantissa and scale) when the mantissa fits its 28 bits,
     // else in big_numbers like any number too long for the exact form.
     void store_token_number(const NumberLit& n, ast::Token& t) {
+        NumberLit stored = n;
         if (!n.big && n.mantissa > ast::Token::kMaxMantissa) {
-            NumberLit wide = n;
-            wide.big = true;
-            // mantissa and 10^scale are exact doubles: the quotient is the correctly rounded value, as
-            // from_chars gives for the spelling (ast/syntax.cpp decimal_value).
-            static constexpr double kPow10[] = {1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-            const double v = static_cast<double>(n.mantissa) / kPow10[n.scale];
-            wide.big_value = n.negative ? -v : v;
-            store_token_number(wide, t);
-            return;
+            stored.big = true;
+            stored.big_value = ast::exact_decimal(n.negative ? -n.mantissa : n.mantissa, n.scale);
         }
         std::int32_t payload = 0;
-        store_number(n, payload, t.flags);
-        if (n.big) t.payload = payload;
+        store_number(stored, payload, t.flags);
+        if (stored.big) t.payload = payload;
         else t.set_number(payload, n.scale);
     }
 
